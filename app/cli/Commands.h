@@ -1,0 +1,12 @@
+#pragma once
+// The stylos-cli commands; each takes the arguments after its name and returns the exit code.
+#include <string>
+#include <vector>
+
+namespace stylos::cli {
+
+int runInfo(const std::vector<std::string>& args);
+int runGenerate(const std::vector<std::string>& args);
+int runNormals(const std::vector<std::string>& args);
+
+} // namespace stylos::cli

@@ -1,0 +1,15 @@
+# Third-party libraries, all from Debian 12 packages (see README.md).
+find_package(Threads REQUIRED)
+find_package(Eigen3 3.4 REQUIRED NO_MODULE)
+find_package(glm REQUIRED)
+find_package(nlohmann_json 3.10 REQUIRED)
+find_package(PkgConfig REQUIRED)
+# Debian's OpenImageIO CMake config is broken (wants /usr/bin/iconvert and OpenCV headers): use pkg-config.
+pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp REQUIRED)
+add_library(stylos_nanoflann INTERFACE)
+target_include_directories(stylos_nanoflann SYSTEM INTERFACE ${NANOFLANN_INCLUDE_DIR})
+
+if(STYLOS_BUILD_GUI)
+  find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent LinguistTools Test)
+endif()

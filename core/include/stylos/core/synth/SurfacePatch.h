@@ -1,0 +1,49 @@
+#pragma once
+/** @file
+ * @brief One piece of a synthetic object's surface, parameterised by (a, b), both roughly arc lengths
+ *        in metres, so that a grid of step s in (a, b) samples the surface at about s. Rows are lines of
+ *        constant b; each row has its own range of a (a disc's rows around its centre grow with the
+ *        radius). Patches are immutable after construction and thread-safe.
+ */
+#include <Eigen/Core>
+
+namespace stylos::core::synth {
+
+/** @brief A closed range of a parameter, metres. @c wraps: the row is a full circle (a and a + length
+ *         are the same point), sampled with an integer number of steps and no seam. */
+struct ParameterRange {
+    double min = 0.0;
+    double max = 0.0;
+    bool wraps = false;
+
+    double length() const { return max - min; }
+};
+
+class SurfacePatch {
+public:
+    virtual ~SurfacePatch() = default;
+
+    /** Range of the row parameter b, metres. */
+    virtual ParameterRange rows() const = 0;
+    /** Range of the column parameter a on row @p b, metres. */
+    virtual ParameterRange columns(double b) const = 0;
+    /**
+     * Azimuth (radians) about the object's vertical scan axis of the undisplaced point (a, b); decides
+     * which scans see it. Must be cheap: it is asked of every grid node of every scan.
+     */
+    virtual double azimuth(double a, double b) const = 0;
+    /** Position (metres, object frame) of (a, b). Defined also slightly outside the patch. */
+    virtual Eigen::Vector3d position(double a, double b) const = 0;
+    /** Whether the point (a, b) at @p p belongs to the patch (false where the patch is clipped). */
+    virtual bool contains(double /*a*/, double /*b*/, const Eigen::Vector3d& /*p*/) const { return true; }
+    /** Outward unit normal at (a, b); by default central differences of position(). */
+    virtual Eigen::Vector3d normal(double a, double b) const;
+
+protected:
+    /** +1 when ∂p/∂a × ∂p/∂b points out of the object, -1 when it points in. */
+    double m_orientation = 1.0;
+    /** Step of the central differences, metres. */
+    double m_normalStep = 1e-4;
+};
+
+} // namespace stylos::core::synth

@@ -1,0 +1,52 @@
+#include "TestSupport.h"
+
+#include <atomic>
+#include <fstream>
+#include <random>
+#include <stdexcept>
+#include <unistd.h>
+
+namespace fs = std::filesystem;
+
+namespace stylos::test {
+
+fs::path sharedData() { return fs::path(STYLOS_SHARED_DATA); }
+bool hasSharedData() { return fs::is_directory(sharedData() / "formats"); }
+fs::path testData() { return fs::path(STYLOS_TEST_DATA); }
+
+TempDir::TempDir()
+{
+    static std::atomic<int> counter{0};
+    std::random_device rd;
+    m_path = fs::temp_directory_path() /
+             ("stylos-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" +
+              std::to_string(rd()));
+    fs::create_directories(m_path);
+}
+
+TempDir::~TempDir()
+{
+    std::error_code ec;
+    fs::remove_all(m_path, ec);
+}
+
+std::vector<char> readBytes(const fs::path& path)
+{
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw std::runtime_error("cannot read " + path.string());
+    return std::vector<char>(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeBytes(const fs::path& path, const std::vector<char>& bytes)
+{
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+    if (!out) throw std::runtime_error("cannot write " + path.string());
+}
+
+void writeText(const fs::path& path, const std::string& text)
+{
+    writeBytes(path, std::vector<char>(text.begin(), text.end()));
+}
+
+} // namespace stylos::test

@@ -1,0 +1,40 @@
+#pragma once
+// Helpers shared by the tests: where the fixtures are, and a temporary folder removed on exit.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace stylos::test {
+
+/** ../shared/data beside the clone (may be absent: use SKIP_WITHOUT_SHARED_DATA()). */
+std::filesystem::path sharedData();
+bool hasSharedData();
+/** tests/data in the source tree (small fixtures committed with the project). */
+std::filesystem::path testData();
+
+/** A fresh temporary folder, removed with everything in it when the object dies. */
+class TempDir {
+public:
+    TempDir();
+    ~TempDir();
+    TempDir(const TempDir&) = delete;
+    TempDir& operator=(const TempDir&) = delete;
+    const std::filesystem::path& path() const { return m_path; }
+    std::filesystem::path operator/(const std::string& name) const { return m_path / name; }
+
+private:
+    std::filesystem::path m_path;
+};
+
+std::vector<char> readBytes(const std::filesystem::path& path);
+void writeBytes(const std::filesystem::path& path, const std::vector<char>& bytes);
+void writeText(const std::filesystem::path& path, const std::string& text);
+
+} // namespace stylos::test
+
+#define SKIP_WITHOUT_SHARED_DATA()                                                              \
+    do {                                                                                        \
+        if (!::stylos::test::hasSharedData())                                                   \
+            GTEST_SKIP() << "../shared/data is absent: real-scan test skipped";                 \
+    } while (0)
