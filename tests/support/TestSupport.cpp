@@ -12,7 +12,6 @@ namespace stylos::test {
 
 fs::path sharedData() { return fs::path(STYLOS_SHARED_DATA); }
 bool hasSharedData() { return fs::is_directory(sharedData() / "formats"); }
-fs::path testData() { return fs::path(STYLOS_TEST_DATA); }
 
 TempDir::TempDir()
 {

@@ -10,8 +10,6 @@ namespace stylos::test {
 /** ../shared/data beside the clone (may be absent: use SKIP_WITHOUT_SHARED_DATA()). */
 std::filesystem::path sharedData();
 bool hasSharedData();
-/** tests/data in the source tree (small fixtures committed with the project). */
-std::filesystem::path testData();
 
 /** A fresh temporary folder, removed with everything in it when the object dies. */
 class TempDir {

@@ -103,7 +103,7 @@ bool DemoScene::prepare()
         });
     if (!watcher) return false;
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] {
-        if (watcher->isCanceled() || watcher->resultCount() == 0) {
+        if (watcher->isCanceled() || watcher->future().resultCount() == 0) {
             Q_EMIT cancelled();
             return;
         }

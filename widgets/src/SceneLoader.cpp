@@ -1,6 +1,6 @@
 #include "stylos/widgets/SceneLoader.h"
 
-#include "stylos/core/io/PointFileFormat.h"
+#include "stylos/core/io/PointFileSummary.h"
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/TaskRunner.h"
 
@@ -9,8 +9,6 @@
 namespace stylos::widgets {
 
 namespace {
-
-constexpr std::size_t BatchPoints = 64 * 1024;
 
 /** Maps a file's own progress onto its share [from, to] of the whole load. */
 class RangeProgress final : public core::ProgressSink {
@@ -36,31 +34,20 @@ core::Result<ScanSummary> SceneLoader::scanFile(const std::filesystem::path& pat
                                                 double from, double to)
 {
     RangeProgress sink(progress, from, to);
-    auto opened = core::io::openPointReader(path);
-    if (!opened) return opened.error();
-    core::io::PointReader& reader = **opened;
+    auto scanned = core::io::summarizePointFile(path, {}, &sink);
+    if (!scanned) return scanned.error();
 
     ScanSummary summary;
     summary.path = QString::fromStdString(path.string());
-    summary.format = QString::fromStdString(reader.header().format);
-    for (const std::string& name : reader.header().schema.attributeNames())
-        summary.attributes << QString::fromStdString(name);
-
-    core::io::PointBatch batch;
-    for (;;) {
-        if (sink.isCancelRequested())
-            return core::Error::at(core::ErrorCode::Cancelled, path.string(), "", "loading cancelled");
-        auto count = reader.read(batch, BatchPoints);
-        if (!count) return count.error();
-        if (*count == 0) break;
-        const double* p = batch.positions.data();
-        for (std::size_t i = 0; i < *count; ++i, p += 3) summary.include(p[0], p[1], p[2]);
-        summary.points += *count;
-        if (reader.fileBytes() > 0)
-            sink.update(static_cast<double>(reader.bytesConsumed()) / static_cast<double>(reader.fileBytes()));
+    summary.format = QString::fromStdString(scanned->format);
+    summary.points = scanned->points;
+    summary.skipped = scanned->skipped;
+    if (scanned->min && scanned->max) {
+        const auto& lo = *scanned->min;
+        const auto& hi = *scanned->max;
+        summary.bounds = {lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]};
     }
-    summary.skipped = reader.pointsSkipped();
-    sink.update(1.0);
+    for (const std::string& name : scanned->attributes) summary.attributes << QString::fromStdString(name);
     return summary;
 }
 

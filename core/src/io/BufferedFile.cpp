@@ -108,6 +108,7 @@ bool BufferedFile::readLine(std::string_view& line)
         if (nl) {
             std::size_t len = static_cast<const char*>(nl) - begin;
             consume(len + 1);
+            m_lineTerminated = true;
             if (len > 0 && begin[len - 1] == '\r') --len;
             line = std::string_view(begin, len);
             return true;
@@ -125,6 +126,7 @@ bool BufferedFile::readLine(std::string_view& line)
             if (have == 0) return false;
             begin = data(); // fill() may have moved the bytes
             consume(have);
+            m_lineTerminated = false;
             std::size_t len = have;
             if (begin[len - 1] == '\r') --len;
             line = std::string_view(begin, len);

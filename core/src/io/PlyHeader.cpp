@@ -118,7 +118,11 @@ Result<PlyHeader> PlyHeader::parse(BufferedFile& file, const std::string& fileNa
         if (words.empty()) continue;
         const std::string_view key = words[0];
 
-        if (key == "end_header") break;
+        if (key == "end_header") {
+            if (!file.lineTerminated())
+                return fail(ErrorCode::Truncated, "the file ends right after \"end_header\", without its line break");
+            break;
+        }
         if (key == "comment") {
             header.comments.emplace_back(line.size() > 8 ? line.substr(8) : std::string_view{});
             continue;

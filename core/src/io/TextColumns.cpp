@@ -14,9 +14,43 @@ namespace {
 
 inline bool isSpace(char c) { return c == ' ' || c == '\t'; }
 
+/**
+ * Exact fast path for plain decimals ("-12.345"): with at most 19 digits, a mantissa up to 2^53 and at
+ * most 22 decimals, mantissa and power of ten are exact doubles and one division rounds correctly
+ * (Clinger), so the result is the one from_chars gives. Anything else returns nullptr.
+ */
+inline const char* parsePlainDecimal(const char* p, const char* end, double& out)
+{
+    static constexpr double powersOfTen[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
+                                             1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
+    const bool negative = p < end && *p == '-';
+    if (p < end && (*p == '-' || *p == '+')) ++p;
+    std::uint64_t mantissa = 0;
+    int digits = 0;
+    while (p < end && static_cast<unsigned>(*p - '0') < 10) {
+        mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+        ++p, ++digits;
+    }
+    int decimals = 0;
+    if (p < end && *p == '.') {
+        ++p;
+        while (p < end && static_cast<unsigned>(*p - '0') < 10) {
+            mantissa = mantissa * 10 + static_cast<unsigned>(*p - '0');
+            ++p, ++decimals;
+        }
+    }
+    digits += decimals;
+    if (digits == 0 || digits > 19 || decimals > 22 || mantissa > (std::uint64_t(1) << 53)) return nullptr;
+    if (p < end && (*p == 'e' || *p == 'E')) return nullptr; // exponents: from_chars
+    const double value = static_cast<double>(mantissa) / powersOfTen[decimals];
+    out = negative ? -value : value;
+    return p;
+}
+
 /** One number at [p, end): past its last character, or nullptr when it is not one. */
 const char* parseNumber(const char* p, const char* end, double& out)
 {
+    if (const char* q = parsePlainDecimal(p, end, out)) return q;
     const char* s = p;
     if (s < end && *s == '+') {
         ++s;
@@ -239,7 +273,9 @@ Result<ColumnLayout> layoutFromNames(const std::vector<std::string_view>& names)
     ColumnLayout layout;
     bool unitColors = false;
     for (const std::string_view raw : names) {
-        const std::string_view name = trimSpaces(raw);
+        std::string_view name = trimSpaces(raw);
+        if (name.size() >= 2 && (name.front() == '"' || name.front() == '\'') && name.back() == name.front())
+            name = name.substr(1, name.size() - 2); // quoted CSV names
         const std::string n = lower(name);
         ColumnRole role = R::Scalar;
         if (n.empty()) return layoutError("an empty column name");

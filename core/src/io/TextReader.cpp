@@ -72,6 +72,8 @@ Result<std::unique_ptr<PointReader>> TextReader::open(const fs::path& path, cons
     auto scan = reader->prescan();
     if (!scan) return scan.error();
     if (scan->firstDataLine == 0) {
+        if (scan->headerLine != 0 && options.columns.empty()) // a header that is no layout says more
+            if (auto status = reader->settleLayout(scan.value(), options); !status) return status.error();
         if (scan->firstCount.value_or(0) > 0)
             return reader->lineError(ErrorCode::Truncated, reader->m_line,
                                      "the file ends after 0 of the " + std::to_string(*scan->firstCount) +
@@ -121,7 +123,9 @@ Result<TextReader::Prescan> TextReader::prescan()
             const Separator separator = detectSeparator(text);
             double first = 0.0;
             const FieldScan firstField = parseFields(text, separator, &first, 1);
-            if (firstField.badField == 1 && scan.headerLine == 0) { // a header line of column names
+            const bool named = std::isalpha(static_cast<unsigned char>(text[0])) || text[0] == '_' ||
+                               text[0] == '"' || text[0] == '\'';
+            if (firstField.badField == 1 && named && scan.headerLine == 0) { // a header line of column names
                 scan.headerLine = m_line;
                 scan.headerText = text;
                 scan.headerSeparator = separator;

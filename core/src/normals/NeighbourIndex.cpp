@@ -7,6 +7,7 @@
 #include <cassert>
 #include <cmath>
 #include <exception>
+#include <memory>
 #include <limits>
 #include <thread>
 
@@ -73,7 +74,11 @@ std::vector<std::uint32_t> mortonOrder(std::span<const double> positions, const 
         std::vector<std::size_t> start(1u << 15, 0);
         for (std::uint64_t key : keys) ++start[(key >> shift) & 0x7fff];
         std::size_t sum = 0;
-        for (std::size_t& s : start) sum += std::exchange(s, sum);
+        for (std::size_t& s : start) {
+            const std::size_t bucket = s;
+            s = sum;
+            sum += bucket;
+        }
         for (std::uint64_t key : keys) sorted[start[(key >> shift) & 0x7fff]++] = key;
         keys.swap(sorted);
     }
@@ -83,12 +88,6 @@ std::vector<std::uint32_t> mortonOrder(std::span<const double> positions, const 
 }
 
 } // namespace
-
-struct NeighbourIndex::Tree {
-    FloatAdaptor adaptor;
-    std::uint32_t base = 0;
-    std::unique_ptr<KdTree> kd;
-};
 
 float KnnScratch::squaredDistance(std::size_t q, std::size_t j) const
 {
@@ -107,24 +106,23 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
         for (int d = 0; d < 3; ++d) m_local[3 * r + d] = positions[3 * std::size_t(m_source[r]) + d] - origin[d];
     if (n == 0) return;
 
-    // One tree per contiguous rank range (spatially compact, thanks to the Morton order), built in parallel.
+    // One nanoflann tree per contiguous rank range (spatially compact thanks to the Morton order),
+    // built in parallel, then flattened one after the other.
     const std::size_t treeCount = std::clamp<std::size_t>(std::min<std::size_t>(trees, n / 4096), 1, 64);
+    std::vector<FloatAdaptor> adaptors(treeCount);
+    std::vector<std::unique_ptr<KdTree>> kdTrees(treeCount);
     std::vector<std::exception_ptr> failures(treeCount);
+    for (std::size_t t = 0; t < treeCount; ++t) {
+        const std::size_t begin = n * t / treeCount, end = n * (t + 1) / treeCount;
+        adaptors[t] = FloatAdaptor{m_local.data() + 3 * begin, end - begin};
+    }
     auto build = [&](std::size_t t) {
         try {
-            m_trees[t]->kd = std::make_unique<KdTree>(3, m_trees[t]->adaptor,
-                                                      nanoflann::KDTreeSingleIndexAdaptorParams(leafSize));
+            kdTrees[t] = std::make_unique<KdTree>(3, adaptors[t], nanoflann::KDTreeSingleIndexAdaptorParams(leafSize));
         } catch (...) {
             failures[t] = std::current_exception();
         }
     };
-    for (std::size_t t = 0; t < treeCount; ++t) {
-        auto tree = std::make_unique<Tree>();
-        const std::size_t begin = n * t / treeCount, end = n * (t + 1) / treeCount;
-        tree->adaptor = FloatAdaptor{m_local.data() + 3 * begin, end - begin};
-        tree->base = static_cast<std::uint32_t>(begin);
-        m_trees.push_back(std::move(tree));
-    }
     std::vector<std::thread> workers;
     for (std::size_t t = 1; t < treeCount; ++t) workers.emplace_back(build, t);
     build(0);
@@ -132,39 +130,66 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
     for (auto& failure : failures)
         if (failure) std::rethrow_exception(failure);
 
-    // Structure-of-arrays copy in tree order, so that a leaf is a contiguous range; then the leaves.
     m_x.resize(n);
     m_y.resize(n);
     m_z.resize(n);
     m_rankAt.resize(n);
     for (std::size_t t = 0; t < treeCount; ++t) {
-        Tree& tree = *m_trees[t];
-        for (std::size_t i = 0; i < tree.adaptor.count; ++i) {
-            const std::uint32_t rank = tree.base + tree.kd->vAcc[i];
-            const std::size_t position = tree.base + i;
+        const auto base = static_cast<std::uint32_t>(n * t / treeCount);
+        for (std::size_t i = 0; i < adaptors[t].count; ++i) {
+            const std::uint32_t rank = base + kdTrees[t]->vAcc[i];
+            const std::size_t position = base + i;
             m_rankAt[position] = rank;
             m_x[position] = static_cast<float>(m_local[3 * std::size_t(rank)]);
             m_y[position] = static_cast<float>(m_local[3 * std::size_t(rank) + 1]);
             m_z[position] = static_cast<float>(m_local[3 * std::size_t(rank) + 2]);
         }
-        std::vector<std::uint32_t>().swap(tree.kd->vAcc); // never searched through nanoflann again
-        std::vector<const KdNode*> stack{tree.kd->root_node};
-        while (!stack.empty()) {
-            const KdNode* node = stack.back();
-            stack.pop_back();
-            if (!node->child1 && !node->child2) {
-                m_leaves.push_back(Leaf{tree.base + static_cast<std::uint32_t>(node->node_type.lr.left),
-                                        tree.base + static_cast<std::uint32_t>(node->node_type.lr.right),
-                                        static_cast<std::uint32_t>(t)});
-            } else {
-                stack.push_back(node->child2);
-                stack.push_back(node->child1);
-            }
-        }
+        flatten(kdTrees[t].get(), base, static_cast<std::uint32_t>(t));
+        kdTrees[t].reset();
     }
 }
 
 NeighbourIndex::~NeighbourIndex() = default;
+
+void NeighbourIndex::flatten(const void* nanoflannTree, std::uint32_t base, std::uint32_t tree)
+{
+    const auto& kd = *static_cast<const KdTree*>(nanoflannTree);
+    TreeRoot root{static_cast<std::uint32_t>(m_nodes.size()), base, {}};
+    for (int d = 0; d < 3; ++d) {
+        root.box.lo[d] = kd.root_bbox[d].low;
+        root.box.hi[d] = kd.root_bbox[d].high;
+    }
+    m_roots.push_back(root);
+    // Depth-first, child1 right after its parent; child2's index patched in when it is reached.
+    std::vector<std::pair<const KdNode*, std::uint32_t>> stack{{kd.root_node, ~0u}};
+    while (!stack.empty()) {
+        const auto [node, parent] = stack.back();
+        stack.pop_back();
+        const auto index = static_cast<std::uint32_t>(m_nodes.size());
+        if (parent != ~0u) m_nodes[parent].payload = index;
+        if (!node->child1 && !node->child2) {
+            Leaf leaf{base + static_cast<std::uint32_t>(node->node_type.lr.left),
+                      base + static_cast<std::uint32_t>(node->node_type.lr.right), tree};
+            LeafBox box{};
+            box.lo = box.hi = {m_x[leaf.begin], m_y[leaf.begin], m_z[leaf.begin]};
+            for (std::uint32_t p = leaf.begin; p < leaf.end; ++p) {
+                const float c[3] = {m_x[p], m_y[p], m_z[p]};
+                for (int d = 0; d < 3; ++d) {
+                    box.lo[d] = std::min(box.lo[d], c[d]);
+                    box.hi[d] = std::max(box.hi[d], c[d]);
+                }
+            }
+            m_nodes.push_back(Node{0, 0, 3, static_cast<std::uint32_t>(m_leaves.size())});
+            m_leaves.push_back(leaf);
+            m_leafBoxes.push_back(box);
+        } else {
+            m_nodes.push_back(Node{node->node_type.sub.divlow, node->node_type.sub.divhigh,
+                                   static_cast<std::uint32_t>(node->node_type.sub.divfeat), 0});
+            stack.emplace_back(node->child2, index); // patched when popped
+            stack.emplace_back(node->child1, ~0u);   // popped next: lands at index + 1
+        }
+    }
+}
 
 void NeighbourIndex::search(std::span<const std::uint32_t> queries, std::size_t k, KnnScratch& s) const
 {
@@ -178,7 +203,7 @@ void NeighbourIndex::search(std::span<const std::uint32_t> queries, std::size_t 
     s.qy.resize(m);
     s.qz.resize(m);
     s.maxWorstBits = std::numeric_limits<std::uint32_t>::max();
-    if (m == 0 || k == 0 || m_trees.empty()) return;
+    if (m == 0 || k == 0 || m_roots.empty()) return;
 
     std::array<float, 3> lo{}, hi{};
     lo.fill(std::numeric_limits<float>::max());
@@ -196,60 +221,65 @@ void NeighbourIndex::search(std::span<const std::uint32_t> queries, std::size_t 
     }
     // The queries' own tree first: it holds most neighbours and tightens the bounds for the others.
     std::size_t own = 0;
-    while (own + 1 < m_trees.size() && m_trees[own + 1]->base <= queries[0]) ++own;
-    for (std::size_t i = 0; i < m_trees.size(); ++i) {
-        const Tree& tree = *m_trees[i == 0 ? own : (i <= own ? i - 1 : i)];
+    while (own + 1 < m_roots.size() && m_roots[own + 1].begin <= queries[0]) ++own;
+    for (std::size_t i = 0; i < m_roots.size(); ++i) {
+        const TreeRoot& root = m_roots[i == 0 ? own : (i <= own ? i - 1 : i)];
         std::array<float, 3> gaps{};
-        for (int d = 0; d < 3; ++d)
-            gaps[d] = std::max({0.0f, tree.kd->root_bbox[d].low - hi[d], lo[d] - tree.kd->root_bbox[d].high});
+        for (int d = 0; d < 3; ++d) gaps[d] = std::max({0.0f, root.box.lo[d] - hi[d], lo[d] - root.box.hi[d]});
         const float reach = gaps[0] * gaps[0] + gaps[1] * gaps[1] + gaps[2] * gaps[2];
-        if (bitsOf(reach) <= s.maxWorstBits) descend(tree.kd->root_node, tree.base, gaps, lo, hi, s);
+        if (bitsOf(reach) <= s.maxWorstBits) descend(root.node, gaps, lo, hi, s);
     }
 }
 
-void NeighbourIndex::descend(const void* nodePtr, std::uint32_t base, std::array<float, 3>& gaps,
-                             const std::array<float, 3>& lo, const std::array<float, 3>& hi,
-                             KnnScratch& s) const
+void NeighbourIndex::descend(std::uint32_t index, std::array<float, 3>& gaps, const std::array<float, 3>& lo,
+                             const std::array<float, 3>& hi, KnnScratch& s) const
 {
-    const auto* node = static_cast<const KdNode*>(nodePtr);
-    if (!node->child1 && !node->child2) {
-        visitLeaf(base + static_cast<std::uint32_t>(node->node_type.lr.left),
-                  base + static_cast<std::uint32_t>(node->node_type.lr.right), s);
+    const Node& node = m_nodes[index];
+    if (node.axis == 3) {
+        visitLeaf(node.payload, s);
         return;
     }
-    const int axis = node->node_type.sub.divfeat;
-    const float divLow = node->node_type.sub.divlow;   // largest coordinate in child1
-    const float divHigh = node->node_type.sub.divhigh; // smallest coordinate in child2
-    const float gap1 = std::max(gaps[axis], lo[axis] - divLow);
-    const float gap2 = std::max(gaps[axis], divHigh - hi[axis]);
+    const std::uint32_t axis = node.axis;
+    // Child1 holds coordinates ≤ divLow, child2 coordinates ≥ divHigh (both actual point coordinates).
+    const float gap1 = std::max(gaps[axis], lo[axis] - node.divLow);
+    const float gap2 = std::max(gaps[axis], node.divHigh - hi[axis]);
     bool firstIsChild1 = gap1 < gap2;
-    if (gap1 == gap2) firstIsChild1 = (lo[axis] + hi[axis]) < (divLow + divHigh);
-    const KdNode* children[2] = {firstIsChild1 ? node->child1 : node->child2,
-                                 firstIsChild1 ? node->child2 : node->child1};
+    if (gap1 == gap2) firstIsChild1 = (lo[axis] + hi[axis]) < (node.divLow + node.divHigh);
+    const std::uint32_t children[2] = {firstIsChild1 ? index + 1 : node.payload,
+                                       firstIsChild1 ? node.payload : index + 1};
     const float childGaps[2] = {firstIsChild1 ? gap1 : gap2, firstIsChild1 ? gap2 : gap1};
     const float saved = gaps[axis];
     for (int c = 0; c < 2; ++c) {
         gaps[axis] = childGaps[c];
         // Same float operations as the point distances, so the bound never exceeds a true distance.
         const float reach = gaps[0] * gaps[0] + gaps[1] * gaps[1] + gaps[2] * gaps[2];
-        if (bitsOf(reach) <= s.maxWorstBits) descend(children[c], base, gaps, lo, hi, s);
+        if (bitsOf(reach) <= s.maxWorstBits) descend(children[c], gaps, lo, hi, s);
     }
     gaps[axis] = saved;
 }
 
-void NeighbourIndex::visitLeaf(std::uint32_t begin, std::uint32_t end, KnnScratch& s) const
+void NeighbourIndex::visitLeaf(std::uint32_t leafIndex, KnnScratch& s) const
 {
     constexpr std::uint32_t kChunk = 32;
     float distances[kChunk];
+    const Leaf& leaf = m_leaves[leafIndex];
+    const LeafBox& box = m_leafBoxes[leafIndex];
     const std::size_t k = s.k;
     std::uint32_t maxWorst = 0;
     for (std::size_t q = 0; q < s.queries; ++q) {
         const float qx = s.qx[q], qy = s.qy[q], qz = s.qz[q];
+        std::uint64_t worst = s.worst[q];
+        const float gx = std::max({0.0f, box.lo[0] - qx, qx - box.hi[0]});
+        const float gy = std::max({0.0f, box.lo[1] - qy, qy - box.hi[1]});
+        const float gz = std::max({0.0f, box.lo[2] - qz, qz - box.hi[2]});
+        if (bitsOf(gx * gx + gy * gy + gz * gz) > (worst >> 32)) { // the whole leaf is too far for q
+            maxWorst = std::max(maxWorst, static_cast<std::uint32_t>(worst >> 32));
+            continue;
+        }
         std::uint64_t* keys = &s.keys[q * k];
         std::uint32_t count = s.counts[q];
-        std::uint64_t worst = s.worst[q];
-        for (std::uint32_t chunk = begin; chunk < end; chunk += kChunk) {
-            const std::uint32_t chunkEnd = std::min(end, chunk + kChunk);
+        for (std::uint32_t chunk = leaf.begin; chunk < leaf.end; chunk += kChunk) {
+            const std::uint32_t chunkEnd = std::min(leaf.end, chunk + kChunk);
             for (std::uint32_t j = chunk; j < chunkEnd; ++j) { // vectorised
                 const float dx = qx - m_x[j], dy = qy - m_y[j], dz = qz - m_z[j];
                 distances[j - chunk] = dx * dx + dy * dy + dz * dz;

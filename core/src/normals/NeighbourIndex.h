@@ -3,11 +3,14 @@
  * @brief Private to core/normals: exact k-nearest-neighbour queries for every point of a cloud, built
  *        on nanoflann's KD-tree and searched one tree leaf at a time.
  *
- * Why not nanoflann's knnSearch() per point: measured at ~1.5 µs per query for k = 16 on 1 M points
- * (one core of the 2.5 GHz Xeon of the dev box), it alone would miss the 1 M points/s target on 2 cores.
- * Instead, the points of one leaf (≤ leafSize, all close together) are searched together: one descent
- * per leaf, pruned against the leaf's query box, and each visited leaf compared with every query in a
- * tight loop over structure-of-arrays floats. Results are identical to a brute-force search.
+ * nanoflann builds the tree (one tree per contiguous Morton range, built in parallel); the tree is then
+ * flattened into a compact depth-first node array with a bounding box per leaf, and nanoflann's copy is
+ * freed. Why not nanoflann's knnSearch() per point: measured at ~1.4 µs per query for k = 16 on 1 M
+ * points (one core of the 2.5 GHz Xeon of the dev box), it alone would miss the 1 M points/s target on
+ * 2 cores. Instead, the points of one leaf (≤ leafSize, all close together) are searched together: one
+ * descent per leaf, pruned against the queries' box, and each visited leaf compared, query by query
+ * (skipped when the leaf's box is beyond the query's current k-th distance), in a tight loop over
+ * structure-of-arrays floats. Results are identical to a brute-force search.
  *
  * Exactness and determinism: coordinates are searched as float relative to @p origin (a cloud 300 m
  * across still resolves 15 µm). A neighbour is ranked by the key (float squared distance, Morton rank),
@@ -15,15 +18,13 @@
  * of trees, threads or visiting order. Node pruning compares the box-to-region lower bound computed with
  * the same float operations as the distances, so no tie at the k-th distance is lost.
  *
- * Memory: about 52 bytes per point kept (double local copy 24, float SoA 12, ranks 8, tree ~8) and
- * 24 more during construction. Construction is multithreaded (one nanoflann tree per contiguous Morton
- * range, built in parallel). After construction, search() is const and thread-safe with one
- * KnnScratch per thread.
+ * Memory: about 52 bytes per point kept (double local copy 24, float SoA 12, ranks 8, nodes and leaf
+ * boxes ~6) and about 30 more during construction. After construction, search() is const and
+ * thread-safe with one KnnScratch per thread.
  */
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <memory>
 #include <span>
 #include <vector>
 
@@ -86,18 +87,35 @@ public:
     void search(std::span<const std::uint32_t> queries, std::size_t k, KnnScratch& scratch) const;
 
 private:
-    struct Tree;
-    void descend(const void* node, std::uint32_t base, std::array<float, 3>& gaps,
-                 const std::array<float, 3>& lo, const std::array<float, 3>& hi,
-                 KnnScratch& scratch) const;
-    void visitLeaf(std::uint32_t begin, std::uint32_t end, KnnScratch& scratch) const;
+    /** A node of the flattened tree, in depth-first order: child1 of an inner node is the next node. */
+    struct Node {
+        float divLow;          ///< inner: largest coordinate on the low side
+        float divHigh;         ///< inner: smallest coordinate on the high side
+        std::uint32_t axis;    ///< 0, 1, 2 for an inner node; 3 for a leaf
+        std::uint32_t payload; ///< inner: index of child2; leaf: index in m_leaves
+    };
+    struct LeafBox {
+        std::array<float, 3> lo, hi;
+    };
+    struct TreeRoot {
+        std::uint32_t node;  ///< index of the root in m_nodes
+        std::uint32_t begin; ///< first tree position
+        LeafBox box;
+    };
+
+    void flatten(const void* nanoflannTree, std::uint32_t base, std::uint32_t tree);
+    void descend(std::uint32_t node, std::array<float, 3>& gaps, const std::array<float, 3>& lo,
+                 const std::array<float, 3>& hi, KnnScratch& scratch) const;
+    void visitLeaf(std::uint32_t leaf, KnnScratch& scratch) const;
 
     std::vector<double> m_local;          ///< rank order, relative to the origin
     std::vector<std::uint32_t> m_source;  ///< rank → caller index
     std::vector<float> m_x, m_y, m_z;     ///< tree-position order, search frame
     std::vector<std::uint32_t> m_rankAt;  ///< tree position → rank
     std::vector<Leaf> m_leaves;
-    std::vector<std::unique_ptr<Tree>> m_trees;
+    std::vector<LeafBox> m_leafBoxes;
+    std::vector<Node> m_nodes;
+    std::vector<TreeRoot> m_roots;
 };
 
 } // namespace stylos::core::normals::detail

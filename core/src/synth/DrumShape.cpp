@@ -131,7 +131,8 @@ double DrumShape::bedDepth(double rho, double theta, bool top) const
     const double slope = smoothStep((inner - rho) / kRecessEdge);
     const double x = rho * std::cos(theta) + (top ? 17.0 : 0.0);
     const double y = rho * std::sin(theta);
-    return slope * (m_p.recess + std::fabs(m_dressing.value(x, y)));
+    // The dressing is shifted to be ≥ 0 (no crease, so the normals stay defined everywhere).
+    return slope * (m_p.recess + 0.5 * (m_dressing.value(x, y) + m_dressing.bound()));
 }
 
 double DrumShape::maxLateralDepth() const
@@ -168,12 +169,14 @@ nlohmann::json DrumShape::drumTruth() const
                    {"maxDepth", m_p.brokenDepth + m_fracture.bound()}};
     t["anathyrosis"] = {{"present", m_p.anathyrosis}, {"ringWidth", m_p.ringWidth},
                         {"recess", m_p.recess}, {"maxDepth", m_p.recess + m_dressing.bound()}};
+    t["anathyrosis"]["roughness"] = m_p.bedRoughness;
     return t;
 }
 
 void DrumShape::describe(nlohmann::json& truth) const
 {
-    for (auto& [key, value] : drumTruth().items()) truth[key] = value;
+    const nlohmann::json drum = drumTruth();
+    for (const auto& [key, value] : drum.items()) truth[key] = value;
 }
 
 } // namespace stylos::core::synth

@@ -150,9 +150,13 @@ Status ScanSimulator::samplePatch(const SurfacePatch& patch, int scan, Sampler& 
             if (!columns.wraps && a0 > columns.max) break;
             if (std::fabs(std::remainder(patch.azimuth(a0, b0) - station.viewAzimuth, kTwoPi)) > halfAngle)
                 continue;
-            double a = a0 + random.uniform(-kJitter, kJitter) * step;
-            double b = std::clamp(b0 + random.uniform(-kJitter, kJitter) * spacing, rows.min, rows.max);
-            if (!columns.wraps) a = std::clamp(a, columns.min, columns.max);
+            const double jitterA = random.uniform(-kJitter, kJitter) * step;
+            const double b = std::clamp(b0 + random.uniform(-kJitter, kJitter) * spacing, rows.min, rows.max);
+            double a = patch.carry(a0, b0, b) + jitterA;
+            if (!columns.wraps) {
+                const ParameterRange moved = patch.columns(b);
+                a = std::clamp(a, moved.min, moved.max);
+            }
             Eigen::Vector3d p = patch.position(a, b);
             if (!patch.contains(a, b, p)) continue;
             const double n = std::clamp(random.normal(), -kNoiseClamp, kNoiseClamp) * sigma;

@@ -7,10 +7,8 @@
 #include <QString>
 #include <QStringList>
 
-#include <algorithm>
 #include <array>
 #include <cstdint>
-#include <limits>
 
 namespace stylos::widgets {
 
@@ -19,13 +17,9 @@ struct ScanSummary {
     QString format;           ///< the reader's format name, e.g. "ply-binary-le", "las-1.2", "xyz"
     std::uint64_t points = 0; ///< points delivered (finite coordinates)
     std::uint64_t skipped = 0;///< points skipped because a coordinate was NaN or infinite
-    /** Axis-aligned bounds in file units: min x, y, z then max x, y, z. Inverted while empty. */
-    std::array<double, 6> bounds{std::numeric_limits<double>::infinity(),
-                                 std::numeric_limits<double>::infinity(),
-                                 std::numeric_limits<double>::infinity(),
-                                 -std::numeric_limits<double>::infinity(),
-                                 -std::numeric_limits<double>::infinity(),
-                                 -std::numeric_limits<double>::infinity()};
+    /** Exact axis-aligned bounds of the points read, in file units: min x, y, z then max x, y, z
+     *  (all 0 when there are no points). */
+    std::array<double, 6> bounds{};
     QStringList attributes;   ///< "normal", "color", then scalar names
 
     bool hasBounds() const { return points > 0; }
@@ -34,16 +28,6 @@ struct ScanSummary {
     {
         if (!hasBounds()) return {0.0, 0.0, 0.0};
         return {bounds[3] - bounds[0], bounds[4] - bounds[1], bounds[5] - bounds[2]};
-    }
-    /** Grows the bounds to contain (x, y, z). */
-    void include(double x, double y, double z)
-    {
-        bounds[0] = std::min(bounds[0], x);
-        bounds[1] = std::min(bounds[1], y);
-        bounds[2] = std::min(bounds[2], z);
-        bounds[3] = std::max(bounds[3], x);
-        bounds[4] = std::max(bounds[4], y);
-        bounds[5] = std::max(bounds[5], z);
     }
 };
 

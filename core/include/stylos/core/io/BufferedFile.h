@@ -48,6 +48,8 @@ public:
      */
     bool readLine(std::string_view& line);
     bool lineTooLong() const { return m_lineTooLong; }
+    /** False when the last line returned ended at the end of the file without a line break. */
+    bool lineTerminated() const { return m_lineTerminated; }
 
 private:
     struct Closer { void operator()(std::FILE* f) const { if (f) std::fclose(f); } };
@@ -59,6 +61,7 @@ private:
     std::size_t m_end = 0;
     bool m_ioError = false;
     bool m_lineTooLong = false;
+    bool m_lineTerminated = true;
 };
 
 } // namespace stylos::core::io

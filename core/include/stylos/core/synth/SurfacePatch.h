@@ -36,8 +36,13 @@ public:
     virtual Eigen::Vector3d position(double a, double b) const = 0;
     /** Whether the point (a, b) at @p p belongs to the patch (false where the patch is clipped). */
     virtual bool contains(double /*a*/, double /*b*/, const Eigen::Vector3d& /*p*/) const { return true; }
-    /** Outward unit normal at (a, b); by default central differences of position(). */
+    /** Outward unit normal at (a, b); by default central differences of position(), moving along
+     *  rows and across them with carry(). */
     virtual Eigen::Vector3d normal(double a, double b) const;
+
+    /** The a on row @p to at the same fraction of the row as @p a on row @p from: on a surface of
+     *  revolution, the same azimuth. Lets jitter and differences across rows keep the azimuth. */
+    double carry(double a, double from, double to) const;
 
 protected:
     /** +1 when ∂p/∂a × ∂p/∂b points out of the object, -1 when it points in. */

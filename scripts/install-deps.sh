@@ -1,0 +1,13 @@
+#!/usr/bin/env bash
+# Installs what Stylos needs to build and test on Debian 12 (bookworm). Run as root or with sudo.
+set -euo pipefail
+SUDO=""
+if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
+$SUDO apt-get update
+DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends \
+  cmake ninja-build g++ pkg-config \
+  qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
+  libqt6opengl6-dev libgl-dev \
+  libeigen3-dev libglm-dev libopenimageio-dev libnanoflann-dev nlohmann-json3-dev \
+  libgtest-dev libgmock-dev libbenchmark-dev \
+  xvfb xauth libgl1-mesa-dri

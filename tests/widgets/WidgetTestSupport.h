@@ -1,0 +1,58 @@
+#pragma once
+// Helpers shared by the widget tests: small point files written by hand, and a test main that uses the
+// display it finds (Xvfb under `xvfb-run -a ctest`), falling back to Qt's offscreen platform without one.
+#include <QApplication>
+#include <QFile>
+#include <QStandardPaths>
+#include <QString>
+#include <QtTest/QtTest>
+
+namespace stylos::test {
+
+/** Three points: (0,0,0), (1,0,0), (0,1,2). Bounds [0,1]×[0,1]×[0,2]. */
+inline const char* tinyPly()
+{
+    return "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\n"
+           "end_header\n0 0 0\n1 0 0\n0 1 2\n";
+}
+
+/** Four points with negative and fractional coordinates: bounds [-2.5,3]×[-1,0.25]×[10,12]. */
+inline const char* fourPointPly()
+{
+    return "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\nproperty double z\n"
+           "end_header\n-2.5 0 10\n3 -1 11\n0 0.25 12\n1 0 10.5\n";
+}
+
+/** Writes @p text to @p dir/@p name and returns the path. */
+inline QString writeFile(const QString& dir, const QString& name, const QByteArray& text)
+{
+    const QString path = dir + QLatin1Char('/') + name;
+    QFile file(path);
+    if (!file.open(QIODevice::WriteOnly) || file.write(text) != text.size()) qFatal("cannot write %s", qPrintable(path));
+    return path;
+}
+
+/** Before QApplication: use the offscreen platform when there is no display and none was chosen. */
+inline void chooseTestPlatform()
+{
+    if (qEnvironmentVariableIsEmpty("QT_QPA_PLATFORM") && qEnvironmentVariableIsEmpty("DISPLAY") &&
+        qEnvironmentVariableIsEmpty("WAYLAND_DISPLAY"))
+        qputenv("QT_QPA_PLATFORM", "offscreen");
+}
+
+} // namespace stylos::test
+
+/** QTEST_MAIN with the platform fallback, test-mode paths (never the user's settings or cache). */
+#define STYLOS_WIDGET_TEST_MAIN(TestClass)                                                          \
+    int main(int argc, char* argv[])                                                                \
+    {                                                                                               \
+        ::stylos::test::chooseTestPlatform();                                                       \
+        QStandardPaths::setTestModeEnabled(true);                                                   \
+        QApplication app(argc, argv);                                                               \
+        QApplication::setOrganizationName(QStringLiteral("StylosTests"));                           \
+        QApplication::setApplicationName(QStringLiteral(#TestClass));                               \
+        app.setAttribute(Qt::AA_Use96Dpi, true);                                                    \
+        TestClass test;                                                                             \
+        QTEST_SET_MAIN_SOURCE_PATH                                                                  \
+        return QTest::qExec(&test, argc, argv);                                                     \
+    }
