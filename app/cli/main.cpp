@@ -42,7 +42,7 @@ int main(int argc, char** argv)
     }
     if (command == "info") return runInfo(args);
     if (command == "generate") return runGenerate(args);
-    // if (command == "normals") return runNormals(args);
+    if (command == "normals") return runNormals(args);
     std::fprintf(stderr, "stylos-cli: unknown command \"%s\"\n", command.c_str());
     printUsage(stderr);
     return ExitUsage;

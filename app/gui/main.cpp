@@ -14,11 +14,15 @@
 
 namespace {
 
-/** Installs the Stylos and Qt translations for the system locale, when there are any. */
+/**
+ * Installs the Stylos translation for the system locale (French, Greek), English otherwise (it only
+ * carries the plural forms), and Qt's own for the standard dialogs when installed.
+ */
 void installTranslations(QApplication& app)
 {
     auto* stylos = new QTranslator(&app);
-    if (stylos->load(QLocale(), QStringLiteral("stylos"), QStringLiteral("_"), QStringLiteral(":/i18n")))
+    if (stylos->load(QLocale(), QStringLiteral("stylos"), QStringLiteral("_"), QStringLiteral(":/i18n")) ||
+        stylos->load(QStringLiteral(":/i18n/stylos_en")))
         QApplication::installTranslator(stylos);
     auto* qt = new QTranslator(&app);
     if (qt->load(QLocale(), QStringLiteral("qtbase"), QStringLiteral("_"),
@@ -33,7 +37,7 @@ void grabWhenFinished(stylos::app::MainWindow& window, const QString& path)
     QObject::connect(&window.session(), &stylos::widgets::SceneSession::operationFinished, &window,
                      [&window, path](const QStringList& errors, bool cancelled) {
                          // One more turn of the event loop so that the views lay out their new rows.
-                         QTimer::singleShot(50, &window, [&window, path, failed = !errors.isEmpty() || cancelled] {
+                         QTimer::singleShot(100, &window, [&window, path, failed = !errors.isEmpty() || cancelled] {
                              if (!window.grab().save(path, "PNG")) {
                                  std::fprintf(stderr, "stylos: %s: could not write the image\n", qPrintable(path));
                                  QApplication::exit(1);

@@ -399,6 +399,19 @@ TEST_F(TextReaderTest, RealLeicaPts)
     EXPECT_EQ(cloud->colors[2], 38);
 }
 
+TEST_F(TextReaderTest, ByteOrderMarkIgnored)
+{
+    EXPECT_EQ(load("bom.csv", "\xEF\xBB\xBFX,Y,Z\n1,2,3\n").positions, (std::vector<double>{1, 2, 3}));
+    EXPECT_EQ(load("bom.xyz", "\xEF\xBB\xBF" "1 2 3\n").positions, (std::vector<double>{1, 2, 3}));
+}
+
+TEST_F(TextReaderTest, QuotedCsvHeader)
+{
+    const Cloud cloud = load("q.csv", "\"X\",\"Y\",\"Z\",\"Reflectance\"\n1,2,3,0.5\n");
+    EXPECT_EQ(cloud.positions, (std::vector<double>{1, 2, 3}));
+    EXPECT_EQ(cloud.scalars, (std::vector<std::vector<double>>{{0.5}}));
+}
+
 // ---- Errors ----
 
 TEST_F(TextReaderTest, WrongColumnCount)

@@ -36,6 +36,7 @@ private Q_SLOTS:
     void modelListsFilesAndTotal();
     void reloadingAFileReplacesItsRow();
     void widgetShowsTheTotal();
+    void columnsFitTheirContents();
 };
 
 void SceneSummaryTest::modelListsFilesAndTotal()
@@ -88,8 +89,28 @@ void SceneSummaryTest::widgetShowsTheTotal()
     model.addScan(makeScan("/a.ply", 1'234'567));
     model.addScan(makeScan("/b.ply", 3));
     QVERIFY2(widget.totalText().contains(QLocale().toString(1'234'570)), qPrintable(widget.totalText()));
-    QVERIFY(widget.totalText().contains("2 files"));
+    QVERIFY(widget.totalText().contains("2 file"));
     QCOMPARE(widget.table()->model()->rowCount(), 2);
+}
+
+void SceneSummaryTest::columnsFitTheirContents()
+{
+    SceneSummaryModel model;
+    SceneSummaryWidget widget(model);
+    widget.resize(900, 400);
+    widget.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&widget));
+    model.addScan(makeScan("/a-long-file-name-for-the-first-scan.ply", 1));
+    model.clear(); // the demo replaces the scene: the columns must fit again afterwards
+    model.addScan(makeScan("/another-long-file-name-for-a-drum.ply", 123'456'789));
+    QApplication::processEvents(); // let the view lay out (test only)
+    QTableView* table = widget.table();
+    const QFontMetrics metrics(table->font());
+    const int nameWidth = metrics.horizontalAdvance("another-long-file-name-for-a-drum.ply");
+    QVERIFY2(table->columnWidth(SceneSummaryModel::FileColumn) > nameWidth,
+             qPrintable(QString::number(table->columnWidth(SceneSummaryModel::FileColumn))));
+    QVERIFY(table->columnWidth(SceneSummaryModel::PointsColumn) >
+            metrics.horizontalAdvance(QLocale().toString(123'456'789)));
 }
 
 STYLOS_WIDGET_TEST_MAIN(SceneSummaryTest)

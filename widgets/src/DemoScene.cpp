@@ -111,7 +111,7 @@ bool DemoScene::prepare()
         if (!error) Q_EMIT ready(paths());
         else if (error->code == core::ErrorCode::Cancelled) Q_EMIT cancelled();
         else
-            Q_EMIT failed(tr("Could not generate the demo scene: %1.").arg(ErrorText::title(error->code)) +
+            Q_EMIT failed(tr("Could not generate the demo scene: %1.").arg(ErrorText::reason(error->code)) +
                           QLatin1Char('\n') + QString::fromStdString(error->message));
     });
     return true;

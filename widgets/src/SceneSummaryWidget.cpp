@@ -21,9 +21,9 @@ SceneSummaryWidget::SceneSummaryWidget(SceneSummaryModel& model, QWidget* parent
     m_table->setModel(&m_model);
     m_table->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_table->setAlternatingRowColors(true);
+    m_table->setWordWrap(false);
     m_table->verticalHeader()->hide();
     m_table->horizontalHeader()->setStretchLastSection(true);
-    m_table->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
 
     QFont font = m_total->font();
     font.setPointSizeF(font.pointSizeF() * 1.4);
@@ -37,7 +37,11 @@ SceneSummaryWidget::SceneSummaryWidget(SceneSummaryModel& model, QWidget* parent
 
     connect(&m_model, &SceneSummaryModel::totalPointsChanged, this, &SceneSummaryWidget::retranslateUi);
     connect(&m_model, &QAbstractItemModel::modelReset, this, &SceneSummaryWidget::retranslateUi);
+    // Columns fit their contents as files arrive; the user may still resize them.
+    connect(&m_model, &QAbstractItemModel::rowsInserted, m_table, &QTableView::resizeColumnsToContents);
+    connect(&m_model, &QAbstractItemModel::dataChanged, m_table, &QTableView::resizeColumnsToContents);
     retranslateUi();
+    m_table->resizeColumnsToContents();
 }
 
 QString SceneSummaryWidget::totalText() const
@@ -47,8 +51,11 @@ QString SceneSummaryWidget::totalText() const
 
 void SceneSummaryWidget::changeEvent(QEvent* event)
 {
-    if (event->type() == QEvent::LanguageChange) retranslateUi();
     QWidget::changeEvent(event);
+    if (event->type() == QEvent::LanguageChange) {
+        retranslateUi();
+        m_table->resizeColumnsToContents();
+    }
 }
 
 void SceneSummaryWidget::retranslateUi()

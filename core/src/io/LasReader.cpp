@@ -10,7 +10,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-/** Records are decoded column by column over chunks of this size, which stay in the L2 cache. */
+/** Records are decoded column by column over chunks of this size, which stay in the L1/L2 cache. */
 constexpr std::size_t kChunkBytes = std::size_t(32) << 10;
 /** Colour depth sampling: this many windows of this many bytes spread over the point data. */
 constexpr std::uint64_t kSampleWindows = 16;

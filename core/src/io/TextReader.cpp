@@ -28,6 +28,14 @@ std::string formatName(const fs::path& path)
     return "txt";
 }
 
+std::string columnsText(std::size_t n) { return std::to_string(n) + (n == 1 ? " column" : " columns"); }
+
+/** The line without a UTF-8 byte order mark (spreadsheets write one before CSV data). */
+std::string_view withoutBom(std::string_view line)
+{
+    return line.substr(0, 3) == "\xEF\xBB\xBF" ? line.substr(3) : line;
+}
+
 /** A comment line that names x, y and z among non-numeric fields ("//X Y Z Rf Gf Bf"). */
 bool isCommentHeader(const std::vector<std::string_view>& fields)
 {
@@ -102,6 +110,7 @@ Result<TextReader::Prescan> TextReader::prescan()
     while (dataLines < sampleLines && m_file.readLine(line)) {
         ++m_line;
         if (m_file.lineTooLong()) return lineError(ErrorCode::Malformed, m_line, "the line is longer than 64 MiB");
+        if (m_line == 1) line = withoutBom(line);
         std::string_view text = trimSpaces(line);
         if (text.empty()) continue;
         if (isComment(text)) {
@@ -171,8 +180,7 @@ Status TextReader::settleLayout(const Prescan& scan, const ReadOptions& options)
         if (m_layout.roles.empty()) {
             if (scan.sample.columns < 3)
                 return lineError(ErrorCode::Malformed, scan.firstDataLine,
-                                 std::to_string(scan.sample.columns) +
-                                     " columns, but a point needs at least x, y and z");
+                                 columnsText(scan.sample.columns) + ", but a point needs at least x, y and z");
             m_layout = detectLayout(scan.sample);
         }
     }
@@ -243,6 +251,7 @@ Result<std::size_t> TextReader::read(PointBatch& batch, std::size_t maxPoints)
         }
         ++m_line;
         if (m_file.lineTooLong()) return lineError(ErrorCode::Malformed, m_line, "the line is longer than 64 MiB");
+        if (m_line == 1) line = withoutBom(line);
         const char* p = line.data();
         const char* const end = p + line.size();
         while (p < end && (*p == ' ' || *p == '\t')) ++p;
@@ -256,8 +265,7 @@ Result<std::size_t> TextReader::read(PointBatch& batch, std::size_t maxPoints)
                 continue;
             }
             return lineError(ErrorCode::Malformed, m_line,
-                             std::to_string(scan.count) + " columns where " + std::to_string(columns) +
-                                 " are expected (" + m_layout.describe() + ")");
+                             columnsText(scan.count) + " where " + std::to_string(columns) + " are expected (" + m_layout.describe() + ")");
         }
         if (scan.badField != 0) return lineError(ErrorCode::Malformed, m_line, fieldProblem(scan));
         if (m_blockCount) {

@@ -56,7 +56,7 @@ PlaneFit fitPlane(const Covariance3& c, std::size_t points)
         fit.axis[i] = vectors(i, 2);
     }
     if (values[2] <= 0.0) return fit; // numerically identical
-    if (values[1] <= 1e-10 * values[2]) {
+    if (values[1] <= 1e-6 * values[2]) { // computeDirect is only ~1e-8·λ2 accurate near a double root
         fit.shape = NeighbourhoodShape::Collinear;
         return fit;
     }

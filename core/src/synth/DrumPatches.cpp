@@ -52,7 +52,7 @@ bool DrumLateralPatch::contains(double, double, const Eigen::Vector3d& p) const
 DrumBedPatch::DrumBedPatch(const DrumShape& drum, bool top, DrumPatchRange range, Eigen::Vector2d scanCentre,
                            PointClip clip)
     : m_drum(drum), m_top(top), m_range(range), m_scanCentre(scanCentre), m_centred(scanCentre.isZero()),
-      m_clip(std::move(clip))
+      m_clip(std::move(clip)), m_clear(drum.parameters().radius - drum.maxLateralDepth())
 {
     // ∂p/∂a × ∂p/∂b = e_θ × e_ρ = -e_z: outward for the lower bed, inward for the upper one.
     m_orientation = top ? -1.0 : 1.0;
@@ -74,15 +74,16 @@ double DrumBedPatch::azimuth(double a, double b) const
 Eigen::Vector3d DrumBedPatch::position(double a, double b) const
 {
     const double theta = b > 0.0 ? a / b : 0.0;
-    const double depth = m_drum.bedDepth(b, theta, m_top);
-    const double z = m_top ? m_drum.parameters().height - depth : depth;
-    return {b * std::cos(theta), b * std::sin(theta), z};
+    const double x = b * std::cos(theta);
+    const double y = b * std::sin(theta);
+    const double depth = m_drum.bedDepth(x, y, m_top);
+    return {x, y, m_top ? m_drum.parameters().height - depth : depth};
 }
 
 bool DrumBedPatch::contains(double a, double b, const Eigen::Vector3d& p) const
 {
-    const double theta = b > 0.0 ? a / b : 0.0;
-    if (b > m_drum.lateralRadius(theta, p.z())) return false;
+    // Clipped by the lateral surface, which never comes nearer the axis than m_clear.
+    if (b > m_clear && b > m_drum.lateralRadius(b > 0.0 ? a / b : 0.0, p.z())) return false;
     return !m_clip || m_clip(p);
 }
 

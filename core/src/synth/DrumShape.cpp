@@ -88,7 +88,7 @@ double DrumShape::fluteRadius(double theta) const
 {
     if (m_p.grooves == 0) return m_p.radius;
     double phi = theta - m_p.groovePhase;
-    phi -= m_pitch * std::round(phi / m_pitch);
+    phi -= m_pitch * std::nearbyint(phi / m_pitch);
     if (std::fabs(phi) >= m_halfWidth) return m_p.radius;
     const double s = m_arcCentre * std::sin(phi);
     return m_arcCentre * std::cos(phi) - std::sqrt(m_arcRadius * m_arcRadius - s * s);
@@ -108,7 +108,7 @@ double DrumShape::clawMarks(double theta, double z) const
 double DrumShape::cavityRadius(double theta, double z) const
 {
     if (!m_p.broken) return std::numeric_limits<double>::infinity();
-    const double dTheta = std::remainder(theta - m_p.brokenCentre, kTwoPi);
+    const double dTheta = wrapAngle(theta - m_p.brokenCentre);
     const double zCentre = 0.5 * (m_p.brokenZMin + m_p.brokenZMax);
     const double zHalf = 0.5 * (m_p.brokenZMax - m_p.brokenZMin);
     const double qa = dTheta / m_p.brokenHalfAngle;
@@ -124,15 +124,15 @@ double DrumShape::lateralRadius(double theta, double z) const
     return std::min(fluteRadius(theta) - clawMarks(theta, z), cavityRadius(theta, z));
 }
 
-double DrumShape::bedDepth(double rho, double theta, bool top) const
+double DrumShape::bedDepth(double x, double y, bool top) const
 {
     const double inner = m_p.radius - m_p.ringWidth;
+    const double rho = std::sqrt(x * x + y * y);
     if (!m_p.anathyrosis || rho >= inner) return 0.0;
     const double slope = smoothStep((inner - rho) / kRecessEdge);
-    const double x = rho * std::cos(theta) + (top ? 17.0 : 0.0);
-    const double y = rho * std::sin(theta);
     // The dressing is shifted to be ≥ 0 (no crease, so the normals stay defined everywhere).
-    return slope * (m_p.recess + 0.5 * (m_dressing.value(x, y) + m_dressing.bound()));
+    const double dressing = m_dressing.value(x + (top ? 17.0 : 0.0), y);
+    return slope * (m_p.recess + 0.5 * (dressing + m_dressing.bound()));
 }
 
 double DrumShape::maxLateralDepth() const

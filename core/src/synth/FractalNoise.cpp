@@ -29,9 +29,9 @@ FractalNoise::FractalNoise(std::uint64_t seed, double wavelength, double amplitu
 
 double FractalNoise::lattice(std::int64_t i, std::int64_t j, int octave) const
 {
-    const std::uint64_t h = mix(m_seed ^ mix(static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull
-                                             ^ mix(static_cast<std::uint64_t>(j) + 0x632BE59BD9B4E019ull
-                                                   + static_cast<std::uint64_t>(octave))));
+    const std::uint64_t h = mix(m_seed ^ (static_cast<std::uint64_t>(i) * 0x9E3779B97F4A7C15ull)
+                                ^ (static_cast<std::uint64_t>(j) * 0xC2B2AE3D27D4EB4Full)
+                                ^ (static_cast<std::uint64_t>(octave) * 0x165667B19E3779F9ull));
     return static_cast<double>(h >> 11) * 0x1.0p-52 - 1.0; // [-1, 1)
 }
 

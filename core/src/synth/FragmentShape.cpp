@@ -125,9 +125,9 @@ bool FragmentShape::inside(const Eigen::Vector3d& p, Face except) const
     const DrumParameters& d = m_drum.parameters();
     const double r = std::hypot(p.x(), p.y());
     const double theta = std::atan2(p.y(), p.x());
-    const double dTheta = std::remainder(theta - m_f.thetaCentre, kTwoPi);
+    const double dTheta = wrapAngle(theta - m_f.thetaCentre);
     if (except != Face::Outer && r > m_drum.lateralRadius(theta, p.z())) return false;
-    if (except != Face::Top && p.z() > d.height - m_drum.bedDepth(r, theta, true)) return false;
+    if (except != Face::Top && p.z() > d.height - m_drum.bedDepth(p.x(), p.y(), true)) return false;
     if (except != Face::SideLow && dTheta < -m_f.halfAngle + m_sideLow.value(r, p.z()) / r) return false;
     if (except != Face::SideHigh && dTheta > m_f.halfAngle + m_sideHigh.value(r, p.z()) / r) return false;
     const double rIn = innerRadius();

@@ -30,6 +30,11 @@ public:
         const double r = m_shape.meridian(b).r;
         return r > 0.0 ? a / r : 0.0;
     }
+    double azimuthScale(double b) const override
+    {
+        const double r = m_shape.meridian(b).r;
+        return r > 0.0 ? 1.0 / r : 0.0;
+    }
     Eigen::Vector3d position(double a, double b) const override
     {
         const MeridianPoint m = m_shape.meridian(b);

@@ -32,18 +32,44 @@ struct ScanSimulator::Sampler {
     io::PlyWriter* writer = nullptr;
     ProgressSink* progress = nullptr;
     io::PointSchema schema;
-    io::PointBatch batch;
+    io::PointBatch batch;   ///< sized for kBatchPoints; the first `filled` points are real
+    std::size_t filled = 0;
     Random random{0};
     std::uint64_t written = 0;
     std::uint64_t rowsDone = 0;
     std::uint64_t rowsTotal = 1;
 
+    void shape(std::size_t points)
+    {
+        batch.positions.resize(3 * points);
+        if (schema.hasNormals) batch.normals.resize(3 * points);
+        batch.scalars[0].resize(points);
+    }
+
+    void append(const Eigen::Vector3d& p, const Eigen::Vector3d* n, int scan)
+    {
+        double* position = batch.positions.data() + 3 * filled;
+        position[0] = p.x();
+        position[1] = p.y();
+        position[2] = p.z();
+        if (n) {
+            float* normal = batch.normals.data() + 3 * filled;
+            normal[0] = static_cast<float>(n->x());
+            normal[1] = static_cast<float>(n->y());
+            normal[2] = static_cast<float>(n->z());
+        }
+        batch.scalars[0][filled] = static_cast<double>(scan);
+        ++filled;
+    }
+
     Status flush()
     {
-        if (batch.empty()) return {};
+        if (filled == 0) return {};
+        shape(filled);
         if (Status s = writer->write(batch); !s) return s;
-        written += batch.size();
-        batch.reset(schema, kBatchPoints);
+        written += filled;
+        filled = 0;
+        shape(kBatchPoints);
         if (progress && progress->isCancelRequested()) return Error{ErrorCode::Cancelled, "cancelled"};
         return {};
     }
@@ -59,7 +85,7 @@ ScanSimulator::ScanSimulator(const SyntheticObject& object, const SyntheticOptio
     const double distance = object.extent() + kScannerDistance;
     for (int k = 0; k < options.scans; ++k) {
         ScanStation s;
-        s.viewAzimuth = std::remainder(firstAzimuth + kTwoPi * k / options.scans, kTwoPi);
+        s.viewAzimuth = wrapAngle(firstAzimuth + kTwoPi * k / options.scans);
         s.scanner = Eigen::Vector3d(centre.x() + distance * std::cos(s.viewAzimuth),
                                     centre.y() + distance * std::sin(s.viewAzimuth),
                                     object.height() + kScannerHeight);
@@ -104,6 +130,7 @@ Result<std::uint64_t> ScanSimulator::run(io::PlyWriter& writer, ProgressSink* pr
     sampler.schema.hasNormals = m_options.writeNormals;
     sampler.schema.scalarNames = {"scan_id"};
     sampler.batch.reset(sampler.schema, kBatchPoints);
+    sampler.shape(kBatchPoints);
     std::uint64_t rows = 0;
     for (const SurfacePatch* patch : m_object.patches())
         rows += static_cast<std::uint64_t>(rowCount(patch->rows(), m_options.spacing, 0.0));
@@ -145,10 +172,23 @@ Status ScanSimulator::samplePatch(const SurfacePatch& patch, int scan, Sampler& 
         } else if (columns.length() >= 0.0) {
             columnTotal = rowCount(columns, spacing, columnOffset);
         }
-        for (std::int64_t j = 0; j < columnTotal; ++j) {
+        // On a row around the scan axis, visit only the nodes near the scan's window.
+        std::int64_t first = 0;
+        std::int64_t last = columnTotal - 1;
+        const double scale = columns.wraps ? patch.azimuthScale(b0) : 0.0;
+        if (scale > 0.0) {
+            const double half = halfAngle / scale / step;
+            if (2.0 * half + 4.0 < static_cast<double>(columnTotal)) {
+                const double centre = (station.viewAzimuth / scale - columns.min) / step - columnOffset;
+                first = static_cast<std::int64_t>(std::floor(centre - half)) - 1;
+                last = static_cast<std::int64_t>(std::ceil(centre + half)) + 1;
+            }
+        }
+        for (std::int64_t node = first; node <= last; ++node) {
+            const std::int64_t j = columns.wraps ? ((node % columnTotal) + columnTotal) % columnTotal : node;
             const double a0 = columns.min + (static_cast<double>(j) + columnOffset) * step;
             if (!columns.wraps && a0 > columns.max) break;
-            if (std::fabs(std::remainder(patch.azimuth(a0, b0) - station.viewAzimuth, kTwoPi)) > halfAngle)
+            if (std::fabs(wrapAngle(patch.azimuth(a0, b0) - station.viewAzimuth)) > halfAngle)
                 continue;
             const double jitterA = random.uniform(-kJitter, kJitter) * step;
             const double b = std::clamp(b0 + random.uniform(-kJitter, kJitter) * spacing, rows.min, rows.max);
@@ -162,15 +202,13 @@ Status ScanSimulator::samplePatch(const SurfacePatch& patch, int scan, Sampler& 
             const double n = std::clamp(random.normal(), -kNoiseClamp, kNoiseClamp) * sigma;
             p += n * (p - station.scanner).normalized();
             const Eigen::Vector3d q = rotation * p + translation;
-            sampler.batch.positions.insert(sampler.batch.positions.end(), {q.x(), q.y(), q.z()});
             if (normals) {
                 const Eigen::Vector3d m = rotation * patch.normal(a, b);
-                sampler.batch.normals.insert(sampler.batch.normals.end(),
-                                             {static_cast<float>(m.x()), static_cast<float>(m.y()),
-                                              static_cast<float>(m.z())});
+                sampler.append(q, &m, scan);
+            } else {
+                sampler.append(q, nullptr, scan);
             }
-            sampler.batch.scalars[0].push_back(static_cast<double>(scan));
-            if (sampler.batch.size() >= kBatchPoints)
+            if (sampler.filled >= kBatchPoints)
                 if (Status s = sampler.flush(); !s) return s;
         }
         ++sampler.rowsDone;

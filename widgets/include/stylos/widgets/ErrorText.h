@@ -14,9 +14,9 @@ class ErrorText {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::ErrorText)
 
 public:
-    /** A short translated title for @p code, e.g. "The file is truncated". */
-    static QString title(core::ErrorCode code);
-    /** "Could not load NAME: TITLE\nDETAIL", naming @p path (file name) and the core's message. */
+    /** A short translated reason for @p code, to follow a colon: e.g. "the file is truncated". */
+    static QString reason(core::ErrorCode code);
+    /** "Could not load NAME: REASON.\nDETAIL", naming @p path (file name) and the core's message. */
     static QString loadFailure(const QString& path, const core::Error& error);
 };
 

@@ -47,8 +47,9 @@ public:
 private:
     LasReader(std::filesystem::path path, BufferedFile file, LasHeader las, LasPointLayout layout);
     bool sampleColorsAre8Bit() const;
+    /** Decodes @p count records at @p records into the batch's points [first, first + count). */
     void decode(const char* records, std::size_t count, PointBatch& batch, std::size_t first) const;
-    /** Removes the points with a non-finite position among the last @p count (from @p first); returns how many stay. */
+    /** Moves the points with a finite position among [first, first + count) to the front; returns how many. */
     static std::size_t dropNonFinite(PointBatch& batch, std::size_t first, std::size_t count);
 
     BufferedFile m_file;
@@ -56,8 +57,6 @@ private:
     LasPointLayout m_layout;
     std::vector<LasScalarField> m_fields;
     std::uint64_t m_recordsLeft = 0;
-    std::vector<double> m_scratch;            ///< one chunk of one column (3 for positions)
-    std::vector<std::uint8_t> m_scratchColors;
     bool m_colors8Bit = false;
     bool m_positionsAlwaysFinite = true; ///< no int32 × scale + offset can overflow
 };

@@ -6,8 +6,9 @@
  * line). Blank lines and comments ('#' or "//" first) are skipped anywhere. An optional header line of
  * column names ("X,Y,Z,Intensity,R,G,B", or a comment such as "//X Y Z Rf Gf Bf") gives the layout;
  * otherwise it is detected from the column count and the first data lines (see detectLayout()), or
- * taken from ReadOptions::columns. A line holding a single integer starts a Leica PTS block of that
- * many points; each block's count is checked against its points.
+ * taken from ReadOptions::columns. Names may be quoted; a UTF-8 byte order mark is ignored; with ','
+ * or ';' one trailing separator per line is tolerated. A line holding a single integer starts a Leica
+ * PTS block of that many points; each block's count is checked against its points.
  *
  * Positions are read as double in the file's units. Colours are 0–255 integers or floats in [0, 1]
  * (decided per file from the first data lines, scaled to 0–255, rounded and clamped). Points whose

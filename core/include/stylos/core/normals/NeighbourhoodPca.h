@@ -19,7 +19,7 @@ struct Covariance3 {
 /** @brief How well a neighbourhood defines a plane. */
 enum class NeighbourhoodShape {
     Surface,    ///< a plane is defined: the normal is the smallest principal axis
-    Collinear,  ///< points on a line (λ1 ≤ 1e-10·λ2): only the line direction is known
+    Collinear,  ///< points on a line (λ1 ≤ 1e-6·λ2, spread across < 1/1000 of the length): only the line is known
     Coincident, ///< all points identical (λ2 = 0) or fewer than 3 points: nothing is known
 };
 

@@ -31,6 +31,7 @@ public:
     ParameterRange rows() const override { return {m_range.min, m_range.max, false}; }
     ParameterRange columns(double b) const override;
     double azimuth(double a, double b) const override;
+    double azimuthScale(double) const override { return m_centred ? 1.0 / m_radius : 0.0; }
     Eigen::Vector3d position(double a, double b) const override;
     bool contains(double a, double b, const Eigen::Vector3d& p) const override;
 
@@ -50,6 +51,7 @@ public:
     ParameterRange rows() const override { return {m_range.min, m_range.max, false}; }
     ParameterRange columns(double b) const override;
     double azimuth(double a, double b) const override;
+    double azimuthScale(double b) const override { return m_centred && b > 0.0 ? 1.0 / b : 0.0; }
     Eigen::Vector3d position(double a, double b) const override;
     bool contains(double a, double b, const Eigen::Vector3d& p) const override;
     Eigen::Vector3d normal(double a, double b) const override;
@@ -61,6 +63,7 @@ private:
     Eigen::Vector2d m_scanCentre;
     bool m_centred;
     PointClip m_clip;
+    double m_clear; ///< radius inside which the lateral surface cannot clip the face, metres
 };
 
 } // namespace stylos::core::synth

@@ -66,8 +66,8 @@ public:
     double fluteRadius(double theta) const;
     /** Radius of the lateral surface (flutes, claw marks, broken region) at (θ, z), metres. */
     double lateralRadius(double theta, double z) const;
-    /** How far below its plane (into the drum) a bed face lies at polar (ρ, θ), metres (≥ 0). */
-    double bedDepth(double rho, double theta, bool top) const;
+    /** How far below its plane (into the drum) a bed face lies at (x, y), metres (≥ 0). */
+    double bedDepth(double x, double y, bool top) const;
     /** Deepest the lateral surface goes below the fillet circle anywhere, metres. */
     double maxLateralDepth() const;
 

@@ -7,7 +7,17 @@
  */
 #include <Eigen/Core>
 
+#include <cmath>
+#include <numbers>
+
 namespace stylos::core::synth {
+
+/** @p angle (radians) brought into [-π, π]; cheaper than std::remainder. */
+inline double wrapAngle(double angle)
+{
+    constexpr double twoPi = 2.0 * std::numbers::pi;
+    return angle - twoPi * std::nearbyint(angle * (1.0 / twoPi));
+}
 
 /** @brief A closed range of a parameter, metres. @c wraps: the row is a full circle (a and a + length
  *         are the same point), sampled with an integer number of steps and no seam. */
@@ -32,6 +42,9 @@ public:
      * which scans see it. Must be cheap: it is asked of every grid node of every scan.
      */
     virtual double azimuth(double a, double b) const = 0;
+    /** k > 0 when azimuth(a, b) = k·a on row @p b exactly (a row around the scan axis), so a scan's
+     *  window maps to a range of columns; 0 otherwise (each node is then tested). */
+    virtual double azimuthScale(double /*b*/) const { return 0.0; }
     /** Position (metres, object frame) of (a, b). Defined also slightly outside the patch. */
     virtual Eigen::Vector3d position(double a, double b) const = 0;
     /** Whether the point (a, b) at @p p belongs to the patch (false where the patch is clipped). */
