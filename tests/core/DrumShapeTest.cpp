@@ -84,7 +84,9 @@ TEST(SynthDrumShape, LateralSurfaceStaysWithinItsDepth)
             const double dTheta = std::remainder(theta - p.brokenCentre, kTwoPi);
             const bool broken = std::fabs(dTheta) <= p.brokenHalfAngle && z >= p.brokenZMin && z <= p.brokenZMax;
             if (z < p.clawMin || z > p.clawMax) {
-                if (!broken) ASSERT_EQ(claw, 0.0) << theta << " " << z;
+                if (!broken) {
+                    ASSERT_EQ(claw, 0.0) << theta << " " << z;
+                }
             } else if (!broken) {
                 ASSERT_GE(claw, 0.0);
                 ASSERT_LE(claw, p.clawDepth + 1e-15);

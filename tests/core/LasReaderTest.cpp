@@ -8,12 +8,8 @@
 #include <gtest/gtest.h>
 
 #include <bit>
-#include <chrono>
-#include <ctime>
 #include <cmath>
-#include <cstdlib>
 #include <cstring>
-#include <iostream>
 #include <limits>
 
 namespace fs = std::filesystem;
@@ -447,30 +443,4 @@ TEST(LasReader, ReadsRealFixtures)
         EXPECT_EQ(laz.error().code, ErrorCode::Unsupported);
         EXPECT_NE(laz.error().message.find("autzen_trim.laz"), std::string::npos);
     }
-}
-
-// Throwaway speed check: STYLOS_LAS_BENCH=1 stylos_core_tests --gtest_filter=LasReader.Speed
-TEST(LasReader, Speed)
-{
-    if (!std::getenv("STYLOS_LAS_BENCH")) GTEST_SKIP() << "set STYLOS_LAS_BENCH=1 to measure";
-    SKIP_WITHOUT_SHARED_DATA();
-    const fs::path path = stylos::test::sharedData() / "formats" / "autzen_trim.las";
-    PointBatch b;
-    std::uint64_t points = 0;
-    const auto start = std::chrono::steady_clock::now();
-    const std::clock_t cpuStart = std::clock();
-    for (int round = 0; round < 200; ++round) {
-        auto reader = LasReader::open(path);
-        ASSERT_TRUE(reader.ok());
-        for (;;) {
-            auto n = (*reader)->read(b, 65536);
-            ASSERT_TRUE(n.ok());
-            if (*n == 0) break;
-            points += *n;
-        }
-    }
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    const double cpu = double(std::clock() - cpuStart) / CLOCKS_PER_SEC;
-    std::cout << "LAS read: " << points << " points in " << s << " s wall, " << cpu << " s CPU = "
-              << points / cpu / 1e6 << " M points/s per core\n";
 }

@@ -14,6 +14,7 @@
 #include <QLocale>
 #include <QMessageBox>
 #include <QPushButton>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QThread>
@@ -31,6 +32,7 @@ private Q_SLOTS:
     void reportsErrorsNamingTheFile();
     void cancelButtonStopsRunningTask();
     void fileFilterListsEverySupportedExtension();
+    void closingStopsTheTaskAndSavesGeometry();
 
 private:
     QTemporaryDir m_dir;
@@ -111,6 +113,24 @@ void MainWindowTest::fileFilterListsEverySupportedExtension()
     const QString filter = stylos::app::MainActions::scanFileFilter();
     for (const char* ext : {"*.ply", "*.las", "*.xyz", "*.asc", "*.csv", "*.pts", "*.txt", "*.obj"})
         QVERIFY2(filter.contains(ext), ext);
+}
+
+void MainWindowTest::closingStopsTheTaskAndSavesGeometry()
+{
+    QSettings().remove("mainWindow/geometry");
+    auto sawCancel = std::make_shared<std::atomic<bool>>(false);
+    QVERIFY(m_window->session().runner().start<int>(
+        "endless", [sawCancel](QPromise<int>&, stylos::core::ProgressSink& progress) {
+            while (!progress.isCancelRequested()) QThread::msleep(1);
+            sawCancel->store(true);
+        }));
+    m_window->resize(700, 450);
+    QVERIFY(m_window->close());
+    QVERIFY(sawCancel->load()); // close() waited for the worker
+    QVERIFY(!QSettings().value("mainWindow/geometry").toByteArray().isEmpty());
+
+    MainWindow restored(m_dir.filePath("demo"));
+    QCOMPARE(restored.size(), QSize(700, 450));
 }
 
 STYLOS_WIDGET_TEST_MAIN(MainWindowTest)

@@ -103,12 +103,11 @@ void SceneSummaryTest::columnsFitTheirContents()
     model.addScan(makeScan("/a-long-file-name-for-the-first-scan.ply", 1));
     model.clear(); // the demo replaces the scene: the columns must fit again afterwards
     model.addScan(makeScan("/another-long-file-name-for-a-drum.ply", 123'456'789));
-    QApplication::processEvents(); // let the view lay out (test only)
     QTableView* table = widget.table();
     const QFontMetrics metrics(table->font());
     const int nameWidth = metrics.horizontalAdvance("another-long-file-name-for-a-drum.ply");
-    QVERIFY2(table->columnWidth(SceneSummaryModel::FileColumn) > nameWidth,
-             qPrintable(QString::number(table->columnWidth(SceneSummaryModel::FileColumn))));
+    QTRY_VERIFY2(table->columnWidth(SceneSummaryModel::FileColumn) > nameWidth,
+                 qPrintable(QString::number(table->columnWidth(SceneSummaryModel::FileColumn))));
     QVERIFY(table->columnWidth(SceneSummaryModel::PointsColumn) >
             metrics.horizontalAdvance(QLocale().toString(123'456'789)));
 }

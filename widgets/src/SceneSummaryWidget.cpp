@@ -38,10 +38,10 @@ SceneSummaryWidget::SceneSummaryWidget(SceneSummaryModel& model, QWidget* parent
     connect(&m_model, &SceneSummaryModel::totalPointsChanged, this, &SceneSummaryWidget::retranslateUi);
     connect(&m_model, &QAbstractItemModel::modelReset, this, &SceneSummaryWidget::retranslateUi);
     // Columns fit their contents as files arrive; the user may still resize them.
-    connect(&m_model, &QAbstractItemModel::rowsInserted, m_table, &QTableView::resizeColumnsToContents);
-    connect(&m_model, &QAbstractItemModel::dataChanged, m_table, &QTableView::resizeColumnsToContents);
+    connect(&m_model, &QAbstractItemModel::rowsInserted, this, &SceneSummaryWidget::fitColumns);
+    connect(&m_model, &QAbstractItemModel::dataChanged, this, &SceneSummaryWidget::fitColumns);
     retranslateUi();
-    m_table->resizeColumnsToContents();
+    fitColumns();
 }
 
 QString SceneSummaryWidget::totalText() const
@@ -54,8 +54,14 @@ void SceneSummaryWidget::changeEvent(QEvent* event)
     QWidget::changeEvent(event);
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
-        m_table->resizeColumnsToContents();
+        fitColumns();
     }
+}
+
+void SceneSummaryWidget::fitColumns()
+{
+    // Every column but the last, which stretches to the table's edge.
+    for (int column = 0; column + 1 < m_model.columnCount(); ++column) m_table->resizeColumnToContents(column);
 }
 
 void SceneSummaryWidget::retranslateUi()

@@ -91,7 +91,7 @@ std::vector<std::uint32_t> mortonOrder(std::span<const double> positions, const 
 
 float KnnScratch::squaredDistance(std::size_t q, std::size_t j) const
 {
-    return std::bit_cast<float>(static_cast<std::uint32_t>(keys[q * k + j] >> 32));
+    return std::bit_cast<float>(static_cast<std::uint32_t>(keys[q * (k + 1) + 1 + j] >> 32));
 }
 
 NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::array<double, 3>& origin,
@@ -196,9 +196,11 @@ void NeighbourIndex::search(std::span<const std::uint32_t> queries, std::size_t 
     const std::size_t m = queries.size();
     s.k = k;
     s.queries = m;
-    s.keys.resize(m * k);
+    s.keys.assign(m * (k + 1), 0); // the zero before each row stops the insertion loop
     s.counts.assign(m, 0);
     s.worst.assign(m, kNoKey);
+    s.worstDistance.assign(m, std::numeric_limits<float>::infinity());
+    s.reach.resize(m);
     s.qx.resize(m);
     s.qy.resize(m);
     s.qz.resize(m);
@@ -264,20 +266,21 @@ void NeighbourIndex::visitLeaf(std::uint32_t leafIndex, KnnScratch& s) const
     float distances[kChunk];
     const Leaf& leaf = m_leaves[leafIndex];
     const LeafBox& box = m_leafBoxes[leafIndex];
-    const std::size_t k = s.k;
-    std::uint32_t maxWorst = 0;
-    for (std::size_t q = 0; q < s.queries; ++q) {
+    const std::size_t k = s.k, m = s.queries;
+    // Distance from each query to the leaf's box (vectorised over the queries).
+    for (std::size_t q = 0; q < m; ++q) {
+        const float gx = std::max(std::max(0.0f, box.lo[0] - s.qx[q]), s.qx[q] - box.hi[0]);
+        const float gy = std::max(std::max(0.0f, box.lo[1] - s.qy[q]), s.qy[q] - box.hi[1]);
+        const float gz = std::max(std::max(0.0f, box.lo[2] - s.qz[q]), s.qz[q] - box.hi[2]);
+        s.reach[q] = gx * gx + gy * gy + gz * gz;
+    }
+    for (std::size_t q = 0; q < m; ++q) {
+        float worstDistance = s.worstDistance[q];
+        if (s.reach[q] > worstDistance) continue; // the whole leaf is too far for this query
         const float qx = s.qx[q], qy = s.qy[q], qz = s.qz[q];
-        std::uint64_t worst = s.worst[q];
-        const float gx = std::max({0.0f, box.lo[0] - qx, qx - box.hi[0]});
-        const float gy = std::max({0.0f, box.lo[1] - qy, qy - box.hi[1]});
-        const float gz = std::max({0.0f, box.lo[2] - qz, qz - box.hi[2]});
-        if (bitsOf(gx * gx + gy * gy + gz * gz) > (worst >> 32)) { // the whole leaf is too far for q
-            maxWorst = std::max(maxWorst, static_cast<std::uint32_t>(worst >> 32));
-            continue;
-        }
-        std::uint64_t* keys = &s.keys[q * k];
+        std::uint64_t* keys = &s.keys[q * (k + 1) + 1];
         std::uint32_t count = s.counts[q];
+        std::uint64_t worst = s.worst[q];
         for (std::uint32_t chunk = leaf.begin; chunk < leaf.end; chunk += kChunk) {
             const std::uint32_t chunkEnd = std::min(leaf.end, chunk + kChunk);
             for (std::uint32_t j = chunk; j < chunkEnd; ++j) { // vectorised
@@ -285,23 +288,29 @@ void NeighbourIndex::visitLeaf(std::uint32_t leafIndex, KnnScratch& s) const
                 distances[j - chunk] = dx * dx + dy * dy + dz * dz;
             }
             for (std::uint32_t j = chunk; j < chunkEnd; ++j) {
-                const std::uint32_t bits = bitsOf(distances[j - chunk]);
-                if (bits > (worst >> 32)) continue;
-                const std::uint64_t key = (std::uint64_t(bits) << 32) | m_rankAt[j];
-                if (key >= worst) continue;
-                std::size_t i = count < k ? count++ : k - 1;
-                while (i > 0 && keys[i - 1] > key) {
-                    keys[i] = keys[i - 1];
-                    --i;
+                const float distance = distances[j - chunk];
+                if (distance > worstDistance) continue;
+                const std::uint64_t key = (std::uint64_t(bitsOf(distance)) << 32) | m_rankAt[j];
+                if (key >= worst) continue; // a tie at the k-th distance, lost on rank
+                // Insertion into the sorted row; keys[-1] == 0 is below every key, so no bound check.
+                std::uint64_t* slot = keys + (count < k ? count++ : k - 1);
+                while (slot[-1] > key) {
+                    *slot = slot[-1];
+                    --slot;
                 }
-                keys[i] = key;
-                worst = count == k ? keys[k - 1] : kNoKey;
+                *slot = key;
+                if (count == k) {
+                    worst = keys[k - 1];
+                    worstDistance = std::bit_cast<float>(static_cast<std::uint32_t>(worst >> 32));
+                }
             }
         }
         s.counts[q] = count;
         s.worst[q] = worst;
-        maxWorst = std::max(maxWorst, static_cast<std::uint32_t>(worst >> 32));
+        s.worstDistance[q] = worstDistance;
     }
+    std::uint32_t maxWorst = 0;
+    for (std::size_t q = 0; q < m; ++q) maxWorst = std::max(maxWorst, static_cast<std::uint32_t>(s.worst[q] >> 32));
     s.maxWorstBits = maxWorst;
 }
 

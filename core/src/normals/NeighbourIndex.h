@@ -34,16 +34,18 @@ namespace stylos::core::normals::detail {
 struct KnnScratch {
     std::size_t k = 0;
     std::size_t queries = 0;
-    std::vector<std::uint64_t> keys;   ///< queries × k keys, ascending per query
+    std::vector<std::uint64_t> keys;   ///< per query a 0 sentinel then k keys, ascending
     std::vector<std::uint32_t> counts; ///< neighbours found per query (≤ k)
     std::vector<std::uint64_t> worst;  ///< key of the k-th neighbour, or UINT64_MAX while not full
+    std::vector<float> worstDistance;  ///< its squared distance, or +infinity while not full
     std::vector<float> qx, qy, qz;     ///< query coordinates (search frame)
+    std::vector<float> reach;          ///< per query: squared distance to the leaf being visited
     std::uint32_t maxWorstBits = 0;    ///< float bits of the largest k-th distance in the batch
 
     /** Neighbour j of query q as its Morton rank. */
     std::uint32_t neighbour(std::size_t q, std::size_t j) const
     {
-        return static_cast<std::uint32_t>(keys[q * k + j]);
+        return static_cast<std::uint32_t>(keys[q * (k + 1) + 1 + j]);
     }
     /** Squared distance (search frame, float) of neighbour j of query q. */
     float squaredDistance(std::size_t q, std::size_t j) const;

@@ -59,18 +59,16 @@ struct Shared {
 
 /** Normal, quality and flags of one query whose neighbours are in @p scratch row @p q. */
 void finishPoint(Shared& shared, const KnnScratch& scratch, std::size_t q, std::uint32_t rank,
-                 std::vector<double>& gathered, std::uint64_t& degenerate, std::uint64_t& truncated)
+                 std::uint64_t& degenerate, std::uint64_t& truncated)
 {
     const NeighbourIndex& index = shared.index;
     const std::size_t count = scratch.counts[q];
-    gathered.resize(3 * count);
+    CovarianceAccumulator accumulator;
     for (std::size_t j = 0; j < count; ++j) {
         const double* p = index.localPosition(scratch.neighbour(q, j));
-        gathered[3 * j] = p[0];
-        gathered[3 * j + 1] = p[1];
-        gathered[3 * j + 2] = p[2];
+        accumulator.add(p[0], p[1], p[2]);
     }
-    const PlaneFit fit = fitPlane(neighbourhoodCovariance(gathered, count), count);
+    const PlaneFit fit = fitPlane(accumulator.covariance(), count);
     const double* p = index.localPosition(rank);
     const Vec3 point{p[0], p[1], p[2]};
     const bool towardViewpoint = shared.options.orientation == NormalOrientation::TowardViewpoint;
@@ -115,7 +113,6 @@ void work(Shared& shared, bool reportsProgress, ProgressSink* progress)
     const std::size_t queryCount = shared.job.queryCount;
     KnnScratch scratch;
     std::vector<std::uint32_t> queries;
-    std::vector<double> gathered;
     std::uint64_t degenerate = 0, truncated = 0;
     for (;;) {
         if (shared.cancelled.load(std::memory_order_relaxed)) break;
@@ -134,7 +131,7 @@ void work(Shared& shared, bool reportsProgress, ProgressSink* progress)
             if (queries.empty()) continue;
             index.search(queries, shared.options.neighbours, scratch);
             for (std::size_t q = 0; q < queries.size(); ++q)
-                finishPoint(shared, scratch, q, index.rankAt(queries[q]), gathered, degenerate, truncated);
+                finishPoint(shared, scratch, q, index.rankAt(queries[q]), degenerate, truncated);
             done += queries.size();
         }
         const std::size_t total = shared.pointsDone.fetch_add(done) + done;

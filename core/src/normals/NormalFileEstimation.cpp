@@ -169,10 +169,11 @@ Result<TilePlan> planTiles(const CloudSummary& cloud, const NormalFileOptions& o
     const double ownBytes = double(heldBytesPerPoint(cloud.schema, options.writeQuality));
     const double budget = kTileFill * double(options.memoryBudget);
     unsigned levels = 1;
-    while (levels < 24 && double(cloud.points) * ownBytes > budget * double(1u << levels)) ++levels;
+    while (levels < 20 && double(cloud.points) * ownBytes > budget * double(1u << levels)) ++levels;
     double needed = 0;
+    int stalled = 0;
     std::vector<std::uint32_t> halo;
-    for (; levels <= 24; ++levels) {
+    for (; levels <= 20; ++levels) {
         TilePlan plan(cloud.sample, cloud.bounds, levels, margin);
         std::vector<double> bytes(plan.size(), 0.0);
         for (std::size_t i = 0; i < cloud.sample.size() / 3; ++i) {
@@ -183,7 +184,9 @@ Result<TilePlan> planTiles(const CloudSummary& cloud, const NormalFileOptions& o
         }
         const double densest = *std::max_element(bytes.begin(), bytes.end()) * scale;
         if (densest <= budget) return plan;
-        if (needed > 0 && densest >= 0.95 * needed) break; // halos dominate: splitting no longer helps
+        // Once halos dominate, splitting no longer helps: give up after two levels without 5 % gain.
+        stalled = (needed > 0 && densest >= 0.95 * needed) ? stalled + 1 : 0;
+        if (stalled == 2) break;
         needed = needed > 0 ? std::min(needed, densest) : densest;
     }
     return Error{ErrorCode::OutOfBudget,

@@ -55,7 +55,7 @@ double estimateHaloMargin(std::span<const double> sample, std::uint64_t totalPoi
     if (nearMedian > 0 && farMedian > nearMedian)
         dimension = std::clamp(std::log(double(k - 1) / double(small)) / std::log(farMedian / nearMedian), 1.0, 3.0);
     const double density = std::min(1.0, double(s) / double(std::max<std::uint64_t>(totalPoints, 1)));
-    const double margin = 2.5 * quantile(far, 0.95) * std::pow(density, 1.0 / dimension);
+    const double margin = 1.5 * quantile(far, 0.99) * std::pow(density, 1.0 / dimension);
     return std::max(margin, 1e-9 * diagonal);
 }
 

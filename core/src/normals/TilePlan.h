@@ -24,8 +24,9 @@ struct TileBox {
  *
  * The k-th neighbour distances r are measured within the sample, together with the distances at
  * a fifth of k, whose ratio gives the cloud's local dimension D (2 for a surface scan); at full density
- * the distances shrink by (sample/total)^(1/D). The margin is 2.5 × the 95th percentile of the scaled r,
- * so the halo covers the neighbourhoods of all but isolated points (those are counted as truncated).
+ * the distances shrink by (sample/total)^(1/D). The margin is 1.5 × the 99th percentile of the scaled r
+ * (the percentile covers uneven density, the factor the error of the scaling), so the halo covers the
+ * neighbourhoods of all but isolated points (those are counted as truncated).
  * Returns +infinity when the sample is too small to say (fewer than 2k points).
  */
 double estimateHaloMargin(std::span<const double> sample, std::uint64_t totalPoints, std::size_t k);

@@ -160,7 +160,10 @@ nlohmann::json DrumShape::drumTruth() const
                     {"arcRadius", m_arcRadius},    {"arcCentreDistance", m_arcCentre}};
     t["clawBand"] = {{"present", m_p.clawBand}, {"vMin", m_p.clawMin}, {"vMax", m_p.clawMax},
                      {"depth", m_p.clawDepth},  {"pitch", m_p.clawPitch}};
+    // The angular range may straddle θ = 0: thetaMin < 0 or thetaMax > 2π.
     t["broken"] = {{"present", m_p.broken},
+                   {"thetaCentre", m_p.brokenCentre},
+                   {"halfAngle", m_p.brokenHalfAngle},
                    {"thetaMin", m_p.brokenCentre - m_p.brokenHalfAngle},
                    {"thetaMax", m_p.brokenCentre + m_p.brokenHalfAngle},
                    {"zMin", m_p.brokenZMin},

@@ -128,11 +128,23 @@ bool FragmentShape::inside(const Eigen::Vector3d& p, Face except) const
     const double dTheta = wrapAngle(theta - m_f.thetaCentre);
     if (except != Face::Outer && r > m_drum.lateralRadius(theta, p.z())) return false;
     if (except != Face::Top && p.z() > d.height - m_drum.bedDepth(p.x(), p.y(), true)) return false;
-    if (except != Face::SideLow && dTheta < -m_f.halfAngle + m_sideLow.value(r, p.z()) / r) return false;
-    if (except != Face::SideHigh && dTheta > m_f.halfAngle + m_sideHigh.value(r, p.z()) / r) return false;
+    // Each fracture face lies within ±bound of its nominal surface: the noise is evaluated only in that
+    // slab (a distance d beyond the nominal surface, inwards positive, is inside when d ≥ noise).
+    const double bound = fractureBound();
+    auto beyond = [bound](double d, auto&& noise) {
+        if (d >= bound) return true;
+        if (d < -bound) return false;
+        return d >= noise();
+    };
     const double rIn = innerRadius();
-    if (except != Face::Inner && r < rIn + m_inner.value(dTheta * rIn, p.z())) return false;
-    if (except != Face::Bottom && p.z() < m_f.zMin + m_bottom.value(r * std::cos(dTheta), r * std::sin(dTheta)))
+    const double z = p.z();
+    if (except != Face::SideLow && !beyond((dTheta + m_f.halfAngle) * r, [&] { return m_sideLow.value(r, z); }))
+        return false;
+    if (except != Face::SideHigh && !beyond((m_f.halfAngle - dTheta) * r, [&] { return -m_sideHigh.value(r, z); }))
+        return false;
+    if (except != Face::Inner && !beyond(r - rIn, [&] { return m_inner.value(dTheta * rIn, z); })) return false;
+    if (except != Face::Bottom &&
+        !beyond(z - m_f.zMin, [&] { return m_bottom.value(r * std::cos(dTheta), r * std::sin(dTheta)); }))
         return false;
     return true;
 }

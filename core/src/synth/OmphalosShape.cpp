@@ -136,7 +136,7 @@ double OmphalosShape::netHeight(double theta, double s) const
         const double gradient = std::hypot(around / r, 1.0 / m_meshLength);
         const double u = (theta - m_p.netPhase) * around;
         const double v = (s - bottom) / m_meshLength;
-        for (const double f : {u + v, u - v}) d = std::min(d, std::fabs(f - std::round(f)) / gradient);
+        for (const double f : {u + v, u - v}) d = std::min(d, std::fabs(f - std::nearbyint(f)) / gradient);
     }
     if (d >= hw) return 0.0;
     return m_p.bandHeight * 0.5 * (1.0 + std::cos(std::numbers::pi * d / hw));

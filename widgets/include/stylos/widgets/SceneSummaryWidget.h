@@ -26,6 +26,7 @@ protected:
     void changeEvent(QEvent* event) override;
 
 private:
+    void fitColumns();
     void retranslateUi();
 
     SceneSummaryModel& m_model;

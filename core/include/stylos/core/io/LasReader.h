@@ -19,7 +19,7 @@
  *
  *        Failures: open() returns the errors of LasHeader::parse() (Malformed, Truncated, Unsupported
  *        for another version, an unknown point format or LAZ) and those of BufferedFile::open()
- *        (NotFound, Unreadable); every header field is validated and the data size checked against
+ *        (NotFound, Unreadable), or Empty for a 0-byte file; every header field is validated and the data size checked against
  *        count × record length at open, so read() fails only when the file shrinks or an I/O error
  *        occurs (Truncated, Unreadable). Messages are "FILE: byte N: problem".
  *        Decodes straight out of a 1 MiB buffer: flat memory, no per-point allocation. Not thread-safe.

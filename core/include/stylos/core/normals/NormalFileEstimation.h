@@ -10,7 +10,7 @@
  *     each cell, so the grid follows the cloud's longest axes; L is the smallest level at which every
  *     tile, with its halo, fits the budget by the sample's count). Each point is written to its tile's
  *     temporary file, and its position to the halo file of every other tile whose box grown by the margin
- *     contains it. The margin comes from the sample (TilePlan.h: 2.5 × the 95th percentile of the k-th
+ *     contains it. The margin comes from the sample (TilePlan.h: 1.5 × the 99th percentile of the k-th
  *     neighbour distance, scaled to full density).
  *  3. one tile at a time: its points and halo are loaded, normals estimated for its own points with the
  *     in-memory kernel (same search frame, bounding-box centre, and same orientation centre, the global

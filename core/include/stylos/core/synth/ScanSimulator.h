@@ -19,6 +19,7 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <numbers>
 #include <vector>
 
 namespace stylos::core::synth {
@@ -35,7 +36,7 @@ struct ScanStation {
 
 class ScanSimulator {
 public:
-    static constexpr double kMaxRegistrationAngle = 0.05 * 3.14159265358979323846 / 180.0; ///< radians
+    static constexpr double kMaxRegistrationAngle = 0.05 * std::numbers::pi / 180.0; ///< radians
     static constexpr double kMaxRegistrationShift = 0.0003;   ///< metres
     static constexpr double kNoiseClamp = 5.0;                ///< noise clamped at this many σ
     static constexpr std::size_t kBatchPoints = 64 * 1024;
