@@ -294,3 +294,27 @@ TEST(PlyReader, InvalidFixturesAreRefused)
             << all.error().message;
     }
 }
+
+TEST(PlyReader, BinaryNonFinitePointsAreDroppedWithTheirAttributes)
+{
+    std::string h = "ply\nformat binary_little_endian 1.0\nelement vertex 4\nproperty float x\nproperty float y\n"
+                    "property float z\nproperty uchar red\nproperty uchar green\nproperty uchar blue\n"
+                    "property int label\nend_header\n";
+    std::string d;
+    const float nan = std::nanf(""), inf = INFINITY;
+    const float xs[4][3] = {{1, 2, 3}, {nan, 0, 0}, {0, 0, inf}, {4, 5, 6}};
+    for (int i = 0; i < 4; ++i) {
+        for (float v : xs[i]) putLE(d, v);
+        putLE(d, std::uint8_t(10 * i)); putLE(d, std::uint8_t(1)); putLE(d, std::uint8_t(2));
+        putLE(d, std::int32_t(100 + i));
+    }
+    TempDir dir;
+    stylos::test::writeText(dir / "nan.ply", h + d);
+    auto all = readAll(dir / "nan.ply");
+    ASSERT_TRUE(all) << all.error().message;
+    ASSERT_EQ(all->points.size(), 2u);
+    EXPECT_EQ(all->skipped, 2u);
+    EXPECT_EQ(all->points.positions, (std::vector<double>{1, 2, 3, 4, 5, 6}));
+    EXPECT_EQ(all->points.colors, (std::vector<std::uint8_t>{0, 1, 2, 30, 1, 2}));
+    EXPECT_EQ(all->points.scalars[0], (std::vector<double>{100, 103}));
+}

@@ -42,6 +42,28 @@ inline double loadValue(const char* p, PlyType type)
     return 0.0;
 }
 
+template <bool Swap, typename T, typename Store>
+void decodeColumnAs(const char* data, std::size_t records, std::size_t stride, Store&& store)
+{
+    for (std::size_t r = 0; r < records; ++r, data += stride) store(r, static_cast<double>(loadAs<T, Swap>(data)));
+}
+
+/** Decodes one property of @p records fixed-size records, handing each value to @p store(record, value). */
+template <bool Swap, typename Store>
+void decodeColumn(const char* data, PlyType type, std::size_t records, std::size_t stride, Store&& store)
+{
+    switch (type) {
+    case PlyType::Int8: decodeColumnAs<Swap, std::int8_t>(data, records, stride, store); break;
+    case PlyType::UInt8: decodeColumnAs<Swap, std::uint8_t>(data, records, stride, store); break;
+    case PlyType::Int16: decodeColumnAs<Swap, std::int16_t>(data, records, stride, store); break;
+    case PlyType::UInt16: decodeColumnAs<Swap, std::uint16_t>(data, records, stride, store); break;
+    case PlyType::Int32: decodeColumnAs<Swap, std::int32_t>(data, records, stride, store); break;
+    case PlyType::UInt32: decodeColumnAs<Swap, std::uint32_t>(data, records, stride, store); break;
+    case PlyType::Float32: decodeColumnAs<Swap, float>(data, records, stride, store); break;
+    case PlyType::Float64: decodeColumnAs<Swap, double>(data, records, stride, store); break;
+    }
+}
+
 std::uint64_t loadCount(const char* p, PlyType type, bool swap)
 {
     const double v = swap ? loadValue<true>(p, type) : loadValue<false>(p, type);
@@ -59,6 +81,11 @@ std::string_view nextToken(std::string_view& rest)
     const auto token = rest.substr(i, j - i);
     rest.remove_prefix(j);
     return token;
+}
+
+inline std::uint8_t toColor(double v)
+{
+    return static_cast<std::uint8_t>(std::clamp(v + 0.5, 0.0, 255.0));
 }
 
 bool parseNumber(std::string_view token, double& value)
@@ -253,7 +280,7 @@ bool PlyReader::storePoint(const double* xyz, const float* normal, const double*
     if (m_header.schema.hasNormals) batch.normals.insert(batch.normals.end(), normal, normal + 3);
     if (m_header.schema.hasColors)
         for (int c = 0; c < 3; ++c)
-            batch.colors.push_back(static_cast<std::uint8_t>(std::clamp(color[c] + 0.5, 0.0, 255.0)));
+            batch.colors.push_back(toColor(color[c]));
     for (std::size_t s = 0; s < m_scalarValues.size(); ++s) batch.scalars[s].push_back(m_scalarValues[s]);
     return true;
 }
@@ -261,32 +288,62 @@ bool PlyReader::storePoint(const double* xyz, const float* normal, const double*
 template <bool Swap>
 std::size_t PlyReader::decodeFixedRecords(const char* data, std::size_t records, PointBatch& batch)
 {
+    // Column by column: the type and target switches run once per property and chunk, not per value,
+    // and each inner loop is a plain typed load and store.
     const std::size_t rb = m_ply.elements[m_ply.vertexElement].recordBytes();
-    std::size_t stored = 0;
-    for (std::size_t r = 0; r < records; ++r, data += rb) {
-        double xyz[3] = {0, 0, 0};
-        float normal[3] = {0, 0, 0};
-        double color[3] = {0, 0, 0};
-        for (const Field& f : m_fields) {
-            if (f.target == Target::None) continue;
-            const double v = loadValue<Swap>(data + f.offset, f.type);
-            switch (f.target) {
-            case Target::X: xyz[0] = v; break;
-            case Target::Y: xyz[1] = v; break;
-            case Target::Z: xyz[2] = v; break;
-            case Target::NX: normal[0] = static_cast<float>(v); break;
-            case Target::NY: normal[1] = static_cast<float>(v); break;
-            case Target::NZ: normal[2] = static_cast<float>(v); break;
-            case Target::R: color[0] = v * f.colorScale; break;
-            case Target::G: color[1] = v * f.colorScale; break;
-            case Target::B: color[2] = v * f.colorScale; break;
-            case Target::Scalar: m_scalarValues[f.scalar] = v; break;
-            case Target::None: break;
-            }
+    const std::size_t base = batch.size();
+    const bool hasNormals = m_header.schema.hasNormals, hasColors = m_header.schema.hasColors;
+    batch.positions.resize(3 * (base + records));
+    if (hasNormals) batch.normals.resize(3 * (base + records));
+    if (hasColors) batch.colors.resize(3 * (base + records));
+    for (auto& column : batch.scalars) column.resize(base + records);
+    double* pos = batch.positions.data() + 3 * base;
+    float* nrm = hasNormals ? batch.normals.data() + 3 * base : nullptr;
+    std::uint8_t* col = hasColors ? batch.colors.data() + 3 * base : nullptr;
+
+    for (const Field& f : m_fields) {
+        const char* column = data + f.offset;
+        const float scale = f.colorScale;
+        switch (f.target) {
+        case Target::X: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { pos[3 * r] = v; }); break;
+        case Target::Y: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { pos[3 * r + 1] = v; }); break;
+        case Target::Z: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { pos[3 * r + 2] = v; }); break;
+        case Target::NX: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { nrm[3 * r] = float(v); }); break;
+        case Target::NY: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { nrm[3 * r + 1] = float(v); }); break;
+        case Target::NZ: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { nrm[3 * r + 2] = float(v); }); break;
+        case Target::R: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { col[3 * r] = toColor(v * scale); }); break;
+        case Target::G: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { col[3 * r + 1] = toColor(v * scale); }); break;
+        case Target::B: decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { col[3 * r + 2] = toColor(v * scale); }); break;
+        case Target::Scalar: {
+            double* out = batch.scalars[f.scalar].data() + base;
+            decodeColumn<Swap>(column, f.type, records, rb, [&](std::size_t r, double v) { out[r] = v; });
+            break;
         }
-        stored += storePoint(xyz, normal, color, batch) ? 1 : 0;
+        case Target::None: break;
+        }
     }
-    return stored;
+
+    // Drop points with a non-finite coordinate (rare): compact every array in place.
+    std::size_t out = 0;
+    for (std::size_t r = 0; r < records; ++r) {
+        const double* p = pos + 3 * r;
+        if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) {
+            ++m_pointsSkipped;
+            continue;
+        }
+        if (out != r) {
+            std::copy(p, p + 3, pos + 3 * out);
+            if (nrm) std::copy(nrm + 3 * r, nrm + 3 * r + 3, nrm + 3 * out);
+            if (col) std::copy(col + 3 * r, col + 3 * r + 3, col + 3 * out);
+            for (auto& column : batch.scalars) column[base + out] = column[base + r];
+        }
+        ++out;
+    }
+    batch.positions.resize(3 * (base + out));
+    if (hasNormals) batch.normals.resize(3 * (base + out));
+    if (hasColors) batch.colors.resize(3 * (base + out));
+    for (auto& column : batch.scalars) column.resize(base + out);
+    return out;
 }
 
 Result<std::size_t> PlyReader::readBinary(PointBatch& batch, std::size_t n)

@@ -16,13 +16,13 @@ namespace {
 
 constexpr std::uint64_t kNoKey = std::numeric_limits<std::uint64_t>::max();
 
-/** nanoflann dataset adaptor: a rank range of the double local copy, seen as float. */
+/** nanoflann dataset adaptor: a rank range of the float copy of the points. */
 struct FloatAdaptor {
-    const double* local = nullptr;
+    const float* points = nullptr;
     std::size_t count = 0;
 
     std::size_t kdtree_get_point_count() const { return count; }
-    float kdtree_get_pt(std::size_t i, std::size_t d) const { return static_cast<float>(local[3 * i + d]); }
+    float kdtree_get_pt(std::size_t i, std::size_t d) const { return points[3 * i + d]; }
     template <class Box> bool kdtree_get_bbox(Box&) const { return false; }
 };
 
@@ -31,6 +31,16 @@ using KdTree = nanoflann::KDTreeSingleIndexAdaptor<
 using KdNode = KdTree::Node;
 
 std::uint32_t bitsOf(float value) { return std::bit_cast<std::uint32_t>(value); }
+
+/** Runs fn(begin, end) over [0, count) cut into @p threads slices, the calling thread taking the first. */
+template <class Fn> void parallelFor(std::size_t count, unsigned threads, const Fn& fn)
+{
+    const std::size_t slices = std::clamp<std::size_t>(count / 32768, 1, threads);
+    std::vector<std::thread> workers;
+    for (std::size_t t = 1; t < slices; ++t) workers.emplace_back(fn, count * t / slices, count * (t + 1) / slices);
+    fn(std::size_t(0), count / slices);
+    for (auto& worker : workers) worker.join();
+}
 
 /** Spreads the low 10 bits of @p v two bits apart (for a 30-bit Morton code). */
 std::uint64_t spreadBits(std::uint64_t v)
@@ -45,9 +55,9 @@ std::uint64_t spreadBits(std::uint64_t v)
 
 /**
  * Morton order of the points (1024 cells per axis), stable: equal cells keep their input order.
- * Returns rank → index. Two LSD radix passes of 15 bits over (code << 32 | index).
+ * Returns (code << 32 | index) sorted: three LSD radix passes of 10 bits.
  */
-std::vector<std::uint32_t> mortonOrder(std::span<const double> positions, const std::array<double, 3>& origin)
+std::vector<std::uint64_t> mortonOrder(std::span<const double> positions, unsigned threads)
 {
     const std::size_t n = positions.size() / 3;
     std::array<double, 3> lo{}, hi{};
@@ -55,36 +65,35 @@ std::vector<std::uint32_t> mortonOrder(std::span<const double> positions, const 
     hi.fill(std::numeric_limits<double>::lowest());
     for (std::size_t i = 0; i < n; ++i)
         for (int d = 0; d < 3; ++d) {
-            const double v = positions[3 * i + d] - origin[d];
-            lo[d] = std::min(lo[d], v);
-            hi[d] = std::max(hi[d], v);
+            lo[d] = std::min(lo[d], positions[3 * i + d]);
+            hi[d] = std::max(hi[d], positions[3 * i + d]);
         }
     const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
     const double scale = extent > 0 ? 1023.999 / extent : 0.0;
     std::vector<std::uint64_t> keys(n), sorted(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        std::uint64_t code = 0;
-        for (int d = 0; d < 3; ++d) {
-            const double cell = std::clamp((positions[3 * i + d] - origin[d] - lo[d]) * scale, 0.0, 1023.0);
-            code |= spreadBits(static_cast<std::uint64_t>(cell)) << d;
+    parallelFor(n, threads, [&](std::size_t begin, std::size_t end) {
+        for (std::size_t i = begin; i < end; ++i) {
+            std::uint64_t code = 0;
+            for (int d = 0; d < 3; ++d) {
+                const double cell = std::clamp((positions[3 * i + d] - lo[d]) * scale, 0.0, 1023.0);
+                code |= spreadBits(static_cast<std::uint64_t>(cell)) << d;
+            }
+            keys[i] = (code << 32) | i;
         }
-        keys[i] = (code << 32) | i;
-    }
-    for (int shift : {32, 47}) {
-        std::vector<std::size_t> start(1u << 15, 0);
-        for (std::uint64_t key : keys) ++start[(key >> shift) & 0x7fff];
+    });
+    for (int shift : {32, 42, 52}) {
+        std::array<std::size_t, 1024> start{};
+        for (std::uint64_t key : keys) ++start[(key >> shift) & 0x3ff];
         std::size_t sum = 0;
-        for (std::size_t& s : start) {
-            const std::size_t bucket = s;
-            s = sum;
+        for (std::size_t& slot : start) {
+            const std::size_t bucket = slot;
+            slot = sum;
             sum += bucket;
         }
-        for (std::uint64_t key : keys) sorted[start[(key >> shift) & 0x7fff]++] = key;
+        for (std::uint64_t key : keys) sorted[start[(key >> shift) & 0x3ff]++] = key;
         keys.swap(sorted);
     }
-    std::vector<std::uint32_t> order(n);
-    for (std::size_t r = 0; r < n; ++r) order[r] = static_cast<std::uint32_t>(keys[r]);
-    return order;
+    return keys;
 }
 
 } // namespace
@@ -100,11 +109,24 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
     const std::size_t n = positions.size() / 3;
     assert(n < std::numeric_limits<std::uint32_t>::max() && "NeighbourIndex: too many points");
     assert(leafSize >= 1 && trees >= 1 && "NeighbourIndex: leafSize and trees must be positive");
-    m_source = mortonOrder(positions, origin);
-    m_local.resize(3 * n);
-    for (std::size_t r = 0; r < n; ++r)
-        for (int d = 0; d < 3; ++d) m_local[3 * r + d] = positions[3 * std::size_t(m_source[r]) + d] - origin[d];
     if (n == 0) return;
+    // Rank order, the double copy for the PCA and a float copy for building the trees.
+    std::vector<float> search(3 * n);
+    {
+        const std::vector<std::uint64_t> order = mortonOrder(positions, trees);
+        m_source.resize(n);
+        m_local.resize(3 * n);
+        parallelFor(n, trees, [&](std::size_t begin, std::size_t end) {
+            for (std::size_t r = begin; r < end; ++r) {
+                const auto source = static_cast<std::uint32_t>(order[r]);
+                m_source[r] = source;
+                for (int d = 0; d < 3; ++d) {
+                    m_local[3 * r + d] = positions[3 * std::size_t(source) + d] - origin[d];
+                    search[3 * r + d] = static_cast<float>(m_local[3 * r + d]);
+                }
+            }
+        });
+    }
 
     // One nanoflann tree per contiguous rank range (spatially compact thanks to the Morton order),
     // built in parallel, then flattened one after the other.
@@ -114,7 +136,7 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
     std::vector<std::exception_ptr> failures(treeCount);
     for (std::size_t t = 0; t < treeCount; ++t) {
         const std::size_t begin = n * t / treeCount, end = n * (t + 1) / treeCount;
-        adaptors[t] = FloatAdaptor{m_local.data() + 3 * begin, end - begin};
+        adaptors[t] = FloatAdaptor{search.data() + 3 * begin, end - begin};
     }
     auto build = [&](std::size_t t) {
         try {
@@ -123,28 +145,39 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
             failures[t] = std::current_exception();
         }
     };
-    std::vector<std::thread> workers;
-    for (std::size_t t = 1; t < treeCount; ++t) workers.emplace_back(build, t);
-    build(0);
-    for (auto& worker : workers) worker.join();
+    {
+        std::vector<std::thread> workers;
+        for (std::size_t t = 1; t < treeCount; ++t) workers.emplace_back(build, t);
+        build(0);
+        for (auto& worker : workers) worker.join();
+    }
     for (auto& failure : failures)
         if (failure) std::rethrow_exception(failure);
 
+    // Structure-of-arrays copy in tree order (a leaf is a contiguous range), one tree per thread.
     m_x.resize(n);
     m_y.resize(n);
     m_z.resize(n);
     m_rankAt.resize(n);
-    for (std::size_t t = 0; t < treeCount; ++t) {
+    auto copyTree = [&](std::size_t t) {
         const auto base = static_cast<std::uint32_t>(n * t / treeCount);
         for (std::size_t i = 0; i < adaptors[t].count; ++i) {
             const std::uint32_t rank = base + kdTrees[t]->vAcc[i];
             const std::size_t position = base + i;
             m_rankAt[position] = rank;
-            m_x[position] = static_cast<float>(m_local[3 * std::size_t(rank)]);
-            m_y[position] = static_cast<float>(m_local[3 * std::size_t(rank) + 1]);
-            m_z[position] = static_cast<float>(m_local[3 * std::size_t(rank) + 2]);
+            m_x[position] = search[3 * std::size_t(rank)];
+            m_y[position] = search[3 * std::size_t(rank) + 1];
+            m_z[position] = search[3 * std::size_t(rank) + 2];
         }
-        flatten(kdTrees[t].get(), base, static_cast<std::uint32_t>(t));
+    };
+    {
+        std::vector<std::thread> workers;
+        for (std::size_t t = 1; t < treeCount; ++t) workers.emplace_back(copyTree, t);
+        copyTree(0);
+        for (auto& worker : workers) worker.join();
+    }
+    for (std::size_t t = 0; t < treeCount; ++t) {
+        flatten(kdTrees[t].get(), static_cast<std::uint32_t>(n * t / treeCount), static_cast<std::uint32_t>(t));
         kdTrees[t].reset();
     }
 }

@@ -19,7 +19,7 @@
  * the same float operations as the distances, so no tie at the k-th distance is lost.
  *
  * Memory: about 52 bytes per point kept (double local copy 24, float SoA 12, ranks 8, nodes and leaf
- * boxes ~6) and about 30 more during construction. After construction, search() is const and
+ * boxes ~6) and 28 more during construction (sort keys 16, float copy 12). After construction, search() is const and
  * thread-safe with one KnnScratch per thread.
  */
 #include <array>

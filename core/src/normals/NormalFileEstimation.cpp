@@ -98,6 +98,13 @@ Result<CloudSummary> summarise(const std::filesystem::path& input, const NormalF
                     std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
                     std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
     std::uint64_t random = 0x5354594c4f53ULL; // fixed seed: the same file gives the same tiles
+    const std::uint64_t declared = reader.header().declaredPoints.value_or(0);
+    if (declared > 0 && declared * heldBytes <= options.memoryBudget) { // no doubling past the budget
+        cloud.all.positions.reserve(3 * declared);
+        if (cloud.schema.hasColors) cloud.all.colors.reserve(3 * declared);
+        cloud.all.scalars.resize(cloud.schema.scalarNames.size());
+        for (auto& column : cloud.all.scalars) column.reserve(declared);
+    }
     io::PointBatch batch;
     for (;;) {
         if (progress && progress->isCancelRequested()) return cancelled();
