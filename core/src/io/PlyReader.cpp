@@ -270,6 +270,23 @@ Status PlyReader::finishFile()
     return {};
 }
 
+void PlyReader::assign(const Field& f, double v, double* xyz, float* normal, double* color)
+{
+    switch (f.target) {
+    case Target::X: xyz[0] = v; break;
+    case Target::Y: xyz[1] = v; break;
+    case Target::Z: xyz[2] = v; break;
+    case Target::NX: normal[0] = static_cast<float>(v); break;
+    case Target::NY: normal[1] = static_cast<float>(v); break;
+    case Target::NZ: normal[2] = static_cast<float>(v); break;
+    case Target::R: color[0] = v * f.colorScale; break;
+    case Target::G: color[1] = v * f.colorScale; break;
+    case Target::B: color[2] = v * f.colorScale; break;
+    case Target::Scalar: m_scalarValues[f.scalar] = v; break;
+    case Target::None: break;
+    }
+}
+
 bool PlyReader::storePoint(const double* xyz, const float* normal, const double* color, PointBatch& batch)
 {
     if (!std::isfinite(xyz[0]) || !std::isfinite(xyz[1]) || !std::isfinite(xyz[2])) {
@@ -393,19 +410,7 @@ Result<std::size_t> PlyReader::readBinary(PointBatch& batch, std::size_t n)
             if (m_file.fill(sz) < sz) return truncated();
             const double v = swap ? loadValue<true>(m_file.data(), prop.type) : loadValue<false>(m_file.data(), prop.type);
             m_file.consume(sz);
-            switch (f.target) {
-            case Target::X: xyz[0] = v; break;
-            case Target::Y: xyz[1] = v; break;
-            case Target::Z: xyz[2] = v; break;
-            case Target::NX: normal[0] = static_cast<float>(v); break;
-            case Target::NY: normal[1] = static_cast<float>(v); break;
-            case Target::NZ: normal[2] = static_cast<float>(v); break;
-            case Target::R: color[0] = v * f.colorScale; break;
-            case Target::G: color[1] = v * f.colorScale; break;
-            case Target::B: color[2] = v * f.colorScale; break;
-            case Target::Scalar: m_scalarValues[f.scalar] = v; break;
-            case Target::None: break;
-            }
+            assign(f, v, xyz, normal, color);
         }
         ++m_verticesDone;
         stored += storePoint(xyz, normal, color, batch) ? 1 : 0;
@@ -450,19 +455,7 @@ Result<std::size_t> PlyReader::readAscii(PointBatch& batch, std::size_t n)
                         return fail(ErrorCode::Malformed, position(), "list \"" + prop.name + "\" has too few items");
                 continue;
             }
-            switch (f.target) {
-            case Target::X: xyz[0] = v; break;
-            case Target::Y: xyz[1] = v; break;
-            case Target::Z: xyz[2] = v; break;
-            case Target::NX: normal[0] = static_cast<float>(v); break;
-            case Target::NY: normal[1] = static_cast<float>(v); break;
-            case Target::NZ: normal[2] = static_cast<float>(v); break;
-            case Target::R: color[0] = v * f.colorScale; break;
-            case Target::G: color[1] = v * f.colorScale; break;
-            case Target::B: color[2] = v * f.colorScale; break;
-            case Target::Scalar: m_scalarValues[f.scalar] = v; break;
-            case Target::None: break;
-            }
+            assign(f, v, xyz, normal, color);
         }
         if (!nextToken(rest).empty())
             return fail(ErrorCode::Malformed, position(),

@@ -44,6 +44,8 @@ private:
     };
     void planFields();
     template <bool Swap> std::size_t decodeFixedRecords(const char* data, std::size_t records, PointBatch& batch);
+    /** Record-by-record paths (ascii, vertex lists): puts one decoded value where @p f says. */
+    void assign(const Field& f, double v, double* xyz, float* normal, double* color);
     bool storePoint(const double* xyz, const float* normal, const double* color, PointBatch& batch);
 
     BufferedFile m_file;
