@@ -88,8 +88,9 @@ TEST(NormalPca, AgreesWithEigensIterativeSolver)
         const Eigen::Vector3d values = reference.eigenvalues();
         for (int i = 0; i < 3; ++i) EXPECT_NEAR(fit.eigenvalues[i], values[i], 1e-12 * values[2]) << "trial " << trial;
         // The normal is well defined when λ0 is well below λ1 (always here but for the roundest blobs).
-        if (values[0] < 0.5 * values[1])
+        if (values[0] < 0.5 * values[1]) {
             EXPECT_GT(absDot(fit.normal, reference.eigenvectors().col(0)), 1.0 - 1e-9) << "trial " << trial;
+        }
         EXPECT_NEAR(fit.surfaceVariation, values[0] / values.sum(), 1e-12) << "trial " << trial;
     }
 }

@@ -7,8 +7,9 @@
 #include <cassert>
 #include <cmath>
 #include <exception>
-#include <memory>
 #include <limits>
+#include <memory>
+#include <system_error>
 #include <thread>
 
 namespace stylos::core::normals::detail {
@@ -32,14 +33,32 @@ using KdNode = KdTree::Node;
 
 std::uint32_t bitsOf(float value) { return std::bit_cast<std::uint32_t>(value); }
 
-/** Runs fn(begin, end) over [0, count) cut into @p threads slices, the calling thread taking the first. */
+/**
+ * Runs fn(0) … fn(tasks − 1), each on its own thread, fn(0) on the calling one. A thread that cannot be
+ * started (std::system_error) is replaced by running its task on the calling thread. @p fn must not throw.
+ */
+template <class Fn> void runTasks(std::size_t tasks, const Fn& fn)
+{
+    std::vector<std::thread> workers;
+    workers.reserve(tasks); // no allocation once threads run
+    std::size_t started = 1;
+    for (; started < tasks; ++started) {
+        try {
+            workers.emplace_back(fn, started);
+        } catch (const std::system_error&) {
+            break;
+        }
+    }
+    for (std::size_t task = started; task < tasks; ++task) fn(task);
+    fn(std::size_t(0));
+    for (auto& worker : workers) worker.join();
+}
+
+/** Runs fn(begin, end) over [0, count) cut into up to @p threads slices. */
 template <class Fn> void parallelFor(std::size_t count, unsigned threads, const Fn& fn)
 {
     const std::size_t slices = std::clamp<std::size_t>(count / 32768, 1, threads);
-    std::vector<std::thread> workers;
-    for (std::size_t t = 1; t < slices; ++t) workers.emplace_back(fn, count * t / slices, count * (t + 1) / slices);
-    fn(std::size_t(0), count / slices);
-    for (auto& worker : workers) worker.join();
+    runTasks(slices, [&](std::size_t t) { fn(count * t / slices, count * (t + 1) / slices); });
 }
 
 /** Spreads the low 10 bits of @p v two bits apart (for a 30-bit Morton code). */
@@ -145,12 +164,7 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
             failures[t] = std::current_exception();
         }
     };
-    {
-        std::vector<std::thread> workers;
-        for (std::size_t t = 1; t < treeCount; ++t) workers.emplace_back(build, t);
-        build(0);
-        for (auto& worker : workers) worker.join();
-    }
+    runTasks(treeCount, build);
     for (auto& failure : failures)
         if (failure) std::rethrow_exception(failure);
 
@@ -170,12 +184,7 @@ NeighbourIndex::NeighbourIndex(std::span<const double> positions, const std::arr
             m_z[position] = search[3 * std::size_t(rank) + 2];
         }
     };
-    {
-        std::vector<std::thread> workers;
-        for (std::size_t t = 1; t < treeCount; ++t) workers.emplace_back(copyTree, t);
-        copyTree(0);
-        for (auto& worker : workers) worker.join();
-    }
+    runTasks(treeCount, copyTree);
     for (std::size_t t = 0; t < treeCount; ++t) {
         flatten(kdTrees[t].get(), static_cast<std::uint32_t>(n * t / treeCount), static_cast<std::uint32_t>(t));
         kdTrees[t].reset();

@@ -11,6 +11,7 @@
 #include <limits>
 #include <new>
 #include <string>
+#include <system_error>
 #include <thread>
 #include <vector>
 
@@ -181,7 +182,14 @@ Result<NormalReport> runNormalJob(const NormalJob& job, const NormalOptions& opt
             shared.localBox = box;
         }
         std::vector<std::thread> workers;
-        for (unsigned t = 1; t < threads; ++t) workers.emplace_back([&shared, progress] { work(shared, false, progress); });
+        workers.reserve(threads); // no allocation once threads run
+        for (unsigned t = 1; t < threads; ++t) {
+            try {
+                workers.emplace_back([&shared, progress] { work(shared, false, progress); });
+            } catch (const std::system_error&) {
+                break; // fewer threads: the others share the work (chunks are handed out on demand)
+            }
+        }
         work(shared, true, progress);
         for (auto& worker : workers) worker.join();
         if (shared.cancelled) return Error{ErrorCode::Cancelled, "normal estimation: cancelled"};
