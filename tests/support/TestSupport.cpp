@@ -13,11 +13,20 @@ namespace stylos::test {
 fs::path sharedData() { return fs::path(STYLOS_SHARED_DATA); }
 bool hasSharedData() { return fs::is_directory(sharedData() / "formats"); }
 
-TempDir::TempDir()
+TempDir::TempDir() : TempDir(fs::temp_directory_path()) {}
+
+fs::path fastTempBase()
+{
+    std::error_code ec;
+    if (fs::is_directory("/dev/shm", ec)) return "/dev/shm";
+    return fs::temp_directory_path();
+}
+
+TempDir::TempDir(const fs::path& base)
 {
     static std::atomic<int> counter{0};
     std::random_device rd;
-    m_path = fs::temp_directory_path() /
+    m_path = base /
              ("stylos-test-" + std::to_string(::getpid()) + "-" + std::to_string(counter++) + "-" +
               std::to_string(rd()));
     fs::create_directories(m_path);

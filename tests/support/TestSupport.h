@@ -15,6 +15,8 @@ bool hasSharedData();
 class TempDir {
 public:
     TempDir();
+    /** A fresh folder under @p base (e.g. a memory-backed one for tests that rewrite files a lot). */
+    explicit TempDir(const std::filesystem::path& base);
     ~TempDir();
     TempDir(const TempDir&) = delete;
     TempDir& operator=(const TempDir&) = delete;
@@ -24,6 +26,9 @@ public:
 private:
     std::filesystem::path m_path;
 };
+
+/** /dev/shm when it exists (memory-backed: fast for many rewrites), else the system temp folder. */
+std::filesystem::path fastTempBase();
 
 std::vector<char> readBytes(const std::filesystem::path& path);
 void writeBytes(const std::filesystem::path& path, const std::vector<char>& bytes);
