@@ -13,26 +13,11 @@ using stylos::test::writeText;
 
 namespace {
 
-struct Vertices {
-    std::vector<double> positions;
-    std::vector<float> normals;
-    std::vector<std::uint8_t> colors;
-};
+using Vertices = PointBatch;
 
 Result<Vertices> readAll(PointReader& reader, std::size_t maxPoints)
 {
-    Vertices all;
-    PointBatch batch;
-    for (;;) {
-        auto got = reader.read(batch, maxPoints);
-        if (!got) return got.error();
-        if (got.value() == 0) break;
-        EXPECT_LE(got.value(), maxPoints);
-        all.positions.insert(all.positions.end(), batch.positions.begin(), batch.positions.end());
-        all.normals.insert(all.normals.end(), batch.normals.begin(), batch.normals.end());
-        all.colors.insert(all.colors.end(), batch.colors.begin(), batch.colors.end());
-    }
-    return all;
+    return stylos::test::readAllPoints(reader, maxPoints);
 }
 
 class ObjReaderTest : public ::testing::Test {

@@ -26,23 +26,10 @@ Result<AllPoints> readAll(const std::filesystem::path& path, std::size_t batchSi
 {
     auto reader = openPointReader(path);
     if (!reader) return reader.error();
-    AllPoints all;
-    all.schema = (*reader)->header().schema;
-    all.format = (*reader)->header().format;
-    all.points.reset(all.schema, 0);
-    PointBatch batch;
-    for (;;) {
-        auto got = (*reader)->read(batch, batchSize);
-        if (!got) return got.error();
-        if (*got == 0) break;
-        auto append = [](auto& to, const auto& from) { to.insert(to.end(), from.begin(), from.end()); };
-        append(all.points.positions, batch.positions);
-        append(all.points.normals, batch.normals);
-        append(all.points.colors, batch.colors);
-        for (std::size_t s = 0; s < batch.scalars.size(); ++s) append(all.points.scalars[s], batch.scalars[s]);
-    }
-    all.skipped = (*reader)->pointsSkipped();
-    return all;
+    auto points = stylos::test::readAllPoints(**reader, batchSize);
+    if (!points) return points.error();
+    return AllPoints{(*reader)->header().schema, std::move(*points), (*reader)->pointsSkipped(),
+                     (*reader)->header().format};
 }
 
 template <typename T>

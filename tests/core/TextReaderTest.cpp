@@ -14,35 +14,9 @@ using stylos::test::writeText;
 
 namespace {
 
-/** Every point of a file, gathered from the batches. */
-struct Cloud {
-    std::vector<double> positions;
-    std::vector<float> normals;
-    std::vector<std::uint8_t> colors;
-    std::vector<std::vector<double>> scalars;
-    std::size_t size() const { return positions.size() / 3; }
-};
+using Cloud = PointBatch;
 
-Result<Cloud> readAll(PointReader& reader, std::size_t maxPoints)
-{
-    Cloud cloud;
-    cloud.scalars.resize(reader.header().schema.scalarNames.size());
-    PointBatch batch;
-    for (;;) {
-        auto got = reader.read(batch, maxPoints);
-        if (!got) return got.error();
-        if (got.value() == 0) break;
-        EXPECT_LE(got.value(), maxPoints);
-        EXPECT_EQ(batch.size(), got.value());
-        cloud.positions.insert(cloud.positions.end(), batch.positions.begin(), batch.positions.end());
-        cloud.normals.insert(cloud.normals.end(), batch.normals.begin(), batch.normals.end());
-        cloud.colors.insert(cloud.colors.end(), batch.colors.begin(), batch.colors.end());
-        for (std::size_t s = 0; s < cloud.scalars.size(); ++s)
-            cloud.scalars[s].insert(cloud.scalars[s].end(), batch.scalars[s].begin(), batch.scalars[s].end());
-    }
-    EXPECT_EQ(reader.pointsRead(), cloud.size());
-    return cloud;
-}
+Result<Cloud> readAll(PointReader& reader, std::size_t maxPoints) { return stylos::test::readAllPoints(reader, maxPoints); }
 
 class TextReaderTest : public ::testing::Test {
 protected:

@@ -1,5 +1,7 @@
 #include "TestSupport.h"
 
+#include <gtest/gtest.h>
+
 #include <atomic>
 #include <fstream>
 #include <random>
@@ -36,6 +38,23 @@ TempDir::~TempDir()
 {
     std::error_code ec;
     fs::remove_all(m_path, ec);
+}
+
+core::Result<core::io::PointBatch> readAllPoints(core::io::PointReader& reader, std::size_t maxPoints)
+{
+    core::io::PointBatch all;
+    all.reset(reader.header().schema, 0);
+    core::io::PointBatch batch;
+    for (;;) {
+        auto got = reader.read(batch, maxPoints);
+        if (!got) return got.error();
+        if (*got == 0) break;
+        EXPECT_LE(*got, maxPoints);
+        EXPECT_EQ(batch.size(), *got);
+        all.append(batch);
+    }
+    EXPECT_EQ(reader.pointsRead(), all.size());
+    return all;
 }
 
 std::vector<char> readBytes(const fs::path& path)

@@ -1,5 +1,7 @@
 #pragma once
 // Helpers shared by the tests: where the fixtures are, and a temporary folder removed on exit.
+#include "stylos/core/io/PointReader.h"
+
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -29,6 +31,12 @@ private:
 
 /** /dev/shm when it exists (memory-backed: fast for many rewrites), else the system temp folder. */
 std::filesystem::path fastTempBase();
+
+/**
+ * Every point of @p reader, gathered from batches of @p maxPoints; checks on the way that no batch is
+ * larger than asked and that pointsRead() matches.
+ */
+core::Result<core::io::PointBatch> readAllPoints(core::io::PointReader& reader, std::size_t maxPoints);
 
 std::vector<char> readBytes(const std::filesystem::path& path);
 void writeBytes(const std::filesystem::path& path, const std::vector<char>& bytes);

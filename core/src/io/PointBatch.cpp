@@ -26,6 +26,16 @@ void PointBatch::reset(const PointSchema& schema, std::size_t capacity)
     }
 }
 
+void PointBatch::append(const PointBatch& other)
+{
+    positions.insert(positions.end(), other.positions.begin(), other.positions.end());
+    normals.insert(normals.end(), other.normals.begin(), other.normals.end());
+    colors.insert(colors.end(), other.colors.begin(), other.colors.end());
+    if (scalars.size() < other.scalars.size()) scalars.resize(other.scalars.size());
+    for (std::size_t s = 0; s < other.scalars.size(); ++s)
+        scalars[s].insert(scalars[s].end(), other.scalars[s].begin(), other.scalars[s].end());
+}
+
 void PointBatch::popBack()
 {
     if (positions.empty()) return;

@@ -35,6 +35,8 @@ struct PointBatch {
 
     /** Empties the batch and shapes it for @p schema, reserving @p capacity points. */
     void reset(const PointSchema& schema, std::size_t capacity);
+    /** Appends every point of @p other, which must have the same shape (same schema). */
+    void append(const PointBatch& other);
     /** Removes the last point (all its attributes); used when a point proves non-finite. */
     void popBack();
 };
