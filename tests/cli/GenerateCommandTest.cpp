@@ -1,0 +1,48 @@
+// stylos-cli generate: the file and its truth, reproducibility, usage errors, nothing left on failure.
+#include "CliRunner.h"
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <fstream>
+
+using stylos::test::runCli;
+using stylos::test::TempDir;
+
+TEST(CliGenerate, WritesTheScanAndItsTruthReproducibly)
+{
+    TempDir dir;
+    // Same name in two folders: the header names the truth file, so the bytes must match exactly.
+    std::filesystem::create_directories(dir / "again");
+    const auto a = (dir / "a.ply").string(), b = (dir / "again" / "a.ply").string();
+    const auto run = runCli({"generate", "drum", "-o", a, "--spacing", "0.01", "--seed", "7", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["truth"], (dir / "a.truth.json").string());
+    ASSERT_EQ(runCli({"generate", "drum", "-o", b, "--spacing", "0.01", "--seed", "7"}).exitCode, 0);
+    EXPECT_EQ(stylos::test::readBytes(a), stylos::test::readBytes(b));
+
+    const auto info = runCli({"info", a, "--json"});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_EQ(nlohmann::json::parse(info.out)["points"], j["points"]);
+    std::ifstream truthFile(dir / "a.truth.json");
+    const auto truth = nlohmann::json::parse(truthFile);
+    EXPECT_EQ(truth["kind"], "drum");
+    EXPECT_EQ(truth["grooves"]["count"], 48);
+    EXPECT_EQ(truth["points"], j["points"]);
+}
+
+TEST(CliGenerate, UsageErrorsAndFailuresLeaveNothing)
+{
+    TempDir dir;
+    const auto out = (dir / "x.ply").string();
+    EXPECT_EQ(runCli({"generate", "drum", "-o", out, "--spacing", "0"}).exitCode, 2);
+    EXPECT_EQ(runCli({"generate", "drum", "-o", out, "--spacing", "abc"}).exitCode, 2);
+    EXPECT_EQ(runCli({"generate", "cube", "-o", out}).exitCode, 2);
+    EXPECT_EQ(runCli({"generate", "drum"}).exitCode, 2);
+    const auto huge = runCli({"generate", "drum", "-o", out, "--spacing", "0.00001"});
+    EXPECT_EQ(huge.exitCode, 1);
+    EXPECT_NE(huge.err.find("x.ply"), std::string::npos) << huge.err;
+    EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
+}
