@@ -1,4 +1,5 @@
 // Synthetic scans against their truth sidecars: every point where the truth says the surface is.
+#include "SyntheticTestSupport.h"
 #include "TestSupport.h"
 
 #include "stylos/core/io/PointFileFormat.h"
@@ -17,6 +18,9 @@ namespace fs = std::filesystem;
 using namespace stylos::core;
 using namespace stylos::core::synth;
 using stylos::test::TempDir;
+using stylos::test::coarse;
+using stylos::test::generate;
+using stylos::test::poseOf;
 
 namespace {
 
@@ -34,13 +38,6 @@ nlohmann::json readTruth(const fs::path& path)
 {
     std::ifstream in(path);
     return nlohmann::json::parse(in);
-}
-
-Eigen::Affine3d poseOf(const nlohmann::json& truth)
-{
-    Eigen::Matrix4d m;
-    for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = truth["pose"][i].get<double>();
-    return Eigen::Affine3d(m);
 }
 
 Cloud readCloud(const fs::path& path, const nlohmann::json& truth)
@@ -69,21 +66,6 @@ Cloud readCloud(const fs::path& path, const nlohmann::json& truth)
     }
     cloud.count = cloud.points.size();
     return cloud;
-}
-
-SyntheticOptions coarse(double spacing = 0.005, std::uint64_t seed = 7)
-{
-    SyntheticOptions o;
-    o.spacing = spacing;
-    o.seed = seed;
-    return o;
-}
-
-SyntheticReport generate(SyntheticKind kind, const SyntheticOptions& o, const fs::path& out)
-{
-    auto r = generateScan(kind, o, out);
-    EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
-    return r.ok() ? *r : SyntheticReport{};
 }
 
 /** Tolerance for noise and registration, metres. */
