@@ -14,36 +14,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const char* typeName(PlyScalarType t)
-{
-    switch (t) {
-    case PlyScalarType::Int8: return "char";
-    case PlyScalarType::UInt8: return "uchar";
-    case PlyScalarType::Int16: return "short";
-    case PlyScalarType::UInt16: return "ushort";
-    case PlyScalarType::Int32: return "int";
-    case PlyScalarType::UInt32: return "uint";
-    case PlyScalarType::Float32: return "float";
-    case PlyScalarType::Float64: return "double";
-    }
-    return "float";
-}
-
-std::size_t typeSize(PlyScalarType t)
-{
-    switch (t) {
-    case PlyScalarType::Int8:
-    case PlyScalarType::UInt8: return 1;
-    case PlyScalarType::Int16:
-    case PlyScalarType::UInt16: return 2;
-    case PlyScalarType::Int32:
-    case PlyScalarType::UInt32:
-    case PlyScalarType::Float32: return 4;
-    case PlyScalarType::Float64: return 8;
-    }
-    return 4;
-}
-
 template <typename T>
 unsigned char* put(unsigned char* out, T value)
 {
@@ -129,20 +99,20 @@ Status PlyWriter::writeHeader()
     h += "element vertex ";
     m_countFieldOffset = static_cast<long>(h.size());
     h += std::string(countFieldWidth, ' ') + "\n"; // count patched later; PLY readers split on whitespace
-    const char* pos = typeName(m_options.positionType);
+    const char* pos = plyTypeName(m_options.positionType);
     for (const char* axis : {"x", "y", "z"}) h += std::string("property ") + pos + " " + axis + "\n";
     if (m_schema.hasNormals) h += "property float nx\nproperty float ny\nproperty float nz\n";
     if (m_schema.hasColors) h += "property uchar red\nproperty uchar green\nproperty uchar blue\n";
     for (std::size_t i = 0; i < m_schema.scalarNames.size(); ++i)
-        h += std::string("property ") + typeName(m_options.scalarTypes[i]) + " " + m_schema.scalarNames[i] + "\n";
+        h += std::string("property ") + plyTypeName(m_options.scalarTypes[i]) + " " + m_schema.scalarNames[i] + "\n";
     h += "end_header\n";
     if (std::fwrite(h.data(), 1, h.size(), m_file.get()) != h.size())
         return failure(std::string("write error: ") + std::strerror(errno));
 
-    std::size_t record = 3 * typeSize(m_options.positionType);
+    std::size_t record = 3 * plyTypeSize(m_options.positionType);
     if (m_schema.hasNormals) record += 12;
     if (m_schema.hasColors) record += 3;
-    for (auto t : m_options.scalarTypes) record += typeSize(t);
+    for (auto t : m_options.scalarTypes) record += plyTypeSize(t);
     m_record.resize(record);
     return {};
 }

@@ -5,6 +5,7 @@
  *        advance. The file is written to a temporary name beside the target and renamed on finish(), so
  *        a failure or a crash never leaves a half-written file. Not thread-safe.
  */
+#include "stylos/core/io/PlyHeader.h"
 #include "stylos/core/io/PointBatch.h"
 #include "stylos/core/util/Result.h"
 
@@ -17,7 +18,8 @@
 
 namespace stylos::core::io {
 
-enum class PlyScalarType { Int8, UInt8, Int16, UInt16, Int32, UInt32, Float32, Float64 };
+/** The PLY value types, as the reader knows them. */
+using PlyScalarType = PlyType;
 
 struct PlyWriterOptions {
     PlyScalarType positionType = PlyScalarType::Float64; ///< Float32 or Float64
