@@ -1,0 +1,57 @@
+#pragma once
+/** @file
+ * @brief Writing a `.poct` file (layout in docs/file-format.md): header, section table, then the cells
+ *        of every level in breadth-first order with implicit children — child masks for the inner
+ *        levels, normal codes for all levels — and per-leaf attribute layers, each section with its
+ *        own checksum (XXH64). Weights and child indices of the construction structure are dropped.
+ *
+ * Files are written to a temporary name in the same folder and renamed at the end: on any error
+ * nothing is left behind and an existing file of that name is untouched. Deterministic: the same
+ * octree gives the same bytes (no time stamps, no build details in the file).
+ * Thread-safety: reentrant.
+ */
+#include "stylos/core/octree/OctreeLevels.h"
+#include "stylos/core/util/Result.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace stylos::core::octree {
+
+/** @brief Element type of an attribute layer. */
+enum class AttributeType : std::uint8_t { UInt8 = 1, UInt16 = 2, Float32 = 3 };
+
+/**
+ * @brief A per-leaf attribute layer: `components` values of `type` per leaf, in leaf order
+ *        (breadth-first order of the leaf level). `bytes` holds leaves × components × size(type) bytes,
+ *        little-endian. Names are ASCII, 1..15 characters, unique in a file; "colour" (UInt8 × 3) is the
+ *        average RGB the builders write; "ambient" and "class" are reserved for ambient occlusion
+ *        and annotation classes.
+ */
+struct AttributeLayer {
+    std::string name;
+    AttributeType type = AttributeType::UInt8;
+    std::uint8_t components = 1;
+    std::vector<std::uint8_t> bytes;
+};
+
+/**
+ * @brief Writes @p levels (and the colour layer when it has colour, plus @p extraLayers) to @p path.
+ * @return the file size in bytes, or WriteFailed (message names the file and the system error), or
+ *         InvalidArgument (a layer with a bad name, duplicate name or wrong size).
+ */
+Result<std::uint64_t> writePoct(const OctreeLevels& levels, const std::filesystem::path& path,
+                                std::span<const AttributeLayer> extraLayers = {});
+
+/**
+ * @brief Rewrites the `.poct` at @p path with @p layer added, or replacing the layer of the same name
+ *        (atomic, like writePoct). The cells are copied unchanged. Used to store ambient occlusion and
+ *        annotation classes.
+ * @return the new file size, or the errors of PackedOctree::open and writePoct.
+ */
+Result<std::uint64_t> setPoctAttributeLayer(const std::filesystem::path& path, const AttributeLayer& layer);
+
+} // namespace stylos::core::octree
