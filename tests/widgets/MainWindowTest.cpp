@@ -118,12 +118,17 @@ void MainWindowTest::fileFilterListsEverySupportedExtension()
 void MainWindowTest::closingStopsTheTaskAndSavesGeometry()
 {
     QSettings().remove("mainWindow/geometry");
+    auto started = std::make_shared<std::atomic<bool>>(false);
     auto sawCancel = std::make_shared<std::atomic<bool>>(false);
     QVERIFY(m_window->session().runner().start<int>(
-        "endless", [sawCancel](QPromise<int>&, stylos::core::ProgressSink& progress) {
+        "endless", [started, sawCancel](QPromise<int>&, stylos::core::ProgressSink& progress) {
+            started->store(true);
             while (!progress.isCancelRequested()) QThread::msleep(1);
             sawCancel->store(true);
         }));
+    // Under load the pool may not have started the worker yet; a task cancelled before it starts
+    // never runs, so wait for it to run before checking that close() stops it and waits.
+    QTRY_VERIFY(started->load());
     m_window->resize(700, 450);
     QVERIFY(m_window->close());
     QVERIFY(sawCancel->load()); // close() waited for the worker
