@@ -40,6 +40,8 @@
 
 namespace stylos::core::octree {
 
+class ConstructionOctree;
+
 enum class BuildMethod { Optimal, Streaming };
 
 /** @brief "optimal" or "streaming". */
@@ -72,6 +74,18 @@ struct BuildReport {
     bool normalsEstimated = false;          ///< buildOctreeFile estimated the normals first
     double seconds = 0;                     ///< wall time of the whole build, writing included
 };
+
+/**
+ * @brief Builds the construction structure of the points @p open yields, pulled and ready for writing
+ *        (what buildOctree() writes; tests and in-memory pipelines use it directly). Fills @p report
+ *        (when given) except fileBytes; seconds is the build time.
+ * @return the octree, or the errors of buildOctree() except WriteFailed; Malformed if the source yields
+ *         different points from one pass to the next.
+ */
+Result<std::unique_ptr<ConstructionOctree>> buildConstructionOctree(const PointSourceFactory& open,
+                                                                    const BuildOptions& options,
+                                                                    ProgressSink* progress = nullptr,
+                                                                    BuildReport* report = nullptr);
 
 /**
  * @brief Builds the octree of the points @p open yields and writes it to @p output (`.poct`, written

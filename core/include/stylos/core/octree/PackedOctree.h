@@ -47,9 +47,16 @@ struct AttributeView {
     std::span<const std::uint8_t> bytes;      ///< leaves × components × element size
 };
 
+/** @brief Whether @p firstBytes (at least the first 8 bytes of a file) start like a `.poct` file. */
+bool isPoctSignature(std::span<const std::uint8_t> firstBytes);
+
 class PackedOctree {
 public:
-    /** @brief Maps and verifies @p path (see the file comment for the errors). */
+    /**
+     * @brief Maps and verifies @p path (see the file comment for the errors). Touches every byte
+     *        once (checksums): a 174 MB file (67 M cells, 30 M-point drum at depth 13) opens in ~50 ms
+     *        of CPU from the page cache (docs/file-format.md, "Speed").
+     */
     static Result<PackedOctree> open(const std::filesystem::path& path);
     /** @brief The same from a file image in memory (tests, in-memory pipelines); takes ownership. */
     static Result<PackedOctree> fromBytes(std::vector<std::uint8_t> bytes, const std::string& name = "<memory>");
@@ -72,8 +79,18 @@ public:
     std::uint16_t normalCode(int level, std::uint64_t index) const;
     /** @brief Decoded unit normal of a cell (table lookup). */
     std::array<float, 3> normal(int level, std::uint64_t index) const;
-    /** @brief Index at level + 1 of the cell's first child (its children are consecutive, in slot order). */
+    /**
+     * @brief Index at level + 1 of the cell's first child (its children are consecutive, in slot order).
+     *        Constant time (a prefix count and at most 8 popcounts). Precondition: level < depth().
+     */
     std::uint64_t firstChild(int level, std::uint64_t index) const;
+
+    /** @brief All child masks of @p level, in breadth-first order (empty at the leaf level); bulk access. */
+    std::span<const std::uint8_t> levelMasks(int level) const;
+    /** @brief All normal codes of @p level, in breadth-first order; bulk access. */
+    std::span<const std::uint16_t> levelNormalCodes(int level) const;
+    /** @brief Bytes of memory the child index takes (the file itself is mapped, not counted). */
+    std::uint64_t indexBytes() const;
 
     /** @brief Attribute layers in file order. */
     std::vector<AttributeView> attributes() const;

@@ -11,6 +11,7 @@
  * Thread-safety: reentrant.
  */
 #include "stylos/core/octree/OctreeLevels.h"
+#include "stylos/core/util/Progress.h"
 #include "stylos/core/util/Result.h"
 
 #include <cstdint>
@@ -20,6 +21,9 @@
 #include <vector>
 
 namespace stylos::core::octree {
+
+/** @brief The `.poct` format version this code writes, and the newest it reads. */
+inline constexpr std::uint32_t PoctFormatVersion = 1;
 
 /** @brief Element type of an attribute layer. */
 enum class AttributeType : std::uint8_t { UInt8 = 1, UInt16 = 2, Float32 = 3 };
@@ -39,12 +43,16 @@ struct AttributeLayer {
 };
 
 /**
- * @brief Writes @p levels (and the colour layer when it has colour, plus @p extraLayers) to @p path.
- * @return the file size in bytes, or WriteFailed (message names the file and the system error), or
- *         InvalidArgument (a layer with a bad name, duplicate name or wrong size).
+ * @brief Writes @p levels (and the colour layer when it has colour, plus @p extraLayers) to @p path,
+ *        in one pass over the levels (block by block: memory stays at a few MiB of buffers).
+ *        @p progress (optional) gets the fraction of cells written after each block and can cancel.
+ * @return the file size in bytes, or WriteFailed (message names the file and the system error),
+ *         InvalidArgument (a layer with a bad name, duplicate name or wrong size; a description that
+ *         contradicts the cells, masks whose children do not add up, a cell without children), or
+ *         Cancelled. On any error nothing is left at @p path's folder and an existing file is kept.
  */
 Result<std::uint64_t> writePoct(const OctreeLevels& levels, const std::filesystem::path& path,
-                                std::span<const AttributeLayer> extraLayers = {});
+                                std::span<const AttributeLayer> extraLayers = {}, ProgressSink* progress = nullptr);
 
 /**
  * @brief Rewrites the `.poct` at @p path with @p layer added, or replacing the layer of the same name

@@ -1,0 +1,132 @@
+// Building a `.poct` file: the construction (OctreeBuilder.cpp), then the writer; for point files
+// without normals, their estimation first, into a temporary folder next to the output.
+#include "stylos/core/octree/OctreeBuild.h"
+
+#include "BuildContext.h"
+
+#include "stylos/core/normals/NormalFileEstimation.h"
+#include "stylos/core/octree/ConstructionOctree.h"
+#include "stylos/core/octree/PoctWriter.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <random>
+#include <system_error>
+
+namespace stylos::core::octree {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+/** Maps a part of the work, [begin, end] of the whole, onto another sink; forwards cancel. */
+class PartProgress final : public ProgressSink {
+public:
+    PartProgress(ProgressSink* whole, double begin, double end) : m_whole(whole), m_begin(begin), m_end(end) {}
+    void update(double fraction) override
+    {
+        if (m_whole) m_whole->update(m_begin + (m_end - m_begin) * std::clamp(fraction, 0.0, 1.0));
+    }
+    bool isCancelRequested() const override { return m_whole && m_whole->isCancelRequested(); }
+
+private:
+    ProgressSink* m_whole;
+    double m_begin, m_end;
+};
+
+/** A fresh folder ".NAME.build-XXXXXXXXXXXXXXXX" in @p parent, removed with its content on destruction. */
+class TemporaryFolder {
+public:
+    ~TemporaryFolder()
+    {
+        std::error_code ignored;
+        if (!m_path.empty()) fs::remove_all(m_path, ignored);
+    }
+    bool create(const fs::path& parent, const std::string& name)
+    {
+        std::random_device device;
+        for (int attempt = 0; attempt < 8; ++attempt) {
+            const auto ticks = std::uint64_t(std::chrono::steady_clock::now().time_since_epoch().count());
+            char suffix[17];
+            std::snprintf(suffix, sizeof suffix, "%016llx",
+                          static_cast<unsigned long long>((std::uint64_t(device()) << 32) ^ device() ^ ticks));
+            std::error_code error;
+            const fs::path candidate = parent / ("." + name + ".build-" + suffix);
+            if (fs::create_directory(candidate, error) && !error) {
+                m_path = candidate;
+                return true;
+            }
+            if (!fs::is_directory(parent, error)) return false;
+        }
+        return false;
+    }
+    const fs::path& path() const { return m_path; }
+
+private:
+    fs::path m_path;
+};
+
+} // namespace
+
+Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& output, const BuildOptions& options,
+                                ProgressSink* progress)
+{
+    const auto start = std::chrono::steady_clock::now();
+    PartProgress building(progress, 0.0, 0.95);
+    BuildReport report;
+    auto tree = buildConstructionOctree(open, options, &building, &report);
+    if (!tree.ok()) return tree.error();
+    if (progress && progress->isCancelRequested())
+        return Error::at(ErrorCode::Cancelled, output.string(), "", "octree build cancelled");
+    auto written = writePoct(**tree, output);
+    if (!written.ok()) return written.error();
+    report.fileBytes = *written;
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (progress) progress->update(1.0);
+    return report;
+}
+
+Result<BuildReport> buildOctreeFile(const fs::path& input, const fs::path& output, const BuildOptions& options,
+                                    ProgressSink* progress, const io::ReadOptions& read)
+{
+    const auto start = std::chrono::steady_clock::now();
+    bool hasNormals = false;
+    {
+        auto probe = io::openPointReader(input, read);
+        if (!probe.ok()) return probe.error();
+        hasNormals = (*probe)->header().schema.hasNormals;
+    }
+    if (hasNormals) {
+        return buildOctree([input, read] { return io::openPointReader(input, read); }, output, options, progress);
+    }
+    const Status valid = checkBuildOptions(options);  // before the (long) estimation
+    if (!valid.ok()) return valid.error();
+
+    TemporaryFolder folder;
+    const fs::path parent = output.has_parent_path() ? output.parent_path() : fs::path(".");
+    if (!folder.create(parent, output.filename().string()))
+        return Error::at(ErrorCode::WriteFailed, parent.string(), "",
+                         "cannot create a temporary folder for the estimated normals");
+    const fs::path withNormals = folder.path() / "normals.ply";
+    normals::NormalFileOptions estimate;
+    estimate.normals.threads = options.threads;
+    estimate.temporaryDirectory = folder.path();
+    estimate.read = read;
+    if (options.memoryLimit > 0)
+        estimate.memoryBudget = std::max<std::size_t>(64u << 10, std::min<std::uint64_t>(estimate.memoryBudget,
+                                                                                          options.memoryLimit));
+    PartProgress estimating(progress, 0.0, 0.4);
+    auto estimated = normals::estimateNormalsForFile(input, withNormals, estimate, &estimating);
+    if (!estimated.ok()) return estimated.error();
+
+    PartProgress building(progress, 0.4, 1.0);
+    auto report = buildOctree([withNormals] { return io::openPointReader(withNormals); }, output, options, &building);
+    if (!report.ok()) return report.error();
+    report->normalsEstimated = true;
+    report->skippedPoints = estimated->skippedPoints;
+    report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return report;
+}
+
+} // namespace stylos::core::octree
