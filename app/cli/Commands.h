@@ -8,5 +8,6 @@ namespace stylos::cli {
 int runInfo(const std::vector<std::string>& args);
 int runGenerate(const std::vector<std::string>& args);
 int runNormals(const std::vector<std::string>& args);
+int runBuild(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

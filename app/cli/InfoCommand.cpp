@@ -1,7 +1,8 @@
-// stylos-cli info FILE [--json] [--columns LAYOUT]
+// stylos-cli info FILE [--json] [--columns LAYOUT]; a .poct file gets the octree summary (PoctInfo).
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "PoctInfo.h"
 
 #include "stylos/core/io/PointFileSummary.h"
 
@@ -56,12 +57,15 @@ int runInfo(const std::vector<std::string>& args)
                     {"columns", "LAYOUT", "column layout of a text file, e.g. x,y,z,i,r,g,b (_ skips a column)"}});
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
-        std::cout << "Format, point count, bounds and attributes of a point file.\n" << cl.usage();
+        std::cout << "Format, point count, bounds and attributes of a point file; for a .poct octree: depth,\n"
+                     "normal code, root box, cells per level, bytes per cell and attribute layers.\n"
+                  << cl.usage();
         return ExitOk;
     }
     if (cl.positionals().size() != 1) return usageError(cl, "info takes exactly one FILE");
 
     const std::string file = cl.positionals()[0];
+    if (isPoctFile(file)) return runPoctInfo(file, cl.flag("json"));
     core::io::ReadOptions options;
     options.columns = cl.value("columns").value_or("");
     ConsoleProgress progress("reading " + file);

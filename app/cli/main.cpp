@@ -14,9 +14,11 @@ void printUsage(std::FILE* out)
 {
     std::fputs("usage: stylos-cli COMMAND [ARGS] (stylos-cli COMMAND --help for details)\n\n"
                "commands:\n"
-               "  info FILE              format, point count, bounds and attributes of a point file\n"
+               "  info FILE              format, point count, bounds and attributes of a point file;\n"
+               "                         depth, cells per level and bytes of a .poct octree\n"
                "  generate KIND -o OUT   synthetic scan with known truth: drum, omphalos or fragment\n"
-               "  normals IN -o OUT.ply  estimate normals (k-nearest PCA) for a scan that has none\n",
+               "  normals IN -o OUT.ply  estimate normals (k-nearest PCA) for a scan that has none\n"
+               "  build IN -o OUT.poct   build the packed point octree of a scan (or of --synthetic-drum N)\n",
                out);
 }
 
@@ -43,6 +45,7 @@ int main(int argc, char** argv)
     if (command == "info") return runInfo(args);
     if (command == "generate") return runGenerate(args);
     if (command == "normals") return runNormals(args);
+    if (command == "build") return runBuild(args);
     std::fprintf(stderr, "stylos-cli: unknown command \"%s\"\n", command.c_str());
     printUsage(stderr);
     return ExitUsage;

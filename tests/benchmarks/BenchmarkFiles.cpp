@@ -1,10 +1,15 @@
 #include "BenchmarkFiles.h"
 
 #include "stylos/core/io/PlyWriter.h"
+#include "stylos/core/io/PointFileFormat.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
+#include <numeric>
+#include <random>
 #include <stdexcept>
 #include <vector>
 
@@ -117,6 +122,138 @@ void writeXyz(const std::filesystem::path& path, std::uint64_t points, bool norm
         }
     }
     if (std::fclose(f) != 0) throw std::runtime_error("cannot write " + path.string());
+}
+
+namespace {
+
+/** One point as a fixed-size record: 3 doubles, then 3 floats, 3 bytes and the scalars (doubles) present. */
+struct RecordLayout {
+    explicit RecordLayout(const core::io::PointSchema& schema)
+        : normals(schema.hasNormals), colours(schema.hasColors), scalars(schema.scalarNames.size())
+    {
+        bytes = 24 + (normals ? 12 : 0) + (colours ? 3 : 0) + 8 * scalars;
+    }
+    void pack(const core::io::PointBatch& b, std::size_t i, unsigned char* out) const
+    {
+        std::memcpy(out, &b.positions[3 * i], 24);
+        out += 24;
+        if (normals) {
+            std::memcpy(out, &b.normals[3 * i], 12);
+            out += 12;
+        }
+        if (colours) {
+            std::memcpy(out, &b.colors[3 * i], 3);
+            out += 3;
+        }
+        for (std::size_t s = 0; s < scalars; ++s, out += 8) std::memcpy(out, &b.scalars[s][i], 8);
+    }
+    void unpack(const unsigned char* in, core::io::PointBatch& b) const
+    {
+        double p[3];
+        std::memcpy(p, in, 24);
+        b.positions.insert(b.positions.end(), p, p + 3);
+        in += 24;
+        if (normals) {
+            float n[3];
+            std::memcpy(n, in, 12);
+            b.normals.insert(b.normals.end(), n, n + 3);
+            in += 12;
+        }
+        if (colours) {
+            b.colors.insert(b.colors.end(), in, in + 3);
+            in += 3;
+        }
+        for (std::size_t s = 0; s < scalars; ++s, in += 8) {
+            double v;
+            std::memcpy(&v, in, 8);
+            b.scalars[s].push_back(v);
+        }
+    }
+    bool normals, colours;
+    std::size_t scalars, bytes = 0;
+};
+
+struct FileCloser {
+    void operator()(std::FILE* f) const { if (f) std::fclose(f); }
+};
+using File = std::unique_ptr<std::FILE, FileCloser>;
+
+} // namespace
+
+std::uint64_t writeShuffledCopy(const std::filesystem::path& input, const std::filesystem::path& output,
+                                std::uint64_t seed, std::uint64_t pointsPerBucket)
+{
+    auto reader = core::io::openPointReader(input);
+    if (!reader) throw std::runtime_error(reader.error().message);
+    const core::io::PointSchema schema = (*reader)->header().schema;
+    const RecordLayout layout(schema);
+    const std::uint64_t expected = (*reader)->header().declaredPoints.value_or(pointsPerBucket);
+    const std::size_t buckets = static_cast<std::size_t>(std::max<std::uint64_t>(1, (expected + pointsPerBucket - 1) / pointsPerBucket));
+
+    // Pass 1: every point to a random bucket file (buffered writes).
+    std::mt19937_64 random(seed);
+    std::vector<std::filesystem::path> paths;
+    std::vector<File> files;
+    std::vector<std::vector<unsigned char>> buffers(buckets);
+    for (std::size_t k = 0; k < buckets; ++k) {
+        paths.push_back(output.string() + ".bucket" + std::to_string(k));
+        files.emplace_back(std::fopen(paths.back().c_str(), "wb"));
+        if (!files.back()) throw std::runtime_error("cannot write " + paths.back().string());
+    }
+    auto flush = [&](std::size_t k) {
+        if (std::fwrite(buffers[k].data(), 1, buffers[k].size(), files[k].get()) != buffers[k].size())
+            throw std::runtime_error("cannot write " + paths[k].string());
+        buffers[k].clear();
+    };
+    core::io::PointBatch batch;
+    std::uint64_t total = 0;
+    for (;;) {
+        auto got = (*reader)->read(batch, 1 << 16);
+        if (!got) throw std::runtime_error(got.error().message);
+        if (*got == 0) break;
+        for (std::size_t i = 0; i < *got; ++i) {
+            const std::size_t k = static_cast<std::size_t>(random() % buckets);
+            auto& buffer = buffers[k];
+            buffer.resize(buffer.size() + layout.bytes);
+            layout.pack(batch, i, buffer.data() + buffer.size() - layout.bytes);
+            if (buffer.size() >= (1u << 16)) flush(k);
+        }
+        total += *got;
+    }
+    for (std::size_t k = 0; k < buckets; ++k) {
+        flush(k);
+        files[k].reset();
+    }
+
+    // Pass 2: each bucket in memory, shuffled, appended to the output.
+    core::io::PlyWriterOptions options;
+    for (const auto& name : schema.scalarNames)
+        options.scalarTypes.push_back(name == "scan_id" ? core::io::PlyScalarType::UInt8 : core::io::PlyScalarType::Float32);
+    auto writer = core::io::PlyWriter::create(output, schema, options);
+    if (!writer) throw std::runtime_error(writer.error().message);
+    std::vector<unsigned char> records;
+    std::vector<std::uint32_t> order;
+    for (std::size_t k = 0; k < buckets; ++k) {
+        const auto bytes = std::filesystem::file_size(paths[k]);
+        records.resize(bytes);
+        File in(std::fopen(paths[k].c_str(), "rb"));
+        if (!in || std::fread(records.data(), 1, bytes, in.get()) != bytes)
+            throw std::runtime_error("cannot read " + paths[k].string());
+        in.reset();
+        std::filesystem::remove(paths[k]);
+        order.resize(bytes / layout.bytes);
+        std::iota(order.begin(), order.end(), 0u);
+        std::shuffle(order.begin(), order.end(), random);
+        for (std::size_t done = 0; done < order.size();) {
+            const std::size_t n = std::min<std::size_t>(order.size() - done, 1 << 16);
+            batch.reset(schema, n);
+            for (std::size_t i = 0; i < n; ++i) layout.unpack(records.data() + std::size_t(order[done + i]) * layout.bytes, batch);
+            if (auto s = writer->write(batch); !s) throw std::runtime_error(s.error().message);
+            done += n;
+        }
+    }
+    if (auto s = writer->finish(); !s) throw std::runtime_error(s.error().message);
+    return total;
 }
 
 } // namespace stylos::bench

@@ -1,0 +1,203 @@
+// stylos-cli build IN -o OUT.poct [--depth L] [--method optimal|streaming] [--memory-limit MiB]
+//                   [--normal-code octahedral16|paper15] [--threads N] [--columns LAYOUT] [--json]
+// stylos-cli build --synthetic-drum POINTS [--seed N] [--ordered] -o OUT.poct [same options]
+#include "CommandLine.h"
+#include "Commands.h"
+#include "ConsoleProgress.h"
+#include "PoctInfo.h"
+
+#include "stylos/core/octree/OctreeBuild.h"
+#include "stylos/core/synth/SyntheticStream.h"
+
+#include <nlohmann/json.hpp>
+
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cstdio>
+#include <iostream>
+
+namespace stylos::cli {
+
+namespace {
+
+namespace oct = core::octree;
+
+/** Peak resident memory of this process so far, bytes (Linux reports ru_maxrss in KiB). */
+std::uint64_t peakRssBytes()
+{
+    struct rusage usage {};
+    getrusage(RUSAGE_SELF, &usage);
+    return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
+}
+
+bool endsWithPoct(const std::string& path)
+{
+    if (path.size() < 5) return false;
+    std::string ext = path.substr(path.size() - 5);
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext == ".poct";
+}
+
+/** The build's options from the command line; false (with @p problem set) on a usage error. */
+bool parseBuildOptions(CommandLine& cl, oct::BuildOptions& options, std::string& problem)
+{
+    long long depth = options.depth, mib = 0, threads = options.threads;
+    if (!cl.integer("depth", depth) || !cl.integer("memory-limit", mib) || !cl.integer("threads", threads)) {
+        problem = cl.error();
+        return false;
+    }
+    if (depth < oct::MinOctreeDepth || depth > oct::MaxOctreeDepth) {
+        problem = "--depth must be between " + std::to_string(oct::MinOctreeDepth) + " and " +
+                  std::to_string(oct::MaxOctreeDepth);
+        return false;
+    }
+    if (cl.value("memory-limit") && (mib < 1 || mib > (1 << 20))) {
+        problem = "--memory-limit must be between 1 and 1048576 MiB";
+        return false;
+    }
+    if (threads < 1 || threads > 1024) {
+        problem = "--threads must be between 1 and 1024";
+        return false;
+    }
+    const std::string method = cl.value("method").value_or("optimal");
+    if (method != "optimal" && method != "streaming") {
+        problem = "unknown method \"" + method + "\" (optimal or streaming)";
+        return false;
+    }
+    const auto code = normalCodeFromName(cl.value("normal-code").value_or("octahedral16"));
+    if (!code) {
+        problem = "unknown normal code \"" + *cl.value("normal-code") + "\" (octahedral16 or paper15)";
+        return false;
+    }
+    options.depth = static_cast<int>(depth);
+    options.memoryLimit = static_cast<std::uint64_t>(mib) << 20;
+    options.threads = static_cast<unsigned>(threads);
+    options.method = method == "streaming" ? oct::BuildMethod::Streaming : oct::BuildMethod::Optimal;
+    options.normalCode = *code;
+    return true;
+}
+
+/** The procedural input of --synthetic-drum; false (with @p problem set) on a usage error. */
+bool parseSynthetic(CommandLine& cl, core::synth::SyntheticStreamOptions& stream, std::string& problem)
+{
+    long long points = 0, seed = static_cast<long long>(stream.seed);
+    if (!cl.integer("synthetic-drum", points) || !cl.integer("seed", seed)) {
+        problem = cl.error();
+        return false;
+    }
+    if (points < 1) {
+        problem = "--synthetic-drum needs a positive number of points";
+        return false;
+    }
+    if (seed < 0) {
+        problem = "--seed must be non-negative";
+        return false;
+    }
+    stream.points = static_cast<std::uint64_t>(points);
+    stream.seed = static_cast<std::uint64_t>(seed);
+    stream.shuffled = !cl.flag("ordered");
+    return true;
+}
+
+void printSummary(const std::string& input, const std::string& output, const oct::BuildReport& r,
+                  std::uint64_t peakRss)
+{
+    const double cells = static_cast<double>(std::max<std::uint64_t>(r.cells, 1));
+    std::printf("built %s from %s: %llu points -> %llu cells (%llu leaves), depth %d, %s, %.3f s\n",
+                output.c_str(), input.c_str(), static_cast<unsigned long long>(r.points),
+                static_cast<unsigned long long>(r.cells), static_cast<unsigned long long>(r.leaves), r.depth,
+                oct::buildMethodName(r.method), r.seconds);
+    std::printf("construction %.1f MiB (%.2f bytes/cell), file %.1f MiB (%.2f bytes/cell), peak RSS %.1f MiB\n",
+                r.constructionBytes / 1048576.0, r.constructionBytes / cells, r.fileBytes / 1048576.0,
+                r.fileBytes / cells, peakRss / 1048576.0);
+    if (r.skippedPoints > 0)
+        std::printf("skipped %llu points with NaN or infinite coordinates\n",
+                    static_cast<unsigned long long>(r.skippedPoints));
+    if (r.normalsEstimated) std::printf("normals estimated (the input had none)\n");
+}
+
+} // namespace
+
+int runBuild(const std::vector<std::string>& args)
+{
+    CommandLine cl("build", "IN -o OUT.poct [options]  |  build --synthetic-drum POINTS -o OUT.poct [options]",
+                   {{"output", "OUT.poct", "the packed octree to write", "o"},
+                    {"depth", "L", "leaf level, 1..21 (default 12; a cell is the root box / 2^L)"},
+                    {"method", "NAME", "optimal (one pass per level, least memory; default) or streaming (one pass)"},
+                    {"memory-limit", "MiB", "stop (writing nothing) if the construction structure would exceed this"},
+                    {"normal-code", "NAME", "octahedral16 (default) or paper15"},
+                    {"threads", "N", "worker threads (default 2)"},
+                    {"columns", "LAYOUT", "column layout of a text input, e.g. x,y,z,nx,ny,nz"},
+                    {"synthetic-drum", "POINTS", "input: a procedural fluted drum of POINTS points, never stored"},
+                    {"seed", "N", "seed of --synthetic-drum (default 1)"},
+                    {"ordered", "", "--synthetic-drum in scan-like order (default: random order)"},
+                    {"json", "", "print one JSON object on stdout"}});
+    if (!cl.parse(args)) return usageError(cl, cl.error());
+    if (cl.helpRequested()) {
+        std::cout << "Builds a packed point octree (.poct) from a point file (normals are estimated when it has\n"
+                     "none) or from the procedural drum of --synthetic-drum.\n"
+                  << cl.usage();
+        return ExitOk;
+    }
+    const bool synthetic = cl.value("synthetic-drum").has_value();
+    if (synthetic && !cl.positionals().empty())
+        return usageError(cl, "build takes either an input file or --synthetic-drum, not both");
+    if (!synthetic && cl.positionals().size() != 1) return usageError(cl, "build takes exactly one input file");
+    if (!synthetic && (cl.value("seed") || cl.flag("ordered")))
+        return usageError(cl, "--seed and --ordered apply to --synthetic-drum only");
+    const auto output = cl.value("output");
+    if (!output || output->empty()) return usageError(cl, "build needs -o OUT.poct");
+    if (!endsWithPoct(*output)) return usageError(cl, "the output must be a .poct file, not \"" + *output + "\"");
+
+    oct::BuildOptions options;
+    core::synth::SyntheticStreamOptions stream;
+    std::string problem;
+    if (!parseBuildOptions(cl, options, problem) || (synthetic && !parseSynthetic(cl, stream, problem)))
+        return usageError(cl, problem);
+
+    const std::string input = synthetic ? "synthetic-drum" : cl.positionals()[0];
+    ConsoleProgress progress("building " + *output);
+    auto build = [&]() -> core::Result<oct::BuildReport> {
+        if (synthetic) {
+            const oct::PointSourceFactory open = [stream] { return core::synth::openSyntheticStream(stream); };
+            return oct::buildOctree(open, *output, options, &progress);
+        }
+        core::io::ReadOptions read;
+        read.columns = cl.value("columns").value_or("");
+        return oct::buildOctreeFile(input, *output, options, &progress, read);
+    };
+    const auto report = build();
+    if (!report) {
+        std::cerr << "stylos-cli: " << report.error().message << "\n";
+        return ExitFailure;
+    }
+    const oct::BuildReport& r = report.value();
+    const std::uint64_t peakRss = peakRssBytes();
+    if (cl.flag("json")) {
+        nlohmann::json j{{"input", input},
+                         {"output", *output},
+                         {"points", r.points},
+                         {"cells", r.cells},
+                         {"leaves", r.leaves},
+                         {"depth", r.depth},
+                         {"method", oct::buildMethodName(r.method)},
+                         {"normal_code", normalCodeName(options.normalCode)},
+                         {"seconds", r.seconds},
+                         {"construction_bytes", r.constructionBytes},
+                         {"file_bytes", r.fileBytes},
+                         {"skipped_points", r.skippedPoints},
+                         {"passes", r.passes},
+                         {"normals_estimated", r.normalsEstimated},
+                         {"cells_per_level", r.cellsPerLevel},
+                         {"peak_rss_bytes", peakRss}};
+        if (synthetic) j["synthetic"] = {{"points", stream.points}, {"seed", stream.seed}, {"ordered", !stream.shuffled}};
+        std::cout << j.dump() << "\n";
+    } else {
+        printSummary(input, *output, r, peakRss);
+    }
+    return ExitOk;
+}
+
+} // namespace stylos::cli
