@@ -312,3 +312,44 @@ TEST(ConstructionOctree, AllocateLevelRefusesBeforeAllocating)
     }
     EXPECT_EQ(refused, 3);  // level 4 holds 2,304 cells
 }
+
+TEST(ConstructionOctree, BatchedDescentsEqualSingleOnes)
+{
+    // markAll/findLeaves (groups of prefetched descents for far points, the path cache for near ones)
+    // give what mark/findLeaf give one point at a time, on random and on coherent input.
+    std::mt19937 random(12);
+    std::uniform_real_distribution<double> u(0, 1);
+    Input in;
+    for (int i = 0; i < 4000; ++i) in.add(u(random), u(random), 0.3 + 0.4 * u(random), 0, 0, 1);
+    double x = 0.2, y = 0.2;
+    for (int i = 0; i < 4000; ++i) {  // a scan-like line
+        x = std::min(0.99, x + 0.0003), y = std::min(0.99, y + 0.0001 * u(random));
+        in.add(x, y, 0.5, 0, 0, 1);
+    }
+    const int depth = 9;
+    std::vector<PreparedPoint> points;
+    for (std::size_t i = 0; i < in.size(); ++i) points.push_back(in.prepared(i, unitBox, depth));
+    ConstructionOctree single(unitBox, depth, oct, false, 0), batched(unitBox, depth, oct, false, 0);
+    for (int level = 0; level < depth; ++level) {
+        auto a = single.rootPath(), b = batched.rootPath();
+        for (const PreparedPoint& p : points) ASSERT_TRUE(single.mark(p.coords, level, a));
+        ASSERT_TRUE(batched.markAll(std::span(points).subspan(0, 5000), level, b));
+        ASSERT_TRUE(batched.markAll(std::span(points).subspan(5000), level, b));
+        ASSERT_TRUE(single.allocateLevel(level));
+        ASSERT_TRUE(batched.allocateLevel(level));
+        EXPECT_EQ(single.description().cellsPerLevel, batched.description().cellsPerLevel) << level;
+    }
+    std::vector<std::uint32_t> leaves(points.size());
+    auto path = batched.rootPath();
+    batched.findLeaves(points, leaves, path);
+    auto one = batched.rootPath();
+    for (std::size_t i = 0; i < points.size(); ++i) ASSERT_EQ(leaves[i], batched.findLeaf(points[i].coords, one)) << i;
+    // Points outside the tree are reported by both.
+    std::vector<PreparedPoint> outside(40, points[0]);
+    for (std::size_t i = 0; i < outside.size(); ++i) outside[i].coords = {std::uint32_t(i), 0, 0};  // z = 0: empty
+    std::vector<std::uint32_t> none(outside.size());
+    batched.findLeaves(outside, none, path);
+    for (std::uint32_t leaf : none) EXPECT_EQ(leaf, CellArena::Exhausted);
+    auto markPath = batched.rootPath();
+    EXPECT_FALSE(batched.markAll(outside, depth - 1, markPath));
+}

@@ -125,3 +125,21 @@ TEST(OctreePull, ThreadsDoNotChangeTheResult)
     EXPECT_EQ(one.weights(0), (std::vector<std::uint64_t>{points}));
     EXPECT_EQ(one.description().points, points);
 }
+
+TEST(OctreePull, PowerOfTwoSingleChildShortcutHoldsForEveryCode)
+{
+    // The pull re-encodes a single child of power-of-two weight w from a table of encode(decode(code)).
+    // The premise, for every code: the general formula encode(float(0 + w · d)) equals encode(d).
+    for (NormalCodeKind kind : {NormalCodeKind::Octahedral16, NormalCodeKind::Paper15}) {
+        const auto* table = normalDecodeTable(kind);
+        for (std::size_t c = 0; c < normalCodeCount(kind); ++c) {
+            const auto& d = table[c];
+            const std::uint16_t once = encodeNormal(kind, d[0], d[1], d[2]);
+            for (double w : {1.0, 2.0, 64.0, 4294967296.0, 9223372036854775808.0}) {
+                const std::uint16_t general = encodeNormal(kind, float(0.0 + w * double(d[0])),
+                                                          float(0.0 + w * double(d[1])), float(0.0 + w * double(d[2])));
+                ASSERT_EQ(general, once) << "code " << c << " weight " << w;
+            }
+        }
+    }
+}

@@ -89,7 +89,7 @@ bool ConstructionOctree::markAll(std::span<const PreparedPoint> points, int leve
         previous = c;
         hasPrevious = true;
         const int restart = restartLevel(c, path, level);
-        if (restart >= level - 1) {
+        if (restart >= level - 3) {
             ok &= mark(c, level, path);
             continue;
         }
@@ -124,7 +124,7 @@ void ConstructionOctree::findLeaves(std::span<const PreparedPoint> points, std::
     for (std::size_t i = 0; i < points.size(); ++i) {
         const auto& c = points[i].coords;
         const int restart = restartLevel(c, path, depth);
-        if (restart >= depth - 1) {
+        if (restart >= depth - 3) {
             leaves[i] = findLeaf(c, path);
             continue;
         }

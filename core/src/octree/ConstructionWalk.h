@@ -42,15 +42,18 @@ void forEachRangeBelow(const CellArena& arena, std::uint32_t start, int startLev
             continue;
         }
         const std::uint8_t* c = arena.cell(top.next++);
-        if (top.next != top.end) {
-            // The next sibling's children are needed once this cell's subtree is done: fetch them now.
-            const std::uint8_t* sibling = arena.cell(top.next);
-            if (cell::mask(sibling)) __builtin_prefetch(arena.cell(cell::value(sibling)));
-        }
         const unsigned count = cell::count(cell::mask(c));
         if (count > 0) {
-            stack[std::size_t(m) + 1] = {cell::value(c), cell::value(c) + count};
+            const std::uint32_t table = cell::value(c);
+            stack[std::size_t(m) + 1] = {table, table + count};
             ++m;
+            if (m < level) {
+                // These cells' children are visited one subtree after another: fetch them all now.
+                for (unsigned i = 0; i < count; ++i) {
+                    const std::uint8_t* child = arena.cell(table + i);
+                    if (cell::mask(child)) __builtin_prefetch(arena.cell(cell::value(child)));
+                }
+            }
         }
     }
 }

@@ -53,7 +53,7 @@ Result<std::unique_ptr<ConstructionOctree>> buildStreaming(BuildContext& context
                 const std::string when =
                     "after " + std::to_string(inserted) +
                     (context.expectedPoints() ? " of " + std::to_string(*context.expectedPoints()) : std::string()) +
-                    " points (and more for the rest)";
+                    " points, and more for the rest,";
                 return context.outOfBudget(tree->arena().bytesWithChunks(tree->arena().chunks() + 1), when);
             }
             ++inserted;

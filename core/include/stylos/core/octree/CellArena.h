@@ -17,8 +17,9 @@
  * exceed the limit or the 32-bit index space. Chunks are never returned before the arena dies. On Linux
  * the chunks lie one after another in one reserved address range, made usable 2 MiB at a time and
  * advised for transparent huge pages: a cell's address is then base + index · cell size (no chunk table
- * look-up), and the random walks of construction, pull and listing miss the TLB far less. The usable
- * rest of the last 2 MiB (unused, so not resident unless a huge page backs it) is not counted.
+ * look-up), and the random walks of construction, pull and listing miss the TLB far less. bytes()
+ * counts chunks; the resident memory can exceed it by the unused rest of the last 2 MiB (a huge page is
+ * resident as a whole). Elsewhere chunks come from new[].
  * Thread-safety: allocate/release are not thread-safe; concurrent reads, and concurrent writes to
  * distinct cells, are safe once the cells exist.
  */

@@ -8,18 +8,23 @@
  * Operations, by builder:
  *  - Streaming: populate() inserts one point down to the leaf level, growing child tables by
  *    allocate(k + 1) / copy / release(k).
- *  - Optimal: mark() sets, for one point, the child bit of its cell at the level being built (several
- *    threads may mark at once); allocateLevel() then gives every cell of that level its exact-size child
- *    table; findLeaf() locates a point's leaf (read-only, any thread) and average() adds it there.
- *  - Both: pull() computes the inner cells' normals; visitLevel() lists a level in breadth-first order
- *    through a depth-first walk restricted to the level (no memory proportional to the tree).
+ *  - Optimal: mark()/markAll() set, for each point, the child bit of its cell at the level being built
+ *    (several threads may mark at once); allocateLevel() then gives every cell of that level its
+ *    exact-size child table; findLeaf()/findLeaves() locate points' leaves (read-only, any thread) and
+ *    average() adds each point to its leaf, in input order.
+ *  - Both: pull() computes the inner cells' normals (subtrees on several threads); visitLevel() lists a
+ *    level in breadth-first order through a depth-first walk restricted to the level (one frame per
+ *    level, no memory proportional to the tree; large levels walked by setThreads() threads, subtree by
+ *    subtree, handed out in order).
  *
  * Leaf averaging and pull follow the shared definitions exactly (see OctreeBuild.h): a leaf's first point
  * sets its code; each later one re-encodes decode(code) · w + n̂ (float); colour channels by the rounded
  * integer running mean; weights saturate at 2^32 − 1.
  *
  * Each populate()/mark()/findLeaf() call restarts its descent at the deepest level where the point shares
- * its cell with the previous point of the same Path (scanner input is spatially coherent).
+ * its cell with the previous point of the same Path (scanner input is spatially coherent); markAll() and
+ * findLeaves() send the points that share little with it down in groups of prefetched descents (random
+ * input), which the read-only Optimal passes allow.
  * Thread-safety: see each function; otherwise one thread at a time.
  */
 #include "stylos/core/octree/CellArena.h"

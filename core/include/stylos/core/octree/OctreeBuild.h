@@ -20,9 +20,19 @@
  * estimates normals first (normals::estimateNormalsForFile into a temporary file).
  *
  * Memory: the construction structure counts against `memoryLimit` (cells, chunk tables and free lists);
- * read buffers and the normal decode table (< 8 MiB) are outside it. A build that would exceed the limit
- * stops with ErrorCode::OutOfBudget and a message giving the bytes it needed; nothing is written.
- * Thread-safety: reentrant; a build uses up to `threads` threads.
+ * read buffers (a few batches of 16 Ki points) and the normal tables (< 2 MiB) are outside it. A build
+ * that would exceed the limit stops with ErrorCode::OutOfBudget and a message giving the bytes it needed
+ * and the limit ("the octree needs 812 MiB at level 12 but the memory limit (--memory-limit) is 512 MiB";
+ * Optimal knows the exact size of each level before allocating it, Streaming stops when the next chunk
+ * would not fit); nothing is written.
+ *
+ * Progress: a fraction of all passes (the bounds scan included) and the pull, then the writing; cancel is
+ * checked after every batch of 16 Ki points (Cancelled, nothing written).
+ * Thread-safety: reentrant; a build uses `threads` worker threads plus one thread reading the input.
+ *
+ * Implementation (core/src/octree): ConstructionOctree (CellArena cells), OptimalBuilder, StreamingBuilder,
+ * PointPass (the reader thread: reading, quantising, encoding the first-point normal codes), then
+ * writePoct().
  */
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/octree/NormalCode.h"
