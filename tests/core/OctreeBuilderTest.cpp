@@ -485,6 +485,34 @@ TEST(OctreeBuilder, CancelLeavesNoFile)
     EXPECT_EQ(listing(dir.path()), (std::vector<std::string>{"plain.ply"}));
 }
 
+/** Cancels once the progress passes @p threshold (the writing phase starts at 0.95). */
+class CancelPast final : public ProgressSink {
+public:
+    explicit CancelPast(double threshold) : m_threshold(threshold) {}
+    void update(double fraction) override { m_last = std::max(m_last, fraction); }
+    bool isCancelRequested() const override { return m_last > m_threshold; }
+    double last() const { return m_last; }
+
+private:
+    double m_threshold;
+    double m_last = 0;
+};
+
+TEST(OctreeBuilder, CancelWhileWritingLeavesNoFile)
+{
+    TempDir dir;
+    const io::PointBatch cloud = smallCloud(50000, 3);
+    for (BuildMethod m : methods) {
+        CancelPast cancel(0.95);
+        auto r = buildOctree(memorySource(cloud), dir / "x.poct", optionsFor(m, 10), &cancel);
+        ASSERT_FALSE(r.ok());
+        EXPECT_EQ(r.error().code, ErrorCode::Cancelled) << r.error().message;
+        EXPECT_GT(cancel.last(), 0.95);
+        EXPECT_LT(cancel.last(), 1.0);  // stopped inside the writing phase
+    }
+    EXPECT_TRUE(listing(dir.path()).empty());
+}
+
 TEST(OctreeBuilder, ReaderErrorsAndChangingInputsAreReported)
 {
     TempDir dir;

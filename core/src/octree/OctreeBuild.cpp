@@ -79,7 +79,8 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
     if (!tree.ok()) return tree.error();
     if (progress && progress->isCancelRequested())
         return Error::at(ErrorCode::Cancelled, output.string(), "", "octree build cancelled");
-    auto written = writePoct(**tree, output);
+    PartProgress writing(progress, 0.95, 1.0);
+    auto written = writePoct(**tree, output, {}, &writing);
     if (!written.ok()) return written.error();
     report.fileBytes = *written;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
