@@ -1,5 +1,6 @@
 // Picking: nearest cell and ray picks on a four-leaf tree with known answers (levels, limits, ties,
 // rays from behind, growing radius), and against brute-force scans over every cell of a generated drum.
+#include "PoctTestSupport.h"
 #include "ReferenceOctree.h"
 #include "SyntheticTestSupport.h"
 #include "TestSupport.h"
@@ -21,22 +22,11 @@ using namespace stylos::core;
 using namespace stylos::core::octree;
 using stylos::test::ReferenceOctree;
 using stylos::test::TempDir;
+using stylos::test::pack;
 
 namespace {
 
 constexpr double inf = std::numeric_limits<double>::infinity();
-
-std::unique_ptr<PackedOctree> pack(const OctreeLevels& levels, const TempDir& dir, const char* name = "t.poct")
-{
-    const auto path = dir / name;
-    const auto written = writePoct(levels, path);
-    EXPECT_TRUE(written.ok()) << (written.ok() ? "" : written.error().message);
-    if (!written.ok()) return nullptr;
-    auto opened = PackedOctree::open(path);
-    EXPECT_TRUE(opened.ok()) << (opened.ok() ? "" : opened.error().message);
-    if (!opened.ok()) return nullptr;
-    return std::make_unique<PackedOctree>(std::move(opened).value());
-}
 
 // The four-leaf tree of ViewCutTest: root box origin O = (100, 200, 300), edge 4, depth 2; leaves
 // a1 (0,0,0), a2 (1,0,0), b1 (2,2,2), b2 (3,2,2) (indices 0..3); level 1: a (0,0,0), b (1,1,1).

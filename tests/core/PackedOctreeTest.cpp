@@ -1,5 +1,6 @@
 // Reading .poct files: round trips against the reference octree (every cell), the child index, level
 // iteration, attribute layers, rewriting, open errors, and the speed of opening a large file.
+#include "PoctTestSupport.h"
 #include "ReferenceOctree.h"
 #include "TestSupport.h"
 #include "stylos/core/octree/PackedOctree.h"
@@ -17,14 +18,9 @@ using namespace stylos::core::octree;
 using stylos::test::ManualOctree;
 using stylos::test::ReferenceOctree;
 using stylos::test::TempDir;
+using stylos::test::fileBytes;
 
 namespace {
-
-std::vector<std::uint8_t> fileBytes(const std::filesystem::path& p)
-{
-    const auto c = stylos::test::readBytes(p);
-    return {c.begin(), c.end()};
-}
 
 ReferenceOctree cloudTree(int points, int depth, bool colour, std::uint64_t seed,
                           NormalCodeKind kind = NormalCodeKind::Octahedral16)

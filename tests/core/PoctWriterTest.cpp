@@ -1,5 +1,6 @@
 // The .poct writer: the exact byte layout of docs/file-format.md on a hand-made tree, determinism,
 // size per cell on a generated drum, atomic writes and every refused argument.
+#include "PoctTestSupport.h"
 #include "ReferenceOctree.h"
 #include "TestSupport.h"
 #include "stylos/core/octree/PoctWriter.h"
@@ -16,14 +17,9 @@ using namespace stylos::core::octree;
 using stylos::test::ManualOctree;
 using stylos::test::ReferenceOctree;
 using stylos::test::TempDir;
+using stylos::test::fileBytes;
 
 namespace {
-
-std::vector<std::uint8_t> fileBytes(const std::filesystem::path& p)
-{
-    const auto c = stylos::test::readBytes(p);
-    return {c.begin(), c.end()};
-}
 
 template <typename T>
 T at(const std::vector<std::uint8_t>& b, std::size_t offset)

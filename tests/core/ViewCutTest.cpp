@@ -2,6 +2,7 @@
 // a cell, maximum level, frustum culling, orthographic cameras), and invariants on a generated drum
 // (every leaf covered once, budget, determinism, cell data, conservative culling, and the same cut as
 // a plain priority-queue implementation of the rules in ViewCut.h).
+#include "PoctTestSupport.h"
 #include "ReferenceOctree.h"
 #include "SyntheticTestSupport.h"
 #include "TestSupport.h"
@@ -33,24 +34,12 @@ using namespace stylos::core;
 using namespace stylos::core::octree;
 using stylos::test::ReferenceOctree;
 using stylos::test::TempDir;
+using stylos::test::pack;
 
 namespace {
 
 using Id = std::pair<int, std::uint64_t>;
 using Ids = std::vector<Id>;
-
-/** writePoct + open; fails the test (and returns nullptr) on error. */
-std::unique_ptr<PackedOctree> pack(const OctreeLevels& levels, const TempDir& dir, const char* name = "t.poct")
-{
-    const auto path = dir / name;
-    const auto written = writePoct(levels, path);
-    EXPECT_TRUE(written.ok()) << (written.ok() ? "" : written.error().message);
-    if (!written.ok()) return nullptr;
-    auto opened = PackedOctree::open(path);
-    EXPECT_TRUE(opened.ok()) << (opened.ok() ? "" : opened.error().message);
-    if (!opened.ok()) return nullptr;
-    return std::make_unique<PackedOctree>(std::move(opened).value());
-}
 
 Ids ids(const CutResult& cut)
 {
