@@ -1,0 +1,247 @@
+#include "stylos/core/unroll/Unroller.h"
+
+#include "../shading/ParallelChunks.h"
+#include "UnrollAzimuth.h"
+#include "UnrollCut.h"
+#include "UnrollParallel.h"
+#include "UnrollRaster.h"
+#include "UnrollSample.h"
+#include "UnrollSpacing.h"
+#include "UnrollStageProgress.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <new>
+#include <numbers>
+#include <string>
+#include <vector>
+
+namespace stylos::core::unroll {
+
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr double kDefaultBand = 0.15;      ///< × referenceRadius
+constexpr double kDefaultTolerance = 2.0;  ///< × pixel size
+
+std::string format(const char* pattern, double value)
+{
+    char text[64];
+    std::snprintf(text, sizeof text, pattern, value);
+    return text;
+}
+
+/** What the first pass learns about the kept points, per worker then merged. */
+struct PointStats {
+    std::vector<std::uint64_t> azimuths = std::vector<std::uint64_t>(detail::kAzimuthBins, 0);
+    double vMin = std::numeric_limits<double>::infinity();
+    double vMax = -std::numeric_limits<double>::infinity();
+    std::uint64_t kept = 0;
+
+    void merge(const PointStats& other)
+    {
+        for (std::size_t b = 0; b < azimuths.size(); ++b) azimuths[b] += other.azimuths[b];
+        vMin = std::min(vMin, other.vMin);
+        vMax = std::max(vMax, other.vMax);
+        kept += other.kept;
+    }
+};
+
+class Unroller {
+public:
+    Unroller(const cloud::PointCloud& cloud, const Surface& surface, const UnrollOptions& options,
+             ProgressSink* progress)
+        : m_cloud(cloud), m_surface(surface), m_options(options), m_progress(progress),
+          m_source(cloud.source.empty() ? "<memory>" : cloud.source),
+          m_threads(shading::detail::resolveThreads(options.threads)),
+          m_e1(defaultReferenceDir(surface.axis().direction)),
+          m_probe(surface, m_e1, 0.0, 1.0, 1, 1, 0.0)
+    {
+    }
+
+    Result<Unrolled> run();
+
+private:
+    Error invalid(const std::string& problem) const { return Error::at(ErrorCode::InvalidArgument, m_source, {}, problem); }
+    Error cancelled() const { return Error::at(ErrorCode::Cancelled, m_source, {}, "unrolling cancelled"); }
+    Status checkOptions() const;
+    /** Pass 1: the band, the azimuth histogram, the v range. False when cancelled. */
+    bool gatherStats(PointStats& stats, std::uint64_t& offSurface);
+    /** The default pixel size when the cloud states none (UnrollSpacing). */
+    Result<double> estimateSpacing(const PointStats& stats);
+
+    const cloud::PointCloud& m_cloud;
+    const Surface& m_surface;
+    const UnrollOptions& m_options;
+    ProgressSink* m_progress;
+    std::string m_source;
+    unsigned m_threads;
+    Eigen::Vector3d m_e1;
+    UnrollMap m_probe; ///< cut 0, for the azimuths from e1 and (v, h), which do not depend on the cut
+    double m_band = 0.0;
+};
+
+Status Unroller::checkOptions() const
+{
+    const UnrollOptions& o = m_options;
+    if (o.cutAngle && !std::isfinite(*o.cutAngle)) return invalid("the cut angle must be a finite number of radians");
+    if (o.pixelSize && !(std::isfinite(*o.pixelSize) && *o.pixelSize > 0.0))
+        return invalid("the pixel size must be a positive number of metres, got " + format("%g", *o.pixelSize));
+    if (o.band && !(std::isfinite(*o.band) && *o.band > 0.0))
+        return invalid("the band must be a positive number of metres, got " + format("%g", *o.band));
+    if (o.depthTolerance && !(std::isfinite(*o.depthTolerance) && *o.depthTolerance >= 0.0))
+        return invalid("the depth tolerance must be a number of metres ≥ 0, got " + format("%g", *o.depthTolerance));
+    if (o.fillHoles && (o.holes.maxArea == 0 || o.holes.maxDepth < 0))
+        return invalid("hole filling needs a largest area ≥ 1 pixel and a depth ≥ 0");
+    return {};
+}
+
+bool Unroller::gatherStats(PointStats& stats, std::uint64_t& offSurface)
+{
+    std::vector<PointStats> perWorker(m_threads);
+    const detail::UnrollAzimuth azimuth(m_probe);
+    const detail::UnrollSample sample(detail::kAzimuthSamples, m_cloud.size());
+    detail::UnrollStageProgress stage(m_progress, 0.0, 0.3);
+    const bool done = detail::parallelPoints(m_cloud.size(), m_threads, &stage,
+                                             [&](std::size_t begin, std::size_t end, unsigned worker) {
+        PointStats& mine = perWorker[worker];
+        for (std::size_t i = begin; i < end; ++i) {
+            const auto point = detail::keptPoint(m_probe, m_cloud, i, m_band);
+            if (!point) continue;
+            if (sample.taken(i)) ++mine.azimuths[detail::azimuthBin(azimuth.approxAngle(point->x, point->y))];
+            mine.vMin = std::min(mine.vMin, point->v);
+            mine.vMax = std::max(mine.vMax, point->v);
+            ++mine.kept;
+        }
+    });
+    if (!done) return false;
+    for (const PointStats& w : perWorker) stats.merge(w);
+    offSurface = m_cloud.size() - stats.kept;
+    return true;
+}
+
+Result<double> Unroller::estimateSpacing(const PointStats& stats)
+{
+    const detail::UnrollSpacing plan(m_probe.circumference(), stats.vMin, stats.vMax, stats.kept);
+    auto tooFew = [&] {
+        return invalid("cannot estimate the sampling spacing from " + std::to_string(stats.kept)
+                       + " points on the surface: give a pixel size");
+    };
+    if (!plan.possible()) return tooFew();
+    std::vector<std::vector<std::uint32_t>> counts(m_threads);
+    const detail::UnrollAzimuth azimuth(m_probe);
+    const double radius = m_surface.referenceRadius();
+    detail::UnrollStageProgress stage(m_progress, 0.3, 0.35);
+    const bool done = detail::parallelPoints(m_cloud.size(), m_threads, &stage,
+                                             [&](std::size_t begin, std::size_t end, unsigned worker) {
+        auto& mine = counts[worker];
+        if (mine.empty()) mine.assign(plan.cellCount(), 0);
+        for (std::size_t i = begin; i < end; ++i) {
+            if (!plan.sampled(i)) continue;
+            const auto point = detail::keptPoint(m_probe, m_cloud, i, m_band);
+            if (!point) continue;
+            const std::size_t cell = plan.cellOf(radius * azimuth.approxAngle(point->x, point->y), point->v);
+            if (cell < mine.size()) ++mine[cell];
+        }
+    });
+    if (!done) return cancelled();
+    std::vector<std::uint32_t> total(plan.cellCount(), 0);
+    for (const auto& mine : counts)
+        for (std::size_t k = 0; k < mine.size(); ++k) total[k] += mine[k];
+    const auto spacing = plan.estimate(total);
+    if (!spacing) return tooFew();
+    return *spacing;
+}
+
+Result<Unrolled> Unroller::run()
+{
+    const auto start = std::chrono::steady_clock::now();
+    if (auto s = checkOptions(); !s) return s.error();
+    if (m_cloud.empty()) return invalid("the cloud has no points to unroll");
+    const double radius = m_surface.referenceRadius();
+    m_band = m_options.band.value_or(kDefaultBand * radius);
+
+    PointStats stats;
+    std::uint64_t offSurface = 0;
+    if (!gatherStats(stats, offSurface)) return cancelled();
+    if (stats.kept == 0)
+        return invalid("none of the " + std::to_string(m_cloud.size()) + " points lies within "
+                       + format("%.4g", m_band * 1000.0) + " mm of the " + surfaceKindName(m_surface.kind())
+                       + " (radius " + format("%.4g", radius) + " m): is it the right surface?");
+
+    double cut = m_options.cutAngle ? *m_options.cutAngle - kTwoPi * std::floor(*m_options.cutAngle / kTwoPi)
+                                    : detail::chooseCutAngle(stats.azimuths);
+    if (!(cut < kTwoPi) || cut < 0.0) cut = 0.0;
+
+    double pixel = 0.0;
+    if (m_options.pixelSize) {
+        pixel = *m_options.pixelSize;
+    } else if (m_cloud.spacing > 0.0 && std::isfinite(m_cloud.spacing)) {
+        pixel = m_cloud.spacing;
+    } else {
+        auto estimated = estimateSpacing(stats);
+        if (!estimated) return estimated.error();
+        pixel = *estimated;
+    }
+
+    const double vTop = pixel * std::ceil(stats.vMax / pixel);
+    const double width = std::ceil(m_probe.circumference() / pixel);
+    const double height = std::floor((vTop - stats.vMin) / pixel) + 1.0;
+    const double limit = shading::HeightField::kMaxSide;
+    if (!(width <= limit) || !(height <= limit))
+        return invalid("the développée would be " + format("%.0f", width) + " × " + format("%.0f", height)
+                       + " pixels (pixel size " + format("%.4g", pixel * 1000.0) + " mm); the limit is "
+                       + std::to_string(shading::HeightField::kMaxSide) + " a side: give a larger --pixel-size");
+    UnrollMap map(m_surface, m_e1, cut, pixel, int(width), int(height), vTop);
+    const double tolerance = m_options.depthTolerance.value_or(kDefaultTolerance * pixel);
+    detail::UnrollRaster raster(m_cloud, map, m_band, tolerance, m_threads);
+    Result<shading::HeightField> field = shading::HeightField{};
+    try {
+        field = shading::HeightField::create(int(width), int(height), pixel);
+        if (!field) return invalid(field.error().message);
+        detail::UnrollStageProgress rasterStage(m_progress, 0.35, 0.9);
+        if (!raster.run(*field, &rasterStage)) return cancelled();
+    } catch (const std::bad_alloc&) {
+        return Error::at(ErrorCode::OutOfBudget, m_source, {},
+                         "not enough memory for a développée of " + format("%.0f", width) + " × "
+                             + format("%.0f", height) + " pixels (21 bytes a pixel while unrolling)");
+    }
+
+    UnrollReport report;
+    if (m_options.fillHoles) {
+        detail::UnrollStageProgress fillStage(m_progress, 0.9, 1.0);
+        auto filled = shading::fillHoles(*field, m_options.holes, &fillStage);
+        if (!filled) {
+            if (filled.error().code == ErrorCode::Cancelled) return cancelled();
+            return invalid(filled.error().message);
+        }
+    }
+    if (m_progress && m_progress->isCancelRequested()) return cancelled();
+    const double measured = double(field->count(shading::PixelState::Measured));
+    const double filledPixels = double(field->count(shading::PixelState::Filled));
+    report.points = m_cloud.size();
+    report.pointsUsed = stats.kept;
+    report.pointsOffSurface = offSurface;
+    report.pointsHidden = stats.kept - raster.pointsAveraged();
+    report.cutAngle = cut;
+    report.pixelSize = pixel;
+    report.band = m_band;
+    report.depthTolerance = tolerance;
+    report.filledFraction = measured + filledPixels > 0.0 ? filledPixels / (measured + filledPixels) : 0.0;
+    if (m_progress) m_progress->update(1.0);
+    report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return Unrolled{std::move(*field), std::move(map), report};
+}
+
+} // namespace
+
+Result<Unrolled> unrollCloud(const cloud::PointCloud& cloud, const Surface& surface, const UnrollOptions& options,
+                             ProgressSink* progress)
+{
+    return Unroller(cloud, surface, options, progress).run();
+}
+
+} // namespace stylos::core::unroll
