@@ -1,28 +1,17 @@
 #include "stylos/core/shading/HeightShading.h"
 
+#include "NearestRank.h"
+
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
 
 namespace stylos::core::shading {
-namespace {
-
-bool isFraction(double q) { return q >= 0.0 && q <= 1.0; }
-
-/** The element of 0-based rank floor(q (n − 1) + 0.5) of @p values (reorders them). */
-float nearestRank(std::vector<float>& values, double q)
-{
-    const auto rank = std::size_t(std::floor(q * double(values.size() - 1) + 0.5));
-    std::nth_element(values.begin(), values.begin() + std::ptrdiff_t(rank), values.end());
-    return values[rank];
-}
-
-} // namespace
 
 Result<HeightRange> robustHeightRange(const HeightField& field, double lowPercentile, double highPercentile)
 {
-    if (!isFraction(lowPercentile) || !isFraction(highPercentile) || lowPercentile > highPercentile)
+    if (!detail::validPercentiles(lowPercentile, highPercentile))
         return Error{ErrorCode::InvalidArgument, "height shading: percentiles " + std::to_string(lowPercentile)
                                                      + " and " + std::to_string(highPercentile)
                                                      + " are not 0 <= low <= high <= 1"};
@@ -33,8 +22,8 @@ Result<HeightRange> robustHeightRange(const HeightField& field, double lowPercen
     for (std::size_t i = 0; i < heights.size(); ++i)
         if (states[i] != PixelState::Empty) values.push_back(heights[i]);
     if (values.empty()) return HeightRange{};
-    const float low = nearestRank(values, lowPercentile);
-    const float high = nearestRank(values, highPercentile);
+    const float low = detail::nearestRank(values, lowPercentile);
+    const float high = detail::nearestRank(values, highPercentile);
     return HeightRange{low, high};
 }
 
