@@ -9,5 +9,6 @@ int runInfo(const std::vector<std::string>& args);
 int runGenerate(const std::vector<std::string>& args);
 int runNormals(const std::vector<std::string>& args);
 int runBuild(const std::vector<std::string>& args);
+int runUnroll(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

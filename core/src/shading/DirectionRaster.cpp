@@ -13,7 +13,9 @@ DirectionRaster::DirectionRaster(int width, int height, double azimuth)
     m_majorStep = major > 0.0 ? 1 : -1;
     m_minorSize = m_columnMajor ? height : width;
     const int majorSize = m_columnMajor ? width : height;
-    const double slope = minor / major;
+    // Rounded to a multiple of 2^-32 so that a and a + π (whose sines and cosines differ by rounding)
+    // give the same lines, and so that a · slope is exact for every major index (< 2^15).
+    const double slope = std::round(minor / major * 0x1p32) * 0x1p-32;
     m_offsets.resize(std::size_t(majorSize));
     for (int a = 0; a < majorSize; ++a) m_offsets[std::size_t(a)] = int(std::floor(a * slope + 0.5));
     const int end = majorSize > 0 ? m_offsets.back() : 0; // offsets run monotonically from 0 to end

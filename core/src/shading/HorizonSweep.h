@@ -1,114 +1,108 @@
 #pragma once
-// Internal to the skydome: the linear-time horizon of every pixel of a band of rasterised lines.
-#include "stylos/core/shading/DirectionRaster.h"
-#include "stylos/core/shading/HeightField.h"
-
-#include <algorithm>
-#include <cstddef>
-#include <limits>
+// Internal to the skydome: the linear-time horizon of every pixel of 16 rasterised lines walked together.
+#include <cstdint>
 #include <vector>
 
 namespace stylos::core::shading::detail {
 
-/**
- * A vertex of the upper convex hull of a profile: position t along the walk and height h (metres),
- * and the slope dh/dt of the hull edge that arrives at it from the vertex below it on the stack.
- */
-struct HullPoint {
-    double t;
-    double h;
-    double slope;
-};
-
-/** Lines swept together: the pixels of one step of a band are neighbours in memory. */
-constexpr int kBandLines = 64;
-
-/** Scratch of one worker: kBandLines interleaved hull stacks (level k of line j at k·kBandLines + j). */
-struct BandScratch {
-    std::vector<HullPoint> stacks;
-    int tops[kBandLines] = {};
-    /** Room for the sentinel (level 0) and a whole line. */
-    explicit BandScratch(int longestLine) : stacks(std::size_t(longestLine + 2) * kBandLines, HullPoint{0.0, 0.0, 0.0}) {}
-};
+/** Lines walked together by one kernel call (one AVX-512 register of floats). */
+constexpr int kGroupLanes = 16;
 
 /**
- * @brief Walks lines [firstLine, firstLine + count) (count ≤ kBandLines) of @p raster and calls
- *        sink(element index, rise, run) for every non-empty pixel p, where rise / run is the largest
- *        slope (h_q − h_p) / dist(p, q) over the pixels q of p's profile (DirectionRaster.h), rise in
- *        metres and run > 0 in metres; (0, 1) when the profile has no non-empty pixel. Empty pixels are
- *        skipped: they neither get a value nor occlude.
- *
- * Each line is walked against the direction, so a pixel comes after its whole profile; its stack keeps
- * the upper convex hull of the points visited (t increasing along the walk, so dist(p, q) = t_p − t_q).
- * The highest slope from p to the hull is at the tangent vertex; the vertices above it on the stack
- * (nearer p) lie under the segment from p to the tangent and leave the hull when p joins it, so one
- * pop loop both finds the tangent and restores convexity: amortised O(1) per pixel. A vertex v leaves
- * when p is on or above the line of v's incoming edge, h_p ≥ h_v + slope_v (t_p − t_v): one vertex read
- * per test, and the new vertex's slope is the horizon slope just computed. Decisions between nearly
- * collinear vertices may differ from exact arithmetic by rounding, so may the horizon (by ~1e-16
- * relative). A branch-free variant (two unconditional pops, then a loop) measured 40–50 % slower:
- * speculation past the well-predicted part of the loop beats a longer dependency chain.
- *
- * The band's lines advance together one major index at a time: the pixels of a step are consecutive
- * along the minor axis (contiguous in memory for row-major lines, one row apart otherwise), so a band
- * touches a few cache lines and pages per step instead of one per pixel when a single line crosses
- * the image diagonally.
+ * What the kernel computes per pixel p with horizon slope s = rise / run ≥ 0 (0 with no occluder). With
+ * hyp = √(rise² + run²) and inverse = 1 / (hyp · run), one division serves the sine and the slope of
+ * the vertex pushed (num · hyp · inverse): a few float ulps from the exact quotients.
  */
-template <typename Sink>
-void sweepBand(const DirectionRaster& raster, int firstLine, int count, const float* heights,
-               const PixelState* states, int width, double pixelSize, BandScratch& scratch, Sink&& sink)
-{
-    const bool columnMajor = raster.columnMajor();
-    // t = −along · pixelSize grows along the walk (which runs against the direction).
-    const double tMajor = -(columnMajor ? raster.columnStep() : raster.rowStep()) * pixelSize;
-    const double tMinor = -(columnMajor ? raster.rowStep() : raster.columnStep()) * pixelSize;
-    const auto [f0, l0] = raster.lineSpan(firstLine);
-    const auto [f1, l1] = raster.lineSpan(firstLine + count - 1);
-    const int first = std::min(f0, f1), last = std::max(l0, l1);
-    const int i0 = raster.intercept(firstLine), minorLast = raster.minorSize() - 1;
-    // Level 0 of every stack is a sentinel: before every point of the grid, so low that no slope
-    // toward it is ever positive, and with an infinite incoming slope so that it is never popped.
-    HullPoint* stacks = scratch.stacks.data();
-    int* tops = scratch.tops;
-    const double extent = (double(raster.majorSize()) + raster.minorSize() + 1.0) * pixelSize;
-    for (int j = 0; j < count; ++j) {
-        tops[j] = 0;
-        stacks[j] = HullPoint{-extent - 1.0, -1e30, std::numeric_limits<double>::infinity()};
-    }
+enum class HorizonValue {
+    Sine,  ///< sin θ = s / √(1 + s²), computed as rise · run · inverse
+    Slope, ///< tan θ = s, computed as rise / run (horizonAngles: speed matters less)
+};
 
-    auto step = [&](int a) {
-        const int o = raster.offset(a);
-        const int bLo = std::max(0, i0 + o), bHi = std::min(minorLast, i0 + count - 1 + o);
-        const double ta = a * tMajor;
-        for (int b = bLo; b <= bHi; ++b) {
-            const std::size_t i = columnMajor ? std::size_t(b) * std::size_t(width) + std::size_t(a)
-                                              : std::size_t(a) * std::size_t(width) + std::size_t(b);
-            if (states[i] == PixelState::Empty) continue;
-            const int j = b - i0 - o;
-            HullPoint* stack = stacks + j;
-            const double t = ta + b * tMinor;
-            const double h = heights[i];
-            int top = tops[j];
-            for (;;) {
-                const HullPoint& v = stack[std::size_t(top) * kBandLines];
-                if (h >= v.h + v.slope * (t - v.t))
-                    --top;
-                else
-                    break;
-            }
-            const HullPoint& tangent = stack[std::size_t(top) * kBandLines];
-            const double rise = tangent.h - h, run = t - tangent.t;
-            sink(i, rise, run); // the sentinel gives a rise of about −1e30
-            ++top;
-            stack[std::size_t(top) * kBandLines] = HullPoint{t, h, -rise / run};
-            tops[j] = top;
-        }
-    };
-    if (raster.majorStep() > 0) {
-        for (int a = last - 1; a >= first; --a) step(a);
-    } else {
-        for (int a = first; a < last; ++a) step(a);
+/** Where a walk puts its values. */
+enum class WalkOutput {
+    Values,          ///< write them to values (0 where there is no pixel)
+    SumWithValues,   ///< sum[pixel] += values[step][lane] + value (the two walks of opposite azimuths)
+    Sum,             ///< sum[pixel] += value
+};
+
+/**
+ * One walk of a group of 16 neighbouring lines of a raster, step by step (a step: one major index).
+ *
+ * Pixels. Lane j of step s is the element offsets[s] + j of the source layout (of source, states and
+ * sum), where bit j of inside[s] is set; a walk fromSource reads them there (Empty when states[e] == 0
+ * or, without states, when the height is NaN) and writes the group's heights (NaN = no pixel) to
+ * heights, which any other walk reads instead.
+ *
+ * Positions: a step's key is u · 65536 + s, s the step index and u the number of minor-axis moves
+ * since the first step (both counted along the first step → last step order, so both grow). The
+ * distance between two pixels of a line (metres) is Δs · along + Δu · across, Δs and Δu read from the
+ * difference of their keys: exact integers, so the distance is correct to a few float ulps whatever
+ * the size of the field. Walking in reverse negates the keys, which keeps both differences ≥ 0.
+ */
+struct GroupWalk {
+    const float* source = nullptr;         ///< heights, metres, in the source layout
+    const std::uint8_t* states = nullptr;  ///< PixelState per element, or null (Empty already NaN)
+    const std::int64_t* offsets = nullptr; ///< per step: element of lane 0 (lanes outside may not exist)
+    const std::uint16_t* inside = nullptr; ///< per step: the lanes inside the grid
+    float* heights = nullptr;              ///< steps × 16 (lane fastest)
+    float* values = nullptr;               ///< steps × 16
+    float* sum = nullptr;                  ///< source layout, for WalkOutput::Sum*
+    const std::int32_t* keys = nullptr;    ///< one per step (see above)
+    int steps = 0;
+    bool reverse = false;    ///< walk from the last step to the first (the opposite azimuth)
+    bool fromSource = false; ///< read the pixels from the source (and fill heights) rather than heights
+    WalkOutput output = WalkOutput::Values;
+    HorizonValue value = HorizonValue::Sine;
+    float along = 1.0f;  ///< metres per step
+    float across = 0.0f; ///< metres per minor-axis move
+};
+
+/**
+ * Scratch of one worker. The portable kernel keeps the 16 hull stacks level by level (level k of lane j
+ * at k · 16 + j: heights, slopes, keys); the vector kernel keeps the top of each stack in registers and
+ * the rest as a linked list: links[s · 16 + j] is the step of the vertex under the one pushed at step s
+ * (≥ steps for the sentinel).
+ */
+struct HullStacks {
+    std::vector<float> heights, slopes;
+    std::vector<std::int32_t> keys;
+    std::vector<std::uint16_t> links;
+    /** Room for the sentinel and every step of a walk of up to @p steps. */
+    explicit HullStacks(int steps)
+        : heights(std::size_t(steps + 2) * kGroupLanes), slopes(heights.size()), keys(heights.size()),
+          links(heights.size())
+    {
     }
-}
+};
+
+/**
+ * @brief For every lane of every step that holds a pixel p, the HorizonValue of the largest slope
+ *        (h_q − h_p) / dist(p, q) over the pixels q of the lane that the walk visited before p (0 when
+ *        none is higher than p), delivered as walk.output says.
+ *
+ * Per lane, a stack keeps the upper convex hull of the points visited (distance along the walk,
+ * height). The highest slope from p to the hull is at the tangent vertex; the vertices above it on the
+ * stack (nearer p) lie under the segment from p to the tangent and leave the hull when p joins it, so
+ * one pop loop both finds the tangent and restores convexity: amortised O(1) per pixel. A vertex v
+ * leaves when p is on or above the line of its incoming edge: for the vertex pushed last (the top at
+ * the start of a step) (h_p − h_v) · den_v ≥ num_v · dist(p, v), with num_v / den_v the rise and run of
+ * that edge; for deeper ones h_p − h_v ≥ slope_v · dist(p, v). The sentinel at the bottom (height −∞,
+ * slope NaN) and the first real vertex (slope +∞ or NaN) are never popped.
+ *
+ * Arithmetic: float, with differences of heights and exact integer step counts, so rounding is
+ * relative to the local rise and run (~1e-7), never to the size of the heights or of the field. No
+ * fused multiply-add: every kernel performs the same operations in the same order and returns the same
+ * bits.
+ */
+using GroupKernel = void (*)(const GroupWalk& walk, HullStacks& stacks);
+
+/** Portable kernel: the lanes one after the other at each step. */
+void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks);
+
+/** The best kernel this CPU runs (AVX-512 where available), or the portable one when !simd. */
+GroupKernel groupKernel(bool simd);
+
+/** Name of the kernel groupKernel(simd) returns ("avx512" or "scalar"), for benchmarks and logs. */
+const char* groupKernelName(bool simd);
 
 } // namespace stylos::core::shading::detail

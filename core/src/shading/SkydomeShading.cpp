@@ -1,36 +1,60 @@
 #include "stylos/core/shading/SkydomeShading.h"
 
-#include "HorizonSweep.h"
+#include "HorizonBand.h"
+#include "HorizonSources.h"
 #include "ParallelChunks.h"
 #include "stylos/core/shading/DirectionRaster.h"
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 #include <numbers>
 #include <string>
 
 namespace stylos::core::shading {
 namespace {
 
-/** Runs sweepBand over every line of @p raster with @p threads workers; false when cancelled. */
+using Bands = std::vector<std::unique_ptr<detail::HorizonBand>>;
+
+/**
+ * Walks every band of @p raster: forward (its azimuth) and, when @p both, in reverse (the opposite
+ * azimuth, on the same lines), both walks' values going to @p sum (laid out as the raster's source);
+ * without @p sum, a single forward walk whose values go to sink(band). False when cancelled.
+ */
 template <typename Sink>
-bool sweepDirection(const HeightField& field, const DirectionRaster& raster, unsigned threads,
-                    std::vector<detail::BandScratch>& scratch, ProgressSink* progress, const Sink& sink)
+bool sweepDirection(const detail::HorizonSources& sources, double pixelSize, const DirectionRaster& raster, bool both,
+                    float* sum, detail::HorizonValue value, detail::GroupKernel kernel, unsigned threads, Bands& bands,
+                    ProgressSink* progress, const Sink& sink)
 {
-    const float* heights = field.heights().data();
-    const PixelState* states = field.states().data();
-    const std::size_t bands = (std::size_t(raster.lineCount()) + detail::kBandLines - 1) / detail::kBandLines;
-    return detail::parallelChunks(bands, 1, threads, progress, [&](std::size_t band, std::size_t, unsigned worker) {
-        const int first = int(band) * detail::kBandLines;
-        const int count = std::min(detail::kBandLines, raster.lineCount() - first);
-        detail::sweepBand(raster, first, count, heights, states, field.width(), field.pixelSize(), scratch[worker],
-                          sink);
+    const detail::WalkGeometry geometry(raster, pixelSize);
+    const detail::BandSource source = sources.source(raster);
+    constexpr int lines = detail::HorizonBand::kLines;
+    const std::size_t count = (std::size_t(raster.lineCount()) + lines - 1) / lines;
+    // Chunks of 4 bands: fewer hand-outs; bands stay independent (each pixel is on one line).
+    return detail::parallelChunks(count, 4, threads, progress, [&](std::size_t begin, std::size_t end, unsigned worker) {
+        detail::HorizonBand& band = *bands[worker];
+        for (std::size_t b = begin; b < end; ++b) {
+            const int first = int(b) * lines;
+            band.prepare(raster, geometry, first, std::min(lines, raster.lineCount() - first), source);
+            if (sum == nullptr) {
+                band.walk(kernel, geometry, false, detail::WalkOutput::Values, value, nullptr);
+                sink(band);
+            } else if (both) {
+                band.walk(kernel, geometry, false, detail::WalkOutput::Values, value, nullptr);
+                band.walk(kernel, geometry, true, detail::WalkOutput::SumWithValues, value, sum);
+            } else {
+                band.walk(kernel, geometry, false, detail::WalkOutput::Sum, value, sum);
+            }
+        }
     });
 }
 
-std::vector<detail::BandScratch> makeScratch(const HeightField& field, unsigned threads)
+Bands makeBands(const HeightField& field, unsigned threads)
 {
-    return std::vector<detail::BandScratch>(threads, detail::BandScratch(std::max(field.width(), field.height())));
+    Bands bands;
+    for (unsigned t = 0; t < threads; ++t)
+        bands.push_back(std::make_unique<detail::HorizonBand>(std::max(field.width(), field.height())));
+    return bands;
 }
 
 } // namespace
@@ -43,20 +67,28 @@ Result<ShadedImage> shadeSkydome(const HeightField& field, const SkydomeOptions&
         return Error{ErrorCode::InvalidArgument,
                      "skydome: " + std::to_string(options.directions) + " directions is not in [1, 4096]"};
     const unsigned threads = detail::resolveThreads(options.threads);
-    auto scratch = makeScratch(field, threads);
-    std::vector<float> occlusion(field.pixelCount(), 0.0f); // Σ_k sin θ_k
-    float* sum = occlusion.data();
-    const auto sink = [sum](std::size_t i, double rise, double run) {
-        // sin θ for θ = max(0, atan(rise / run)), branch-free, in float (as the sum).
-        const float r = float(std::max(rise, 0.0)), d = float(run);
-        sum[i] += r / std::sqrt(r * r + d * d);
-    };
-    for (int k = 0; k < options.directions; ++k) {
-        const DirectionRaster raster(field.width(), field.height(), skydomeAzimuth(k, options.directions));
-        if (!sweepDirection(field, raster, threads, scratch, progress, sink))
-            return Error{ErrorCode::Cancelled, "skydome: cancelled"};
-        if (progress) progress->update(double(k + 1) / options.directions);
+    const auto kernel = detail::groupKernel(options.simd);
+    // With D even, direction k and its opposite k + D/2 walk the same lines (one load, two walks).
+    const int D = options.directions;
+    const int walked = D % 2 == 0 ? D / 2 : D;
+    std::vector<DirectionRaster> rasters;
+    bool columnMajor = false;
+    for (int k = 0; k < walked; ++k) {
+        rasters.emplace_back(field.width(), field.height(), skydomeAzimuth(k, D));
+        columnMajor = columnMajor || rasters.back().columnMajor();
     }
+    const detail::HorizonSources sources(field, columnMajor, threads);
+    auto bands = makeBands(field, threads);
+    // Σ_k sin θ_k, row-major for the row-major rasters, transposed for the column-major ones.
+    std::vector<float> occlusion(field.pixelCount(), 0.0f), transposed(columnMajor ? field.pixelCount() : 0, 0.0f);
+    for (int k = 0; k < walked; ++k) {
+        float* sum = rasters[std::size_t(k)].columnMajor() ? transposed.data() : occlusion.data();
+        if (!sweepDirection(sources, field.pixelSize(), rasters[std::size_t(k)], walked < D, sum,
+                            detail::HorizonValue::Sine, kernel, threads, bands, progress, [](const auto&) {}))
+            return Error{ErrorCode::Cancelled, "skydome: cancelled"};
+        if (progress) progress->update(double(k + 1) / walked);
+    }
+    if (columnMajor) detail::addTransposed(occlusion.data(), transposed.data(), field.width(), field.height(), threads);
 
     ShadedImage image{field.width(), field.height(), field.pixelSize(), std::move(occlusion), {}};
     image.coverage.assign(field.pixelCount(), 0);
@@ -76,14 +108,21 @@ Result<std::vector<float>> horizonAngles(const HeightField& field, double azimut
     if (!std::isfinite(azimuth))
         return Error{ErrorCode::InvalidArgument, "skydome: the azimuth is not a finite number"};
     threads = detail::resolveThreads(threads);
-    auto scratch = makeScratch(field, threads);
+    const DirectionRaster raster(field.width(), field.height(), azimuth);
+    const detail::HorizonSources sources(field, raster.columnMajor(), threads);
+    auto bands = makeBands(field, threads);
     std::vector<float> angles(field.pixelCount(), 0.0f);
     float* out = angles.data();
-    const DirectionRaster raster(field.width(), field.height(), azimuth);
-    const auto sink = [out](std::size_t i, double rise, double run) {
-        out[i] = float(std::atan2(std::max(rise, 0.0), run));
+    const std::size_t width = std::size_t(field.width()), height = std::size_t(field.height());
+    const bool columnMajor = raster.columnMajor();
+    const auto sink = [&](const detail::HorizonBand& band) {
+        band.forEachValue([&](std::size_t e, float slope) {
+            const std::size_t i = columnMajor ? (e % height) * width + e / height : e; // e is transposed
+            out[i] = float(std::atan(double(slope)));
+        });
     };
-    if (!sweepDirection(field, raster, threads, scratch, progress, sink))
+    if (!sweepDirection(sources, field.pixelSize(), raster, false, nullptr, detail::HorizonValue::Slope,
+                        detail::groupKernel(true), threads, bands, progress, sink))
         return Error{ErrorCode::Cancelled, "skydome: cancelled"};
     if (progress) progress->update(1.0);
     return angles;

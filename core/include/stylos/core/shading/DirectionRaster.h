@@ -8,6 +8,8 @@
  * |sin a| ≥ |cos a|); with m = d_minor / d_major ∈ [−1, 1], pixel (major index A, minor index B) lies
  * on line B − floor(A · m + 0.5): each line advances one pixel along the major axis per step and 0 or
  * 1 along the minor one (a Bresenham line; the lines are translates of each other along the minor axis).
+ * m is rounded to a multiple of 2^-32, so azimuths a and a + π give the same lines (walked in opposite
+ * orders) even though their sines and cosines differ in the last bits.
  *
  * Distance along a line: pixels are placed by the projection of their centre on d,
  * along(c, r) = c · d_c + r · d_r (pixels); it grows strictly (by at least 1/√2 per step) toward d, and

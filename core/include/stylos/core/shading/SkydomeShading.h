@@ -47,6 +47,7 @@ namespace stylos::core::shading {
 struct SkydomeOptions {
     int directions = 40; ///< D, number of azimuths evenly spaced from 0 (up), in [1, 4096]
     unsigned threads = 0; ///< worker threads, the caller's included; 0 = hardware threads
+    bool simd = true;     ///< use the AVX-512 kernel where the CPU has one (same bits as the portable one)
 };
 
 /** @brief Azimuth of direction @p k of @p directions, radians: 2πk / D. */

@@ -1,0 +1,224 @@
+// stylos-cli unroll IN -o OUT.png|tif|exr [--surface cylinder|cone|revolution] [--axis PX,PY,PZ,DX,DY,DZ]
+//                    [--shading height|light|skydome] [--directions D] [--pixel-size M] [--cut-angle DEG]
+//                    [--heights OUT.tif|exr] [--bits 8|16] [--threads N] [--json]
+#include "CommandLine.h"
+#include "Commands.h"
+#include "ConsoleProgress.h"
+#include "UnrollShading.h"
+
+#include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/image/ImageWriter.h"
+#include "stylos/core/unroll/SurfaceFit.h"
+#include "stylos/core/unroll/Unroller.h"
+
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <numbers>
+#include <sstream>
+
+namespace stylos::cli {
+
+namespace {
+
+namespace unroll = core::unroll;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/** "PX,PY,PZ,DX,DY,DZ" → an axis with a unit direction; false with @p problem set otherwise. */
+bool parseAxis(const std::string& text, unroll::Axis& axis, std::string& problem)
+{
+    std::vector<double> values;
+    std::stringstream in(text);
+    std::string item;
+    while (std::getline(in, item, ',')) {
+        char* end = nullptr;
+        const double v = std::strtod(item.c_str(), &end);
+        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v)) {
+            problem = "--axis: \"" + item + "\" is not a number";
+            return false;
+        }
+        values.push_back(v);
+    }
+    if (values.size() != 6) {
+        problem = "--axis needs six numbers PX,PY,PZ,DX,DY,DZ, got " + std::to_string(values.size());
+        return false;
+    }
+    axis.point = {values[0], values[1], values[2]};
+    axis.direction = {values[3], values[4], values[5]};
+    if (axis.direction.norm() < 1e-12) {
+        problem = "--axis: the direction is a zero vector";
+        return false;
+    }
+    axis.direction.normalize();
+    return true;
+}
+
+struct UnrollRequest {
+    unroll::FitOptions fit;
+    unroll::UnrollOptions unroll;
+    ShadingRequest shading;
+    std::string input, output, heights;
+    std::optional<core::image::SampleFormat> bits;
+    bool json = false;
+};
+
+/** Reads the command line into @p r; false (with @p problem set) on a usage error. */
+bool parseRequest(CommandLine& cl, UnrollRequest& r, std::string& problem)
+{
+    if (cl.positionals().size() != 1) return problem = "unroll takes exactly one input file", false;
+    r.input = cl.positionals()[0];
+    r.output = cl.value("output").value_or("");
+    if (r.output.empty()) return problem = "unroll needs -o OUT.png|tif|exr", false;
+    r.heights = cl.value("heights").value_or("");
+    r.json = cl.flag("json");
+    const auto kind = unroll::surfaceKindFromName(cl.value("surface").value_or("cylinder"));
+    if (!kind) return problem = "unknown surface \"" + *cl.value("surface") + "\" (cylinder, cone or revolution)", false;
+    r.fit.kind = *kind;
+    if (const auto axis = cl.value("axis")) {
+        unroll::Axis a;
+        if (!parseAxis(*axis, a, problem)) return false;
+        r.fit.axis = a;
+    }
+    double pixel = 0, cut = 0;
+    long long threads = 0, bits = 0;
+    if (!cl.number("pixel-size", pixel) || !cl.number("cut-angle", cut) || !cl.integer("threads", threads) ||
+        !cl.integer("bits", bits))
+        return problem = cl.error(), false;
+    if (cl.value("pixel-size")) {
+        if (!(pixel > 0)) return problem = "--pixel-size must be a positive length in metres", false;
+        r.unroll.pixelSize = pixel;
+    }
+    if (cl.value("cut-angle")) r.unroll.cutAngle = cut * std::numbers::pi / 180.0;
+    if (threads < 0 || threads > 1024) return problem = "--threads must be between 0 and 1024", false;
+    r.fit.threads = r.unroll.threads = static_cast<unsigned>(threads);
+    if (cl.value("bits")) {
+        if (bits != 8 && bits != 16) return problem = "--bits must be 8 or 16", false;
+        r.bits = bits == 8 ? core::image::SampleFormat::UInt8 : core::image::SampleFormat::UInt16;
+    }
+    r.unroll.fillHoles = !cl.flag("no-fill");
+    return parseShading(cl, r.shading, r.fit.threads, problem);
+}
+
+int fail(const core::Error& error)
+{
+    std::cerr << "stylos-cli: " << error.message << "\n";
+    return ExitFailure;
+}
+
+nlohmann::json vectorJson(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+} // namespace
+
+int runUnroll(const std::vector<std::string>& args)
+{
+    CommandLine cl("unroll", "IN -o OUT.png|tif|exr [options]",
+                   {{"output", "OUT", "the développée image: .png (8-bit), .tif (16-bit) or .exr (float)", "o"},
+                    {"surface", "KIND", "cylinder (default), cone or revolution"},
+                    {"axis", "PX,PY,PZ,DX,DY,DZ", "use this axis (metres) and fit only the radius or profile"},
+                    {"shading", "NAME", "skydome (default), light or height"},
+                    {"directions", "D", "skydome azimuths, 1..4096 (default 40)"},
+                    {"raw", "", "skydome: write the exact fraction of the sky, not the 1-99 % contrast stretch"},
+                    {"light-azimuth", "DEG", "light: clockwise from up (default 315, upper left)"},
+                    {"light-elevation", "DEG", "light: above the horizon, 0..90 (default 45)"},
+                    {"pixel-size", "M", "metres per pixel (default: the sampling spacing)"},
+                    {"cut-angle", "DEG", "azimuth of the seam about the axis (default: where there are fewest points)"},
+                    {"heights", "FILE", "also write the raw heights in metres (.tif or .exr, float)"},
+                    {"bits", "N", "8 or 16 bits per sample for PNG and TIFF"},
+                    {"no-fill", "", "leave the small holes empty instead of filling them"},
+                    {"threads", "N", "worker threads (default: all cores)"},
+                    {"json", "", "print one JSON object on stdout"}});
+    if (!cl.parse(args)) return usageError(cl, cl.error());
+    if (cl.helpRequested()) {
+        std::cout << "Unrolls a scan of a drum (or any surface of revolution) into a développée: fits the surface,\n"
+                     "projects every point to (arc length, height along the axis, height off the surface), fills small\n"
+                     "holes and shades the height field. Writes the image and OUT.json, the map between its pixels and 3D.\n"
+                  << cl.usage();
+        return ExitOk;
+    }
+    UnrollRequest r;
+    std::string problem;
+    if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
+    if (auto s = checkImagePaths(r.output, r.heights, r.bits); !s) return usageError(cl, s.error().message);
+
+    const auto start = Clock::now();
+    core::cloud::PointCloud cloud;
+    {
+        ConsoleProgress progress("reading " + r.input);
+        auto loaded = core::cloud::loadPointCloud(r.input, {}, &progress);
+        if (!loaded) return fail(loaded.error());
+        cloud = std::move(loaded).value();
+    }
+    const double loadSeconds = secondsSince(start);
+    ConsoleProgress fitProgress("fitting the surface");
+    auto fit = unroll::fitSurface(cloud, r.fit, &fitProgress);
+    if (!fit) return fail(fit.error());
+    ConsoleProgress unrollProgress("unrolling");
+    auto unrolled = unroll::unrollCloud(cloud, fit->surface, r.unroll, &unrollProgress);
+    if (!unrolled) return fail(unrolled.error());
+    cloud = {}; // the points are no longer needed: give the memory back before shading
+
+    const auto shadingStart = Clock::now();
+    auto shaded = shade(unrolled->field, r.shading);
+    if (!shaded) return fail(shaded.error());
+    const double shadingSeconds = secondsSince(shadingStart);
+
+    core::image::ImageWriteOptions write;
+    write.format = r.bits;
+    write.metadata = {{"stylos:shading", shadingName(r.shading.kind)}, {"stylos:source", r.input}};
+    if (auto s = core::image::writeShadedImage(*shaded, r.output, write); !s) return fail(s.error());
+    if (!r.heights.empty()) {
+        core::image::ImageWriteOptions heights;
+        heights.metadata = {{"stylos:source", r.input}};
+        if (auto s = core::image::writeHeightImage(unrolled->field, r.heights, heights); !s) return fail(s.error());
+    }
+    const std::string sidecar = r.output + ".json";
+    if (auto s = unrolled->map.writeSidecar(sidecar); !s) return fail(s.error());
+    const double seconds = secondsSince(start);
+
+    const unroll::Surface& surface = fit->surface;
+    const unroll::UnrollReport& u = unrolled->report;
+    if (r.json) {
+        nlohmann::json j{{"input", r.input},
+                         {"output", r.output},
+                         {"sidecar", sidecar},
+                         {"surface", unroll::surfaceKindName(surface.kind())},
+                         {"axis_point", vectorJson(surface.axis().point)},
+                         {"axis_dir", vectorJson(surface.axis().direction)},
+                         {"radius", surface.referenceRadius()},
+                         {"width", unrolled->field.width()},
+                         {"height", unrolled->field.height()},
+                         {"pixel_size", u.pixelSize},
+                         {"cut_angle", u.cutAngle * 180.0 / std::numbers::pi},
+                         {"shading", shadingName(r.shading.kind)},
+                         {"directions", r.shading.kind == ShadingKind::Skydome ? r.shading.skydome.directions : 0},
+                         {"filled_fraction", u.filledFraction},
+                         {"points", u.points},
+                         {"points_used", u.pointsUsed},
+                         {"points_off_surface", u.pointsOffSurface},
+                         {"fit_rms", fit->rmsResidual},
+                         {"inlier_fraction", fit->inlierFraction},
+                         {"load_seconds", loadSeconds},
+                         {"fit_seconds", fit->seconds},
+                         {"unroll_seconds", u.seconds},
+                         {"shading_seconds", shadingSeconds},
+                         {"seconds", seconds}};
+        if (surface.kind() == unroll::SurfaceKind::Cone) j["slope"] = surface.slope();
+        std::cout << j.dump() << "\n";
+    } else {
+        std::printf("unrolled %s to %s (%d x %d pixels of %.3f mm): %s, radius %.2f mm, fit RMS %.3f mm, %.1f %% filled\n",
+                    r.input.c_str(), r.output.c_str(), unrolled->field.width(), unrolled->field.height(),
+                    u.pixelSize * 1e3, unroll::surfaceKindName(surface.kind()), surface.referenceRadius() * 1e3,
+                    fit->rmsResidual * 1e3, u.filledFraction * 100.0);
+        std::printf("read %.2f s, fit %.2f s, unroll %.2f s, %s shading %.2f s, total %.2f s; map in %s\n",
+                    loadSeconds, fit->seconds, u.seconds, shadingName(r.shading.kind), shadingSeconds, seconds,
+                    sidecar.c_str());
+    }
+    return ExitOk;
+}
+
+} // namespace stylos::cli

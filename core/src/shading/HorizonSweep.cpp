@@ -1,0 +1,134 @@
+#include "HorizonSweep.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+// Same bits as the vector kernel: no contraction of a · b + c into a fused multiply-add.
+#if defined(__clang__)
+#pragma clang fp contract(off)
+#elif defined(__GNUC__)
+#pragma GCC optimize("fp-contract=off")
+#endif
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define STYLOS_HORIZON_AVX512 1
+#endif
+
+namespace stylos::core::shading::detail {
+
+#if STYLOS_HORIZON_AVX512
+void walkGroupAvx512(const GroupWalk& walk, HullStacks& stacks); // HorizonSweepAvx512.cpp
+#endif
+
+namespace {
+
+/** Metres between two pixels of a lane whose keys differ by @p delta ≥ 0 (HorizonSweep.h). */
+inline float distance(std::int32_t delta, float along, float across)
+{
+    const float steps = float(delta & 0xFFFF), moves = float(delta >> 16);
+    return steps * along + moves * across;
+}
+
+bool cpuHasAvx512()
+{
+#if STYLOS_HORIZON_AVX512
+    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw")
+                            && __builtin_cpu_supports("avx512vl");
+    return has;
+#else
+    return false;
+#endif
+}
+
+} // namespace
+
+void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
+{
+    constexpr int L = kGroupLanes;
+    float* stackH = stacks.heights.data();
+    float* stackS = stacks.slopes.data();
+    std::int32_t* stackK = stacks.keys.data();
+    const int n = walk.steps;
+    if (n <= 0) return;
+    const float none = std::numeric_limits<float>::quiet_NaN();
+    const std::int32_t sentinel = (walk.reverse ? -walk.keys[n - 1] : walk.keys[0]) - 1;
+    // The top of each stack is the pixel pushed last (or the sentinel): it is tested as
+    // (h − h_top) · den ≥ num · run with its rise num and run den, deeper vertices with their slope,
+    // exactly as the vector kernel does.
+    int tops[L];
+    float nums[L], dens[L];
+    for (int j = 0; j < L; ++j) {
+        stackH[j] = -std::numeric_limits<float>::infinity();
+        stackS[j] = none;
+        stackK[j] = sentinel;
+        tops[j] = 0;
+        nums[j] = none;
+        dens[j] = 1.0f;
+    }
+    for (int t = 0; t < n; ++t) {
+        const int s = walk.reverse ? n - 1 - t : t;
+        const std::int32_t key = walk.reverse ? -walk.keys[s] : walk.keys[s];
+        float* heights = walk.heights + std::size_t(s) * L;
+        float* values = walk.values + std::size_t(s) * L;
+        const std::int64_t offset = walk.offsets[s];
+        if (walk.fromSource) {
+            const unsigned inside = walk.inside[s];
+            for (int j = 0; j < L; ++j) {
+                float h = none;
+                const std::int64_t e = offset + j;
+                if ((inside >> j) & 1u && (walk.states == nullptr || walk.states[e] != 0)) h = walk.source[e];
+                heights[j] = h;
+            }
+        }
+        for (int j = 0; j < L; ++j) {
+            const float h = heights[j];
+            if (std::isnan(h)) {
+                if (walk.output == WalkOutput::Values) values[j] = 0.0f;
+                continue;
+            }
+            int c = tops[j];
+            std::size_t v = std::size_t(c) * L + std::size_t(j);
+            float run = distance(key - stackK[v], walk.along, walk.across);
+            bool pop = (h - stackH[v]) * dens[j] >= nums[j] * run;
+            while (pop) {
+                --c;
+                v = std::size_t(c) * L + std::size_t(j);
+                run = distance(key - stackK[v], walk.along, walk.across);
+                pop = h - stackH[v] >= stackS[v] * run;
+            }
+            const float rise = stackH[v] - h;
+            const float up = rise > 0.0f ? rise : 0.0f; // as _mm512_max_ps(rise, 0)
+            const float hyp = std::sqrt(rise * rise + run * run);
+            const float inverse = 1.0f / (hyp * run);
+            const float value = walk.value == HorizonValue::Sine ? up * run * inverse : up / run;
+            switch (walk.output) {
+            case WalkOutput::Values: values[j] = value; break;
+            case WalkOutput::SumWithValues: walk.sum[offset + j] += values[j] + value; break;
+            case WalkOutput::Sum: walk.sum[offset + j] += value; break;
+            }
+            const float num = h - stackH[v];
+            ++c;
+            const std::size_t w = std::size_t(c) * L + std::size_t(j);
+            stackH[w] = h;
+            stackS[w] = num * hyp * inverse;
+            stackK[w] = key;
+            tops[j] = c;
+            nums[j] = num;
+            dens[j] = run;
+        }
+    }
+}
+
+GroupKernel groupKernel(bool simd)
+{
+#if STYLOS_HORIZON_AVX512
+    if (simd && cpuHasAvx512()) return walkGroupAvx512;
+#endif
+    (void)simd;
+    return walkGroupScalar;
+}
+
+const char* groupKernelName(bool simd) { return groupKernel(simd) == walkGroupScalar ? "scalar" : "avx512"; }
+
+} // namespace stylos::core::shading::detail

@@ -1,0 +1,144 @@
+// stylos-cli unroll: a generated drum gives a développée whose JSON, image header and sidecar agree;
+// a given axis is kept; usage errors exit 2; a cloud that is no surface of revolution and an image
+// too large exit 1 naming the problem and leave no file.
+#include "CliRunner.h"
+#include "TestSupport.h"
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+
+using stylos::test::runCli;
+using stylos::test::TempDir;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string generate(const TempDir& dir, const std::string& kind, const std::string& spacing)
+{
+    const auto path = (dir / (kind + ".ply")).string();
+    const auto run = runCli({"generate", kind, "-o", path, "--spacing", spacing, "--seed", "3"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    return path;
+}
+
+/** Width and height from a PNG's IHDR chunk (big-endian at bytes 16 and 20). */
+std::pair<int, int> pngSize(const fs::path& path)
+{
+    const auto bytes = stylos::test::readBytes(path);
+    if (bytes.size() < 24) return {0, 0};
+    auto be32 = [&](std::size_t at) {
+        return int((std::uint8_t(bytes[at]) << 24) | (std::uint8_t(bytes[at + 1]) << 16) |
+                   (std::uint8_t(bytes[at + 2]) << 8) | std::uint8_t(bytes[at + 3]));
+    };
+    return {be32(16), be32(20)};
+}
+
+std::size_t entriesIn(const fs::path& dir) { return static_cast<std::size_t>(std::distance(fs::directory_iterator(dir), {})); }
+
+const std::vector<std::string> kUnrollKeys{"surface", "axis_point", "axis_dir", "radius", "width", "height",
+                                           "pixel_size", "directions", "filled_fraction", "seconds",
+                                           "shading_seconds"};
+
+} // namespace
+
+TEST(CliUnroll, DrumGivesAnImageItsSidecarAndTheJsonContract)
+{
+    TempDir dir;
+    const auto scan = generate(dir, "drum", "0.008");
+    const auto out = (dir / "drum.png").string();
+    const auto run = runCli({"unroll", scan, "-o", out, "--json", "--directions", "16"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    for (const auto& key : kUnrollKeys) EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_EQ(j["surface"], "cylinder");
+    EXPECT_EQ(j["directions"], 16);
+    // The fluted drum's least-squares radius lies between the flute bottoms and the fillets.
+    EXPECT_GT(j["radius"].get<double>(), 0.55 - 0.008);
+    EXPECT_LT(j["radius"].get<double>(), 0.55);
+    const double pixel = j["pixel_size"];
+    EXPECT_EQ(j["width"].get<int>(), int(std::ceil(2 * std::numbers::pi * j["radius"].get<double>() / pixel)));
+    EXPECT_EQ(pngSize(out), std::make_pair(j["width"].get<int>(), j["height"].get<int>()));
+
+    const auto sidecar = nlohmann::json::parse(std::ifstream(out + ".json"));
+    EXPECT_EQ(sidecar["format"], "stylos-unroll");
+    EXPECT_EQ(sidecar["width"], j["width"]);
+    EXPECT_EQ(sidecar["pixel_size"], j["pixel_size"]);
+    EXPECT_EQ(sidecar["surface"]["axis_dir"], j["axis_dir"]);
+}
+
+TEST(CliUnroll, GivenAxisIsKeptAndHeightsAreWritten)
+{
+    TempDir dir;
+    const auto scan = generate(dir, "drum", "0.01");
+    const auto truth = nlohmann::json::parse(std::ifstream(dir / "drum.truth.json"));
+    const auto& p = truth["axis"]["point"];
+    const auto& d = truth["axis"]["direction"];
+    std::string axis;
+    for (const auto& v : {p[0], p[1], p[2], d[0], d[1], d[2]}) axis += (axis.empty() ? "" : ",") + v.dump();
+    const auto out = (dir / "d.tif").string(), heights = (dir / "d.exr").string();
+    const auto run = runCli({"unroll", scan, "-o", out, "--axis", axis, "--shading", "light", "--heights", heights,
+                             "--pixel-size", "0.01", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(j["axis_dir"][i].get<double>(), d[i].get<double>(), 1e-12);
+    EXPECT_EQ(j["pixel_size"], 0.01);
+    EXPECT_EQ(j["directions"], 0);
+    EXPECT_TRUE(fs::exists(out));
+    EXPECT_TRUE(fs::exists(heights));
+}
+
+TEST(CliUnroll, UsageErrorsExitTwo)
+{
+    TempDir dir;
+    const auto scan = generate(dir, "drum", "0.03");
+    const auto out = (dir / "x.png").string();
+    const std::vector<std::vector<std::string>> bad{
+        {"unroll", scan},
+        {"unroll", "-o", out},
+        {"unroll", scan, "-o", (dir / "x.jpg").string()},
+        {"unroll", scan, "-o", out, "--surface", "sphere"},
+        {"unroll", scan, "-o", out, "--axis", "0,0,0,0,0"},
+        {"unroll", scan, "-o", out, "--axis", "0,0,0,0,0,0"},
+        {"unroll", scan, "-o", out, "--shading", "hillshade"},
+        {"unroll", scan, "-o", out, "--directions", "0"},
+        {"unroll", scan, "-o", out, "--shading", "height", "--directions", "8"},
+        {"unroll", scan, "-o", out, "--pixel-size", "-1"},
+        {"unroll", scan, "-o", (dir / "x.exr").string(), "--bits", "16"},
+        {"unroll", scan, "-o", out, "--heights", (dir / "h.png").string()},
+    };
+    for (const auto& args : bad) {
+        const auto run = runCli(args);
+        EXPECT_EQ(run.exitCode, 2) << args.back() << ": " << run.err;
+        EXPECT_NE(run.err.find("stylos-cli unroll"), std::string::npos) << run.err;
+    }
+    EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
+}
+
+TEST(CliUnroll, NotASurfaceOfRevolutionAndTooLargeImagesFailAndWriteNothing)
+{
+    TempDir dir;
+    // A flat square of points: no cylinder fits it.
+    std::string text;
+    for (int i = 0; i < 60; ++i)
+        for (int k = 0; k < 60; ++k) text += std::to_string(i * 0.01) + " " + std::to_string(k * 0.01) + " 0\n";
+    stylos::test::writeText(dir / "plane.xyz", text);
+    const auto plane = runCli({"unroll", (dir / "plane.xyz").string(), "-o", (dir / "plane.png").string()});
+    EXPECT_EQ(plane.exitCode, 1) << plane.err;
+    EXPECT_NE(plane.err.find("plane.xyz"), std::string::npos) << plane.err;
+    EXPECT_NE(plane.err.find("residual"), std::string::npos) << plane.err;
+    EXPECT_FALSE(fs::exists(dir / "plane.png"));
+
+    const auto scan = generate(dir, "drum", "0.03");
+    const auto huge = runCli({"unroll", scan, "-o", (dir / "huge.png").string(), "--pixel-size", "0.00005"});
+    EXPECT_EQ(huge.exitCode, 1) << huge.err;
+    EXPECT_NE(huge.err.find("32768"), std::string::npos) << huge.err;
+    EXPECT_FALSE(fs::exists(dir / "huge.png"));
+    EXPECT_FALSE(fs::exists(dir / "huge.png.json"));
+    const auto missing = runCli({"unroll", (dir / "nothing.ply").string(), "-o", (dir / "n.png").string()});
+    EXPECT_EQ(missing.exitCode, 1);
+    EXPECT_NE(missing.err.find("nothing.ply"), std::string::npos) << missing.err;
+}
