@@ -142,3 +142,19 @@ TEST(CliUnroll, NotASurfaceOfRevolutionAndTooLargeImagesFailAndWriteNothing)
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.err.find("nothing.ply"), std::string::npos) << missing.err;
 }
+
+TEST(CliUnroll, PoctInputUsesTheLeafEdgeAsPixelSize)
+{
+    TempDir dir;
+    const auto scan = generate(dir, "drum", "0.01");
+    const auto poct = (dir / "drum.poct").string();
+    const auto build = runCli({"build", scan, "-o", poct, "--depth", "8", "--json"});
+    ASSERT_EQ(build.exitCode, 0) << build.err;
+    const auto info = nlohmann::json::parse(runCli({"info", poct, "--json"}).out);
+    const auto run = runCli({"unroll", poct, "-o", (dir / "d.png").string(), "--shading", "height", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["points"], nlohmann::json::parse(build.out)["leaves"]);
+    // The root cube's edge over 2^8: the leaf edge.
+    EXPECT_DOUBLE_EQ(j["pixel_size"].get<double>(), info["root_box"]["size"].get<double>() / 256.0);
+}
