@@ -66,8 +66,8 @@ double cavityDepth(double theta, double z)
 
 struct Drum {
     cloud::PointCloud cloud;
-    unroll::Axis axis;           ///< the true axis, world
-    double lateralMean = 0.0;    ///< mean distance from the true axis of the intact lateral points
+    unroll::Axis axis;        ///< the true axis, world
+    double lateralMean = 0.0; ///< mean distance from the true axis of the intact lateral points
     std::uint64_t lateral = 0;
 };
 
@@ -110,7 +110,8 @@ Drum makeDrum(const Settings& s)
             // Clutter: a share of the points anywhere in the drum's box (a fixed pattern of indices).
             const bool clutter = double((index * 0x9E3779B97F4A7C15ull) >> 11) * 0x1p-53 < s.outliers;
             if (clutter) {
-                p = Eigen::Vector3d(random.uniform(-box, box), random.uniform(-box, box), random.uniform(-0.1, kHeight + 0.1));
+                p = Eigen::Vector3d(random.uniform(-box, box), random.uniform(-box, box),
+                                    random.uniform(-0.1, kHeight + 0.1));
             } else if (std::abs(n.z()) < 0.5) { // the lateral surface (the beds' normals are ±z)
                 const double theta = std::atan2(p.y(), p.x());
                 const double depth = cavityDepth(theta, p.z());
@@ -123,7 +124,8 @@ Drum makeDrum(const Settings& s)
                 }
             }
             const Eigen::Vector3d local = pose.linear() * p + shift;
-            drum.cloud.positions.insert(drum.cloud.positions.end(), {float(local.x()), float(local.y()), float(local.z())});
+            drum.cloud.positions.insert(drum.cloud.positions.end(),
+                                        {float(local.x()), float(local.y()), float(local.z())});
             if (s.normals) {
                 const Eigen::Vector3f m = rotation * n;
                 drum.cloud.normals.insert(drum.cloud.normals.end(), {m.x(), m.y(), m.z()});
@@ -157,14 +159,22 @@ int main(int argc, char** argv)
             command.append(" ").append(argv[i + 1]);
             return argv[++i];
         };
-        if (a == "--points") s.points = std::stoull(next());
-        else if (a == "--threads") s.threads = unsigned(std::stoul(next()));
-        else if (a == "--grooves") s.grooves = std::stoi(next());
-        else if (a == "--noise") s.noise = std::stod(next());
-        else if (a == "--outliers") s.outliers = std::stod(next());
-        else if (a == "--normals") s.normals = true;
-        else if (a == "--repeat") s.repeat = std::max(1, std::stoi(next()));
-        else if (a == "--seed") s.seed = std::stoull(next());
+        if (a == "--points")
+            s.points = std::stoull(next());
+        else if (a == "--threads")
+            s.threads = unsigned(std::stoul(next()));
+        else if (a == "--grooves")
+            s.grooves = std::stoi(next());
+        else if (a == "--noise")
+            s.noise = std::stod(next());
+        else if (a == "--outliers")
+            s.outliers = std::stod(next());
+        else if (a == "--normals")
+            s.normals = true;
+        else if (a == "--repeat")
+            s.repeat = std::max(1, std::stoi(next()));
+        else if (a == "--seed")
+            s.seed = std::stoull(next());
         else if (a == "--kind") {
             const auto kind = unroll::surfaceKindFromName(next());
             if (!kind) {
@@ -173,8 +183,10 @@ int main(int argc, char** argv)
             }
             s.kind = *kind;
         } else {
-            std::fprintf(stderr, "usage: %s [--points N] [--threads T] [--grooves G] [--noise M] [--outliers SHARE] "
-                                 "[--kind cylinder|cone|revolution] [--normals] [--repeat R] [--seed S]\n", argv[0]);
+            std::fprintf(stderr,
+                         "usage: %s [--points N] [--threads T] [--grooves G] [--noise M] [--outliers SHARE] "
+                         "[--kind cylinder|cone|revolution] [--normals] [--repeat R] [--seed S]\n",
+                         argv[0]);
             return 2;
         }
     }
@@ -205,7 +217,8 @@ int main(int argc, char** argv)
     getloadavg(load, 3);
     const unroll::Surface& f = report.surface;
     const double angle = std::atan2(f.axis().direction.cross(drum.axis.direction).norm(),
-                                    std::abs(f.axis().direction.dot(drum.axis.direction))) * 180.0 / std::numbers::pi;
+                                    std::abs(f.axis().direction.dot(drum.axis.direction))) *
+                         180.0 / std::numbers::pi;
     const double distance = std::max(distanceToLine(f.axis().point, drum.axis),
                                      distanceToLine(f.axis().point + kHeight * f.axis().direction, drum.axis));
     const double best = *std::min_element(times.begin(), times.end());
@@ -216,8 +229,8 @@ int main(int argc, char** argv)
                  "RMS residual %.3f mm, inliers %.1f %%, %d iterations (load average after: %.2f %.2f %.2f)\n",
                  unroll::surfaceKindName(s.kind), s.threads, best, double(drum.cloud.size()) / best * 1e-6, angle,
                  distance * 1e3, f.referenceRadius(), (f.referenceRadius() - drum.lateralMean) * 1e3, drum.lateralMean,
-                 (f.referenceRadius() - kRadius) * 1e3, kRadius, report.rmsResidual * 1e3, report.inlierFraction * 100.0,
-                 report.iterations, load[0], load[1], load[2]);
+                 (f.referenceRadius() - kRadius) * 1e3, kRadius, report.rmsResidual * 1e3,
+                 report.inlierFraction * 100.0, report.iterations, load[0], load[1], load[2]);
     json out{{"command", command},
              {"points", drum.cloud.size()},
              {"threads", s.threads},

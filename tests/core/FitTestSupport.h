@@ -65,7 +65,8 @@ inline core::synth::SyntheticOptions allRound(double spacing, std::uint64_t seed
 inline Eigen::Affine3d affineOf(const nlohmann::json& rowMajor)
 {
     Eigen::Matrix4d m;
-    for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = rowMajor[std::size_t(i)].get<double>();
+    for (int i = 0; i < 16; ++i)
+        m(i / 4, i % 4) = rowMajor[std::size_t(i)].get<double>();
     return Eigen::Affine3d(m);
 }
 
@@ -73,7 +74,8 @@ inline Eigen::Affine3d affineOf(const nlohmann::json& rowMajor)
  *  @p station placed it, registration error included; station −1: the nominal pose. */
 inline core::unroll::Axis trueAxis(const nlohmann::json& truth, int station = -1)
 {
-    const Eigen::Affine3d a = station < 0 ? affineOf(truth["pose"]) : affineOf(truth["stations"][std::size_t(station)]["toOutput"]);
+    const Eigen::Affine3d a =
+        station < 0 ? affineOf(truth["pose"]) : affineOf(truth["stations"][std::size_t(station)]["toOutput"]);
     core::unroll::Axis axis;
     axis.point = a * Eigen::Vector3d::Zero();
     axis.direction = (a.linear() * Eigen::Vector3d::UnitZ()).normalized();
@@ -101,15 +103,16 @@ inline double axisDistance(const core::unroll::Axis& fitted, const core::unroll:
                     distanceToLine(fitted.point + length * fitted.direction, truth));
 }
 
-/** A truncated cone (a cylinder when the radii are equal) with both bed discs, in a random pose at museum coordinates, with noise and outliers. */
+/** A truncated cone (a cylinder when the radii are equal) with both bed discs, in a random pose at museum coordinates,
+ * with noise and outliers. */
 struct ConeCloud {
     core::cloud::PointCloud cloud;
-    core::unroll::Axis axis; ///< through the centre of the wide (lower) bed, toward the narrow end
+    core::unroll::Axis axis;        ///< through the centre of the wide (lower) bed, toward the narrow end
     double meanLateralRadius = 0.0; ///< mean distance of the lateral points from the axis (noise-free)
 };
 
-inline ConeCloud coneCloud(double bottomRadius, double topRadius, double height, std::size_t points,
-                           double noise, double outlierShare, std::uint64_t seed)
+inline ConeCloud coneCloud(double bottomRadius, double topRadius, double height, std::size_t points, double noise,
+                           double outlierShare, std::uint64_t seed)
 {
     core::synth::Random random(seed);
     ConeCloud result;
@@ -122,14 +125,16 @@ inline ConeCloud coneCloud(double bottomRadius, double topRadius, double height,
     result.cloud.source = "cone";
     const double slant = std::hypot(height, bottomRadius - topRadius);
     const double lateral = std::numbers::pi * (bottomRadius + topRadius) * slant;
-    const double bottom = std::numbers::pi * bottomRadius * bottomRadius, top = std::numbers::pi * topRadius * topRadius;
+    const double bottom = std::numbers::pi * bottomRadius * bottomRadius,
+                 top = std::numbers::pi * topRadius * topRadius;
     Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
     std::vector<Eigen::Vector3d> local;
     double radiusSum = 0.0;
     std::size_t lateralCount = 0;
     for (std::size_t i = 0; i < points; ++i) {
-        const double pick = random.uniform(0.0, lateral + bottom + top), theta = random.uniform(0.0, 2.0 * std::numbers::pi);
-        Eigen::Vector3d p, n;
+        const double pick = random.uniform(0.0, lateral + bottom + top),
+                     theta = random.uniform(0.0, 2.0 * std::numbers::pi);
+        Eigen::Vector3d p = Eigen::Vector3d::Zero(), n = Eigen::Vector3d::UnitZ();
         if (pick < lateral) { // uniform by area: r grows linearly with z, density ∝ r
             const double u = random.uniform();
             const double r2 = bottomRadius * bottomRadius + u * (topRadius * topRadius - bottomRadius * bottomRadius);
@@ -137,7 +142,8 @@ inline ConeCloud coneCloud(double bottomRadius, double topRadius, double height,
             const double r = cylinder ? bottomRadius : std::sqrt(r2);
             const double z = cylinder ? u * height : height * (r - bottomRadius) / (topRadius - bottomRadius);
             p = {r * std::cos(theta), r * std::sin(theta), z};
-            n = Eigen::Vector3d(height * std::cos(theta), height * std::sin(theta), bottomRadius - topRadius).normalized();
+            n = Eigen::Vector3d(height * std::cos(theta), height * std::sin(theta), bottomRadius - topRadius)
+                    .normalized();
             radiusSum += r;
             ++lateralCount;
         } else {
@@ -153,8 +159,10 @@ inline ConeCloud coneCloud(double bottomRadius, double topRadius, double height,
     }
     const std::size_t outliers = std::size_t(outlierShare * double(points));
     for (std::size_t i = 0; i < outliers; ++i)
-        local.emplace_back(random.uniform(lo.x(), hi.x()), random.uniform(lo.y(), hi.y()), random.uniform(lo.z(), hi.z()));
-    for (const Eigen::Vector3d& p : local) result.cloud.addWorld(pose * p);
+        local.emplace_back(random.uniform(lo.x(), hi.x()), random.uniform(lo.y(), hi.y()),
+                           random.uniform(lo.z(), hi.z()));
+    for (const Eigen::Vector3d& p : local)
+        result.cloud.addWorld(pose * p);
     result.meanLateralRadius = radiusSum / double(lateralCount);
     return result;
 }
@@ -170,10 +178,14 @@ inline core::cloud::PointCloud badCloud(BadShape shape, std::size_t n, std::uint
     cloud.origin = Eigen::Vector3d(100.0, 200.0, 10.0);
     cloud.source = shape == BadShape::Plane ? "plane" : shape == BadShape::Box ? "box" : "blobs";
     for (std::size_t i = 0; i < n; ++i) {
-        Eigen::Vector3d p;
+        Eigen::Vector3d p = Eigen::Vector3d::Zero();
         switch (shape) {
-        case BadShape::Plane: p = {random.uniform(), random.uniform(), 0.001 * random.normal()}; break;
-        case BadShape::Box: p = {random.uniform(), random.uniform(), random.uniform()}; break;
+        case BadShape::Plane:
+            p = {random.uniform(), random.uniform(), 0.001 * random.normal()};
+            break;
+        case BadShape::Box:
+            p = {random.uniform(), random.uniform(), random.uniform()};
+            break;
         case BadShape::Blobs:
             p = Eigen::Vector3d(i % 2 ? 1.0 : 0.0, 0.0, 0.0) +
                 0.1 * Eigen::Vector3d(random.normal(), random.normal(), random.normal());

@@ -1,6 +1,7 @@
 // Skydome kernels: deep hulls (long concave profiles broken by spikes, which empty the register caches
 // of the vector kernel) against a brute-force scan of each line; the portable and the vector kernels
-// give the same bits; opposite azimuths walk the same lines; an odd number of directions.
+// give the same bits (on a CPU without AVX-512 both runs take the portable one); opposite azimuths
+// walk the same lines; an odd number of directions (no pairs of opposite walks).
 #include "stylos/core/shading/DirectionRaster.h"
 #include "stylos/core/shading/SkydomeShading.h"
 
@@ -68,7 +69,7 @@ std::vector<double> bruteForceAngles(const HeightField& field, double azimuth)
 
 TEST(ShadingSkydomeKernel, DeepHullsEqualBruteForce)
 {
-    const auto field = domeWithSpikes(200, 150, 5);
+    const auto field = domeWithSpikes(160, 120, 5);
     for (const double azimuth : {0.0, pi / 2, 1.5 * pi, pi / 4, 2.0, 3.6, 5.9}) {
         const auto angles = horizonAngles(field, azimuth, 2);
         ASSERT_TRUE(angles.ok());
@@ -124,9 +125,11 @@ TEST(ShadingSkydomeKernel, OppositeAzimuthsWalkTheSameLines)
                 for (int c = 0; c < width; ++c) {
                     // Same partition into lines (numbered alike when the axes agree) and opposite order.
                     for (int r2 = 0; r2 < height; r2 += 5)
-                        for (int c2 = 0; c2 < width; c2 += 3)
-                            ASSERT_EQ(there.lineOf(c, r) == there.lineOf(c2, r2), back.lineOf(c, r) == back.lineOf(c2, r2))
+                        for (int c2 = 0; c2 < width; c2 += 3) {
+                            const bool together = there.lineOf(c, r) == there.lineOf(c2, r2);
+                            ASSERT_EQ(together, back.lineOf(c, r) == back.lineOf(c2, r2))
                                 << directions << " directions, k = " << k;
+                        }
                     ASSERT_NEAR(there.along(c, r), -back.along(c, r), 1e-9);
                 }
         }

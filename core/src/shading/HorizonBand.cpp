@@ -55,7 +55,6 @@ void HorizonBand::walk(GroupKernel kernel, const WalkGeometry& geometry, bool re
 {
     GroupWalk w;
     w.source = m_source.heights;
-    w.states = m_source.states;
     w.offsets = m_offsets.data();
     w.inside = m_inside.data();
     w.heights = m_heights.data();

@@ -23,13 +23,11 @@ struct WalkGeometry {
 };
 
 /**
- * Where a band reads its heights: pixel (major a, minor b) of a raster at element a · stride + b. A
- * row-major raster reads the field itself (stride = width); a column-major one a transposed copy
- * (stride = height), so that the 16 pixels of a step are contiguous in memory.
+ * Where a band reads its heights (metres, NaN where Empty): pixel (major a, minor b) of a raster at
+ * element a · stride + b, so that the 16 pixels of a step are contiguous (HorizonSources.h).
  */
 struct BandSource {
     const float* heights = nullptr;
-    const std::uint8_t* states = nullptr; ///< PixelState per element; null when Empty is already NaN
     std::size_t stride = 0;
 };
 

@@ -3,16 +3,20 @@
 #include "ParallelChunks.h"
 
 #include <algorithm>
-#include <cassert>
+#include <cstdint>
 #include <limits>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 namespace stylos::core::shading::detail {
 namespace {
 
-/** Side of the square tiles of the transposes: 64 × 64 floats, 16 KiB a side of the copy. */
+/** Side of the square tiles of the copies: 64 × 64 floats. */
 constexpr int kTile = 64;
 
-/** Calls f(r, c) for every pixel of the grid, tile by tile, the tiles' rows of tiles shared among threads. */
+/** Calls f(r, c) for every pixel of the grid tile by tile, rows of tiles shared among the threads. */
 template <typename F>
 void forEachTiled(int width, int height, unsigned threads, const F& f)
 {
@@ -27,44 +31,41 @@ void forEachTiled(int width, int height, unsigned threads, const F& f)
     });
 }
 
-/** out[c · height + r] = f(r · width + c) for the width × height grid. */
-template <typename F>
-void transposeInto(float* out, int width, int height, unsigned threads, const F& f)
-{
-    const std::size_t w = std::size_t(width), h = std::size_t(height);
-    forEachTiled(width, height, threads, [&](int r, int c) {
-        out[std::size_t(c) * h + std::size_t(r)] = f(std::size_t(r) * w + std::size_t(c));
-    });
-}
-
 } // namespace
 
-void addTransposed(float* sum, const float* transposed, int width, int height, unsigned threads)
+void assignZeros(std::vector<float>& buffer, std::size_t count)
+{
+    buffer.clear();
+    buffer.reserve(count);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+    // Before the first touch; only the 2 MiB-aligned middle can be huge; best effort (errors ignored).
+    constexpr std::uintptr_t huge = std::uintptr_t(1) << 21;
+    const auto begin = (reinterpret_cast<std::uintptr_t>(buffer.data()) + huge - 1) & ~(huge - 1);
+    const auto end = reinterpret_cast<std::uintptr_t>(buffer.data() + count) & ~(huge - 1);
+    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
+#endif
+    buffer.resize(count, 0.0f);
+}
+
+void transposeBack(float* out, const float* transposed, int width, int height, unsigned threads)
 {
     const std::size_t w = std::size_t(width), h = std::size_t(height);
     forEachTiled(width, height, threads, [&](int r, int c) {
-        sum[std::size_t(r) * w + std::size_t(c)] += transposed[std::size_t(c) * h + std::size_t(r)];
+        out[std::size_t(r) * w + std::size_t(c)] = transposed[std::size_t(c) * h + std::size_t(r)];
     });
 }
 
-HorizonSources::HorizonSources(const HeightField& field, bool transposed, unsigned threads) : m_field(field)
+BandSource copyField(float* out, const HeightField& field, bool transposed, unsigned threads)
 {
-    if (!transposed) return;
-    m_transposed.resize(field.pixelCount());
     const float* heights = field.heights().data();
     const PixelState* states = field.states().data();
-    transposeInto(m_transposed.data(), field.width(), field.height(), threads, [&](std::size_t i) {
-        return states[i] == PixelState::Empty ? std::numeric_limits<float>::quiet_NaN() : heights[i];
+    const std::size_t w = std::size_t(field.width()), h = std::size_t(field.height());
+    forEachTiled(field.width(), field.height(), threads, [&](int r, int c) {
+        const std::size_t i = std::size_t(r) * w + std::size_t(c);
+        const float value = states[i] == PixelState::Empty ? std::numeric_limits<float>::quiet_NaN() : heights[i];
+        out[transposed ? std::size_t(c) * h + std::size_t(r) : i] = value;
     });
-}
-
-BandSource HorizonSources::source(const DirectionRaster& raster) const
-{
-    if (!raster.columnMajor())
-        return BandSource{m_field.heights().data(), reinterpret_cast<const std::uint8_t*>(m_field.states().data()),
-                          std::size_t(m_field.width())};
-    assert(m_transposed.size() == m_field.pixelCount() && "HorizonSources::source(): no transposed copy");
-    return BandSource{m_transposed.data(), nullptr, std::size_t(m_field.height())};
+    return BandSource{out, transposed ? h : w};
 }
 
 } // namespace stylos::core::shading::detail

@@ -1,7 +1,6 @@
 #pragma once
 // Internal to the skydome: the field as the horizon bands read it, and the transposes between layouts.
 #include "HorizonBand.h"
-#include "stylos/core/shading/DirectionRaster.h"
 #include "stylos/core/shading/HeightField.h"
 
 #include <vector>
@@ -9,25 +8,20 @@
 namespace stylos::core::shading::detail {
 
 /**
- * The field in both layouts a band reads contiguously: itself for row-major rasters (a step is a row)
- * and, built only when asked, a transposed copy with Empty pixels as NaN for column-major ones (a step
- * is a column: a row of the copy). Read-only once built: shared by the workers. Memory: 4 bytes per
- * pixel for the copy.
+ * Fills @p out (pixelCount floats) with the field's heights, Empty pixels as NaN, row-major (for the
+ * row-major rasters: a step is a row) or transposed (for the column-major ones: a step is a column, a
+ * row of the copy), so that the 16 pixels of a step are contiguous; returns where the bands read it.
+ * In parallel, in cache-sized tiles.
  */
-class HorizonSources {
-public:
-    /** @param transposed build the transposed copy (needed by column-major rasters). */
-    HorizonSources(const HeightField& field, bool transposed, unsigned threads);
+BandSource copyField(float* out, const HeightField& field, bool transposed, unsigned threads);
 
-    /** Where the bands of @p raster read (asserts that the copy exists for a column-major raster). */
-    BandSource source(const DirectionRaster& raster) const;
+/**
+ * Sizes @p buffer to @p count zeros, asking the kernel (Linux) for huge pages first: a band touches a
+ * new row, so a new 4 KiB page, at every step, and a TLB miss costs about as much as the cache miss.
+ */
+void assignZeros(std::vector<float>& buffer, std::size_t count);
 
-private:
-    const HeightField& m_field;
-    std::vector<float> m_transposed; // width rows of height elements
-};
-
-/** sum[r · width + c] += transposed[c · height + r] for every pixel, in parallel. */
-void addTransposed(float* sum, const float* transposed, int width, int height, unsigned threads);
+/** out[r · width + c] = transposed[c · height + r] for every pixel, in parallel. */
+void transposeBack(float* out, const float* transposed, int width, int height, unsigned threads);
 
 } // namespace stylos::core::shading::detail

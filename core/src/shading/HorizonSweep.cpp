@@ -1,7 +1,7 @@
 #include "HorizonSweep.h"
 
-#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 // Same bits as the vector kernel: no contraction of a · b + c into a fused multiply-add.
@@ -30,11 +30,26 @@ inline float distance(std::int32_t delta, float along, float across)
     return steps * along + moves * across;
 }
 
+/** Steps ahead for the prefetches of the source and of the sum. */
+constexpr int kAhead = 8;
+
+/** Prefetches the cache lines of elements [e − 15, e] of @p base (an address, never dereferenced). */
+inline void prefetchLine(const float* base, std::int64_t e)
+{
+#if defined(__GNUC__) || defined(__clang__)
+    const auto address = reinterpret_cast<std::uintptr_t>(base) + std::uintptr_t(e) * sizeof(float);
+    __builtin_prefetch(reinterpret_cast<const void*>(address));
+    __builtin_prefetch(reinterpret_cast<const void*>(address - 60));
+#else
+    (void)base;
+    (void)e;
+#endif
+}
+
 bool cpuHasAvx512()
 {
 #if STYLOS_HORIZON_AVX512
-    static const bool has = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512bw")
-                            && __builtin_cpu_supports("avx512vl");
+    static const bool has = __builtin_cpu_supports("avx512f");
     return has;
 #else
     return false;
@@ -43,6 +58,8 @@ bool cpuHasAvx512()
 
 } // namespace
 
+// The lanes one after the other at each step, each with its stack level by level; the pop loop and
+// the arithmetic are those of the vector kernel (HorizonSweepAvx512.cpp), in the same order.
 void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
 {
     constexpr int L = kGroupLanes;
@@ -53,18 +70,12 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
     if (n <= 0) return;
     const float none = std::numeric_limits<float>::quiet_NaN();
     const std::int32_t sentinel = (walk.reverse ? -walk.keys[n - 1] : walk.keys[0]) - 1;
-    // The top of each stack is the pixel pushed last (or the sentinel): it is tested as
-    // (h − h_top) · den ≥ num · run with its rise num and run den, deeper vertices with their slope,
-    // exactly as the vector kernel does.
     int tops[L];
-    float nums[L], dens[L];
     for (int j = 0; j < L; ++j) {
         stackH[j] = -std::numeric_limits<float>::infinity();
         stackS[j] = none;
         stackK[j] = sentinel;
         tops[j] = 0;
-        nums[j] = none;
-        dens[j] = 1.0f;
     }
     for (int t = 0; t < n; ++t) {
         const int s = walk.reverse ? n - 1 - t : t;
@@ -72,12 +83,18 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
         float* heights = walk.heights + std::size_t(s) * L;
         float* values = walk.values + std::size_t(s) * L;
         const std::int64_t offset = walk.offsets[s];
+        const int ahead = walk.reverse ? s - kAhead : s + kAhead;
+        if (ahead >= 0 && ahead < n) { // each step is a new row: prefetch the rows kAhead steps ahead
+            const std::int64_t next = walk.offsets[ahead] + (L - 1); // the lane that is surely in the row
+            if (walk.fromSource) prefetchLine(walk.source, next);
+            if (walk.output != WalkOutput::Values) prefetchLine(walk.sum, next);
+        }
         if (walk.fromSource) {
             const unsigned inside = walk.inside[s];
             for (int j = 0; j < L; ++j) {
                 float h = none;
                 const std::int64_t e = offset + j;
-                if ((inside >> j) & 1u && (walk.states == nullptr || walk.states[e] != 0)) h = walk.source[e];
+                if ((inside >> j) & 1u) h = walk.source[e];
                 heights[j] = h;
             }
         }
@@ -88,14 +105,13 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
                 continue;
             }
             int c = tops[j];
-            std::size_t v = std::size_t(c) * L + std::size_t(j);
-            float run = distance(key - stackK[v], walk.along, walk.across);
-            bool pop = (h - stackH[v]) * dens[j] >= nums[j] * run;
-            while (pop) {
-                --c;
+            std::size_t v;
+            float run;
+            for (;;) {
                 v = std::size_t(c) * L + std::size_t(j);
                 run = distance(key - stackK[v], walk.along, walk.across);
-                pop = h - stackH[v] >= stackS[v] * run;
+                if (!(h - stackH[v] >= stackS[v] * run)) break; // NaN slopes never pop
+                --c;
             }
             const float rise = stackH[v] - h;
             const float up = rise > 0.0f ? rise : 0.0f; // as _mm512_max_ps(rise, 0)
@@ -114,8 +130,6 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
             stackS[w] = num * hyp * inverse;
             stackK[w] = key;
             tops[j] = c;
-            nums[j] = num;
-            dens[j] = run;
         }
     }
 }

@@ -28,10 +28,9 @@ enum class WalkOutput {
 /**
  * One walk of a group of 16 neighbouring lines of a raster, step by step (a step: one major index).
  *
- * Pixels. Lane j of step s is the element offsets[s] + j of the source layout (of source, states and
- * sum), where bit j of inside[s] is set; a walk fromSource reads them there (Empty when states[e] == 0
- * or, without states, when the height is NaN) and writes the group's heights (NaN = no pixel) to
- * heights, which any other walk reads instead.
+ * Pixels. Lane j of step s is the element offsets[s] + j of the source layout (of source and sum),
+ * where bit j of inside[s] is set; a walk fromSource reads them there (NaN = Empty) and writes the
+ * group's heights (NaN = no pixel) to heights, which any other walk reads instead.
  *
  * Positions: a step's key is u · 65536 + s, s the step index and u the number of minor-axis moves
  * since the first step (both counted along the first step → last step order, so both grow). The
@@ -40,8 +39,7 @@ enum class WalkOutput {
  * the size of the field. Walking in reverse negates the keys, which keeps both differences ≥ 0.
  */
 struct GroupWalk {
-    const float* source = nullptr;         ///< heights, metres, in the source layout
-    const std::uint8_t* states = nullptr;  ///< PixelState per element, or null (Empty already NaN)
+    const float* source = nullptr;         ///< heights, metres (NaN = Empty), in the source layout
     const std::int64_t* offsets = nullptr; ///< per step: element of lane 0 (lanes outside may not exist)
     const std::uint16_t* inside = nullptr; ///< per step: the lanes inside the grid
     float* heights = nullptr;              ///< steps × 16 (lane fastest)
@@ -84,10 +82,9 @@ struct HullStacks {
  * height). The highest slope from p to the hull is at the tangent vertex; the vertices above it on the
  * stack (nearer p) lie under the segment from p to the tangent and leave the hull when p joins it, so
  * one pop loop both finds the tangent and restores convexity: amortised O(1) per pixel. A vertex v
- * leaves when p is on or above the line of its incoming edge: for the vertex pushed last (the top at
- * the start of a step) (h_p − h_v) · den_v ≥ num_v · dist(p, v), with num_v / den_v the rise and run of
- * that edge; for deeper ones h_p − h_v ≥ slope_v · dist(p, v). The sentinel at the bottom (height −∞,
- * slope NaN) and the first real vertex (slope +∞ or NaN) are never popped.
+ * leaves when p is on or above the line of its incoming edge, h_p − h_v ≥ slope_v · dist(p, v): one
+ * vertex read per test. The sentinel at the bottom (height −∞, slope NaN) and the first real vertex
+ * (slope +∞ or NaN) are never popped.
  *
  * Arithmetic: float, with differences of heights and exact integer step counts, so rounding is
  * relative to the local rise and run (~1e-7), never to the size of the heights or of the field. No

@@ -18,20 +18,19 @@ using Bands = std::vector<std::unique_ptr<detail::HorizonBand>>;
 
 /**
  * Walks every band of @p raster: forward (its azimuth) and, when @p both, in reverse (the opposite
- * azimuth, on the same lines), both walks' values going to @p sum (laid out as the raster's source);
- * without @p sum, a single forward walk whose values go to sink(band). False when cancelled.
+ * azimuth, on the same lines), both walks' values going to @p sum (laid out as @p source); without
+ * @p sum, a single forward walk whose values go to sink(band). False when cancelled.
  */
 template <typename Sink>
-bool sweepDirection(const detail::HorizonSources& sources, double pixelSize, const DirectionRaster& raster, bool both,
+bool sweepDirection(const detail::BandSource& source, double pixelSize, const DirectionRaster& raster, bool both,
                     float* sum, detail::HorizonValue value, detail::GroupKernel kernel, unsigned threads, Bands& bands,
                     ProgressSink* progress, const Sink& sink)
 {
     const detail::WalkGeometry geometry(raster, pixelSize);
-    const detail::BandSource source = sources.source(raster);
     constexpr int lines = detail::HorizonBand::kLines;
     const std::size_t count = (std::size_t(raster.lineCount()) + lines - 1) / lines;
-    // Chunks of 4 bands: fewer hand-outs; bands stay independent (each pixel is on one line).
-    return detail::parallelChunks(count, 4, threads, progress, [&](std::size_t begin, std::size_t end, unsigned worker) {
+    // Chunks of 4 bands (64 lines) per hand-out; bands stay independent (each pixel is on one line).
+    const auto work = [&](std::size_t begin, std::size_t end, unsigned worker) {
         detail::HorizonBand& band = *bands[worker];
         for (std::size_t b = begin; b < end; ++b) {
             const int first = int(b) * lines;
@@ -46,7 +45,8 @@ bool sweepDirection(const detail::HorizonSources& sources, double pixelSize, con
                 band.walk(kernel, geometry, false, detail::WalkOutput::Sum, value, sum);
             }
         }
-    });
+    };
+    return detail::parallelChunks(count, 4, threads, progress, work);
 }
 
 Bands makeBands(const HeightField& field, unsigned threads)
@@ -68,37 +68,55 @@ Result<ShadedImage> shadeSkydome(const HeightField& field, const SkydomeOptions&
                      "skydome: " + std::to_string(options.directions) + " directions is not in [1, 4096]"};
     const unsigned threads = detail::resolveThreads(options.threads);
     const auto kernel = detail::groupKernel(options.simd);
-    // With D even, direction k and its opposite k + D/2 walk the same lines (one load, two walks).
+    // With D even, direction k and its opposite k + D/2 walk the same lines (one read, two walks).
     const int D = options.directions;
     const int walked = D % 2 == 0 ? D / 2 : D;
-    std::vector<DirectionRaster> rasters;
-    bool columnMajor = false;
+    std::vector<DirectionRaster> columns, rows; // column-major rasters, then row-major ones
     for (int k = 0; k < walked; ++k) {
-        rasters.emplace_back(field.width(), field.height(), skydomeAzimuth(k, D));
-        columnMajor = columnMajor || rasters.back().columnMajor();
+        DirectionRaster raster(field.width(), field.height(), skydomeAzimuth(k, D));
+        (raster.columnMajor() ? columns : rows).push_back(std::move(raster));
     }
-    const detail::HorizonSources sources(field, columnMajor, threads);
     auto bands = makeBands(field, threads);
-    // Σ_k sin θ_k, row-major for the row-major rasters, transposed for the column-major ones.
-    std::vector<float> occlusion(field.pixelCount(), 0.0f), transposed(columnMajor ? field.pixelCount() : 0, 0.0f);
-    for (int k = 0; k < walked; ++k) {
-        float* sum = rasters[std::size_t(k)].columnMajor() ? transposed.data() : occlusion.data();
-        if (!sweepDirection(sources, field.pixelSize(), rasters[std::size_t(k)], walked < D, sum,
-                            detail::HorizonValue::Sine, kernel, threads, bands, progress, [](const auto&) {}))
-            return Error{ErrorCode::Cancelled, "skydome: cancelled"};
-        if (progress) progress->update(double(k + 1) / walked);
+    int done = 0;
+    const auto sweepAll = [&](const std::vector<DirectionRaster>& rasters, const detail::BandSource& source,
+                              float* sum) {
+        for (const DirectionRaster& raster : rasters) {
+            if (!sweepDirection(source, field.pixelSize(), raster, walked < D, sum, detail::HorizonValue::Sine, kernel,
+                                threads, bands, progress, [](const auto&) {}))
+                return false;
+            if (progress) progress->update(double(++done) / walked);
+        }
+        return true;
+    };
+    // Σ_k sin θ_k: the column-major rasters first, on a transposed copy into a transposed sum; then the
+    // row-major ones. Two 4-byte buffers per pixel, each used twice: (copy, sum) = (first, second),
+    // then the transposed sum is turned back into first, and second takes the row-major copy.
+    std::vector<float> first, second;
+    detail::assignZeros(first, field.pixelCount());
+    detail::assignZeros(second, field.pixelCount());
+    if (!columns.empty()) {
+        const auto source = detail::copyField(first.data(), field, true, threads);
+        if (!sweepAll(columns, source, second.data())) return Error{ErrorCode::Cancelled, "skydome: cancelled"};
+        detail::transposeBack(first.data(), second.data(), field.width(), field.height(), threads);
     }
-    if (columnMajor) detail::addTransposed(occlusion.data(), transposed.data(), field.width(), field.height(), threads);
+    const auto source = detail::copyField(second.data(), field, false, threads);
+    if (!sweepAll(rows, source, first.data())) return Error{ErrorCode::Cancelled, "skydome: cancelled"};
+    std::vector<float> occlusion = std::move(first);
+    second = {};
 
     ShadedImage image{field.width(), field.height(), field.pixelSize(), std::move(occlusion), {}};
     image.coverage.assign(field.pixelCount(), 0);
-    const auto states = field.states();
+    const PixelState* states = field.states().data();
     const float directions = float(options.directions);
-    for (std::size_t i = 0; i < image.values.size(); ++i) {
-        const bool covered = states[i] != PixelState::Empty;
-        image.coverage[i] = covered;
-        image.values[i] = covered ? std::clamp(1.0f - image.values[i] / directions, 0.0f, 1.0f) : 0.0f;
-    }
+    detail::parallelChunks(image.values.size(), std::size_t(1) << 16, threads, nullptr,
+                           [&](std::size_t begin, std::size_t end, unsigned) {
+                               for (std::size_t i = begin; i < end; ++i) {
+                                   const bool covered = states[i] != PixelState::Empty;
+                                   const float sky = 1.0f - image.values[i] / directions;
+                                   image.coverage[i] = covered;
+                                   image.values[i] = covered ? std::clamp(sky, 0.0f, 1.0f) : 0.0f;
+                               }
+                           });
     return image;
 }
 
@@ -109,19 +127,21 @@ Result<std::vector<float>> horizonAngles(const HeightField& field, double azimut
         return Error{ErrorCode::InvalidArgument, "skydome: the azimuth is not a finite number"};
     threads = detail::resolveThreads(threads);
     const DirectionRaster raster(field.width(), field.height(), azimuth);
-    const detail::HorizonSources sources(field, raster.columnMajor(), threads);
+    const bool columnMajor = raster.columnMajor();
+    std::vector<float> copy;
+    detail::assignZeros(copy, field.pixelCount());
+    const auto source = detail::copyField(copy.data(), field, columnMajor, threads);
     auto bands = makeBands(field, threads);
     std::vector<float> angles(field.pixelCount(), 0.0f);
     float* out = angles.data();
     const std::size_t width = std::size_t(field.width()), height = std::size_t(field.height());
-    const bool columnMajor = raster.columnMajor();
     const auto sink = [&](const detail::HorizonBand& band) {
         band.forEachValue([&](std::size_t e, float slope) {
             const std::size_t i = columnMajor ? (e % height) * width + e / height : e; // e is transposed
             out[i] = float(std::atan(double(slope)));
         });
     };
-    if (!sweepDirection(sources, field.pixelSize(), raster, false, nullptr, detail::HorizonValue::Slope,
+    if (!sweepDirection(source, field.pixelSize(), raster, false, nullptr, detail::HorizonValue::Slope,
                         detail::groupKernel(true), threads, bands, progress, sink))
         return Error{ErrorCode::Cancelled, "skydome: cancelled"};
     if (progress) progress->update(1.0);

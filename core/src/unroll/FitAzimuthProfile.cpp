@@ -5,8 +5,6 @@
 #include <algorithm>
 #include <cassert>
 #include <numbers>
-#include <cstdio>
-#include <cstdlib>
 
 namespace stylos::core::unroll::detail {
 
@@ -34,7 +32,8 @@ double FitAzimuthProfile::estimate(int bins, const std::vector<std::pair<std::ui
     std::vector<std::size_t> start(static_cast<std::size_t>(bins) + 1, 0);
     for (const auto& s : samples)
         if (s.first < std::uint32_t(bins)) ++start[s.first + 1];
-    for (int b = 0; b < bins; ++b) start[std::size_t(b) + 1] += start[std::size_t(b)];
+    for (int b = 0; b < bins; ++b)
+        start[std::size_t(b) + 1] += start[std::size_t(b)];
     std::vector<float> sorted(start.back());
     std::vector<std::size_t> next(start.begin(), start.end() - 1);
     for (const auto& s : samples)
@@ -54,24 +53,27 @@ double FitAzimuthProfile::estimate(int bins, const std::vector<std::pair<std::ui
         filled[std::size_t(b)] = 1;
         ++count;
     }
-    const std::vector<double> previous = m_values.size() == values.size() ? m_values : std::vector<double>(values.size(), 0.0);
-    if (std::getenv("FIT_DEBUG")) {
-        std::fprintf(stderr, "profile: %zu samples, %d bins, %d filled\n", samples.size(), bins, count);
-        for (int b = 0; b < bins; ++b) if (!filled[b]) std::fprintf(stderr, "%d:%zu ", b, start[b+1]-start[b]);
-        std::fprintf(stderr, "\n");
-    }
+    const std::vector<double> previous =
+        m_values.size() == values.size() ? m_values : std::vector<double>(values.size(), 0.0);
     if (count < coverage * bins) {
         disable();
         double change = 0.0;
-        for (double v : previous) change += v * v;
+        for (double v : previous)
+            change += v * v;
         return std::sqrt(change / double(previous.size()));
     }
     // Empty bins: linear between the nearest filled bins around the circle.
     for (int b = 0; b < bins; ++b) {
         if (filled[std::size_t(b)]) continue;
         int before = b, after = b, stepsBefore = 0, stepsAfter = 0;
-        do { before = (before + bins - 1) % bins; ++stepsBefore; } while (!filled[std::size_t(before)]);
-        do { after = (after + 1) % bins; ++stepsAfter; } while (!filled[std::size_t(after)]);
+        do {
+            before = (before + bins - 1) % bins;
+            ++stepsBefore;
+        } while (!filled[std::size_t(before)]);
+        do {
+            after = (after + 1) % bins;
+            ++stepsAfter;
+        } while (!filled[std::size_t(after)]);
         const double w = double(stepsBefore) / double(stepsBefore + stepsAfter);
         values[std::size_t(b)] = (1.0 - w) * values[std::size_t(before)] + w * values[std::size_t(after)];
     }
@@ -97,7 +99,8 @@ double FitAzimuthProfile::estimate(int bins, const std::vector<std::pair<std::ui
     double change = 0.0;
     for (int b = 0; b < bins; ++b) {
         values[std::size_t(b)] -= harmonics.dot(basis[std::size_t(b)]);
-        change += (values[std::size_t(b)] - previous[std::size_t(b)]) * (values[std::size_t(b)] - previous[std::size_t(b)]);
+        change +=
+            (values[std::size_t(b)] - previous[std::size_t(b)]) * (values[std::size_t(b)] - previous[std::size_t(b)]);
     }
     change = std::sqrt(change / bins);
     m_values = std::move(values);
@@ -110,7 +113,8 @@ void FitAzimuthProfile::setSlopes()
 {
     const std::size_t n = m_values.size();
     m_slopes.resize(n);
-    for (std::size_t b = 0; b < n; ++b) m_slopes[b] = m_values[b + 1 == n ? 0 : b + 1] - m_values[b];
+    for (std::size_t b = 0; b < n; ++b)
+        m_slopes[b] = m_values[b + 1 == n ? 0 : b + 1] - m_values[b];
 }
 
 } // namespace stylos::core::unroll::detail

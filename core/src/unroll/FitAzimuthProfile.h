@@ -1,8 +1,8 @@
 #pragma once
 // Internal to the surface fit: the radial profile around the axis (flutes), subtracted from the
 // residuals so that trimming works at the scale of the noise rather than of the flutes.
-#include <algorithm>
 #include <Eigen/Core>
+#include <algorithm>
 
 #include <cmath>
 #include <cstdint>
@@ -13,16 +13,15 @@ namespace stylos::core::unroll::detail {
 
 /**
  * @brief f(φ): the median radial residual as a function of the azimuth φ about the axis, in B equal bins
- *        of fastAngle() (a cheap monotone stand-in for atan2), linearly interpolated between bin centres, with its mean and first harmonics (cos φ, sin φ) over the points removed —
- *        those are the radius and the axis position, which the fit itself must find, so f cannot absorb
- *        them. A fluted drum's flutes are such a profile; subtracting it leaves the noise, so the
- *        trimming threshold comes down to a few σ of the noise and the rim of a broken cavity (shallower
- *        than the flutes) no longer passes as inliers and pulls the axis. Disabled (f = 0) unless nearly
- *        all bins hold points: on a fragment's partial arc the harmonics are not separable.
- *        Immutable between estimate() calls; value() is thread-safe.
+ *        of fastAngle() (a cheap monotone stand-in for atan2), linearly interpolated between bin centres, with its mean
+ * and first harmonics (cos φ, sin φ) over the points removed — those are the radius and the axis position, which the
+ * fit itself must find, so f cannot absorb them. A fluted drum's flutes are such a profile; subtracting it leaves the
+ * noise, so the trimming threshold comes down to a few σ of the noise and the rim of a broken cavity (shallower than
+ * the flutes) no longer passes as inliers and pulls the axis. Disabled (f = 0) unless nearly all bins hold points: on a
+ * fragment's partial arc the harmonics are not separable. Immutable between estimate() calls; value() is thread-safe.
  */
 class FitAzimuthProfile {
-public:
+  public:
     /** An approximation of atan2(y, x) mod 2π in [0, 2π), within 0.004 rad of it and strictly monotone
      *  in it (so bins of it are bins of azimuth), at the cost of one division; 0 at the origin. */
     static double fastAngle(double x, double y)
@@ -43,7 +42,10 @@ public:
     bool enabled() const { return !m_values.empty(); }
     int bins() const { return int(m_values.size()); }
     /** f at fastAngle() @p a, metres; 0 when disabled. */
-    double value(double a) const { return m_values.empty() ? 0.0 : interpolate(m_values.data(), m_slopes.data(), bins(), m_perRadian, a); }
+    double value(double a) const
+    {
+        return m_values.empty() ? 0.0 : interpolate(m_values.data(), m_slopes.data(), bins(), m_perRadian, a);
+    }
 
     /** The raw tables, for a per-point loop that interpolates itself (interpolate()). */
     const double* values() const { return m_values.data(); }
@@ -81,12 +83,12 @@ public:
         setSlopes();
     }
 
-private:
+  private:
     void setSlopes();
 
     std::vector<double> m_values;
     std::vector<double> m_slopes; ///< m_values[b + 1] − m_values[b], around the circle
-    double m_perRadian = 0.0; ///< bins / 2π
+    double m_perRadian = 0.0;     ///< bins / 2π
     // The harmonics' basis at the bin centres, for m_basisBins bins.
     std::vector<Eigen::Vector3d> m_basis;
     int m_basisBins = 0;

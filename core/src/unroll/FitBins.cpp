@@ -48,9 +48,17 @@ std::vector<FitBin> medianRadiusByT(const std::vector<double>& t, const std::vec
         if (x < 0.0 || x >= bins) continue;
         radii[std::size_t(x)].push_back(r[i]);
     }
+    // A slice counts with 5 points and a tenth of the median slice's (sparse clutter beyond the
+    // object's ends does not).
+    std::vector<std::size_t> sizes;
+    for (const auto& values : radii)
+        if (!values.empty()) sizes.push_back(values.size());
+    if (sizes.empty()) return result;
+    std::nth_element(sizes.begin(), sizes.begin() + std::ptrdiff_t(sizes.size() / 2), sizes.end());
+    const std::size_t enough = std::max<std::size_t>(5, sizes[sizes.size() / 2] / 10);
     for (int b = 0; b < bins; ++b) {
         std::vector<double>& values = radii[std::size_t(b)];
-        if (values.size() < 5) continue;
+        if (values.size() < enough) continue;
         result.push_back({lo + (b + 0.5) * width, medianOf(values), values.size()});
     }
     return result;
@@ -70,9 +78,32 @@ FitProfileLine robustProfileLine(const std::vector<FitBin>& bins, bool withSlope
     }
     std::vector<double> intercepts;
     intercepts.reserve(bins.size());
-    for (const FitBin& bin : bins) intercepts.push_back(bin.r - line.slope * bin.t);
+    for (const FitBin& bin : bins)
+        intercepts.push_back(bin.r - line.slope * bin.t);
     line.intercept = medianOf(intercepts);
     return line;
+}
+
+double densestOffset(const std::vector<double>& t, const std::vector<double>& r, const FitProfileLine& line,
+                     double range)
+{
+    constexpr int kBins = 200;
+    if (!(range > 0.0)) return 0.0;
+    std::vector<double> counts(kBins, 0.0);
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        const double x = (r[i] - line.intercept - line.slope * t[i] + range) / (2.0 * range) * kBins;
+        if (x >= 0.0 && x < kBins) counts[std::size_t(x)] += 1.0;
+    }
+    for (int pass = 0; pass < 2; ++pass) {
+        std::vector<double> smooth = counts;
+        for (int b = 1; b + 1 < kBins; ++b)
+            smooth[std::size_t(b)] =
+                0.25 * (counts[std::size_t(b - 1)] + 2.0 * counts[std::size_t(b)] + counts[std::size_t(b + 1)]);
+        counts = std::move(smooth);
+    }
+    const auto peak = std::max_element(counts.begin(), counts.end());
+    if (*peak <= 0.0) return 0.0;
+    return -range + (double(peak - counts.begin()) + 0.5) * (2.0 * range / kBins);
 }
 
 } // namespace stylos::core::unroll::detail

@@ -22,7 +22,8 @@ struct FitBin {
 
 /**
  * @brief Cuts [0.1 %, 99.9 %] quantiles of @p t into @p bins equal slices and gives the median
- *        radius of each slice that holds at least 5 points (slices without are left out).
+ *        radius of each slice that holds at least 5 points and a tenth of the median slice's (the
+ *        others — sparse clutter beyond the object's ends — are left out).
  */
 std::vector<FitBin> medianRadiusByT(const std::vector<double>& t, const std::vector<double>& r, int bins);
 
@@ -35,6 +36,13 @@ struct FitProfileLine {
 /** @brief Theil–Sen line through the bins (median of pairwise slopes, then median intercept): robust
  *         to bins dominated by bed faces or breaks. @p withSlope false: slope 0, median radius. */
 FitProfileLine robustProfileLine(const std::vector<FitBin>& bins, bool withSlope);
+
+/**
+ * @brief The offset from @p line of the densest band of residuals r − line(t) within ±@p range: the
+ *        peak of their histogram (200 bins, smoothed twice by (1, 2, 1) / 4); 0 when none is in range.
+ */
+double densestOffset(const std::vector<double>& t, const std::vector<double>& r, const FitProfileLine& line,
+                     double range);
 
 /** Median of @p values (reorders them); 0 when empty. */
 double medianOf(std::vector<double>& values);

@@ -4,26 +4,22 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
-#include <ctime>
-#include <utility>
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <cstdio>
-#include <cstdlib>
+#include <utility>
 
 namespace stylos::core::unroll::detail {
 
 namespace {
 
 constexpr std::size_t kChunk = 16 * 1024;
-constexpr double kKappa = 3.0;          ///< the threshold is this many robust σ
-constexpr int kMaxRounds = 30;          ///< Gauss–Newton rounds on the sample
+constexpr double kKappa = 3.0; ///< the threshold is this many robust σ
+constexpr int kMaxRounds = 30; ///< Gauss–Newton rounds on the sample
 constexpr int kMaxHalvings = 8;
 constexpr int kMaxProfileUpdates = 8;
 constexpr std::size_t kCoarsePoints = 250'000; ///< phase 1's share of the sample
-constexpr double kRefineTolerance = 1e-6; ///< radians, or relative to the scale
+constexpr double kRefineTolerance = 1e-6;      ///< radians, or relative to the scale
 constexpr std::size_t kProfilePointsPerBin = 50;
 constexpr std::size_t kMinProfileBins = 64, kMaxProfileBins = 4096;
 
@@ -32,7 +28,7 @@ constexpr std::size_t kMinProfileBins = 64, kMaxProfileBins = 4096;
 void perpendicularFrame(const Eigen::Vector3d& direction, Eigen::Vector3d& e1, Eigen::Vector3d& e2)
 {
     const Eigen::Vector3d& d = direction;
-    const Eigen::Vector3d any = std::abs(d.x()) < 0.6 ? Eigen::Vector3d::UnitX()
+    const Eigen::Vector3d any = std::abs(d.x()) < 0.6   ? Eigen::Vector3d::UnitX()
                                 : std::abs(d.y()) < 0.6 ? Eigen::Vector3d::UnitY()
                                                         : Eigen::Vector3d::UnitZ();
     e1 = (any - any.dot(d) * d).normalized();
@@ -50,42 +46,60 @@ bool FitCylinder::pass(const float* xyz, std::size_t count, const RadialModel& m
 {
     const Eigen::Vector3d q = model.axis.point + m_centre, d = model.axis.direction, e1 = model.reference;
     const Eigen::Vector3d e2 = d.cross(e1);
-    const RadialKernel k{q.x(), q.y(), q.z(), d.x(), d.y(), d.z(), e1.x(), e1.y(), e1.z(),
-                   e2.x(), e2.y(), e2.z(), model.radius, model.slope, m_profile.values(), m_profile.slopes(),
-                   m_profile.bins(), m_profile.perRadian()};
+    const RadialKernel k{q.x(),
+                         q.y(),
+                         q.z(),
+                         d.x(),
+                         d.y(),
+                         d.z(),
+                         e1.x(),
+                         e1.y(),
+                         e1.z(),
+                         e2.x(),
+                         e2.y(),
+                         e2.z(),
+                         model.radius,
+                         model.slope,
+                         m_profile.values(),
+                         m_profile.slopes(),
+                         m_profile.bins(),
+                         m_profile.perRadian()};
     const std::size_t chunks = chunkCount(count, kChunk);
     const RadialAccumulate run = radialAccumulate(equations, histogram, profile, m_profile.enabled(), m_cone);
-    timespec debugStart{};
-    clock_gettime(CLOCK_THREAD_CPUTIME_ID, &debugStart);
-    struct DebugReport { timespec start; std::size_t n; int flags; ~DebugReport() { timespec now{}; clock_gettime(CLOCK_THREAD_CPUTIME_ID, &now); if (std::getenv("FIT_DEBUG")) std::fprintf(stderr, "  pass %zu points flags %d: %.2f ns/point (this thread's CPU)\n", n, flags, ((now.tv_sec - start.tv_sec) * 1e9 + (now.tv_nsec - start.tv_nsec)) / double(n)); } } debugReport{debugStart, count, int(equations) | int(histogram) << 1 | int(profile) << 2 | int(m_profile.enabled()) << 3};
     std::vector<RadialSums> partial(chunks);
     if (profile) {
         m_profileSamples.assign(chunks, {});
-        for (std::size_t c = 0; c < chunks; ++c) m_profileSamples[c].reserve(std::min(kChunk, count - c * kChunk));
+        for (std::size_t c = 0; c < chunks; ++c)
+            m_profileSamples[c].reserve(std::min(kChunk, count - c * kChunk));
     }
-    for (auto& h : m_histograms) h.clear();
-    const bool finished = forEachChunk(count, kChunk, m_threads, stage,
-                                       [&](std::size_t c, std::size_t begin, std::size_t end, unsigned worker) {
-        run(xyz, begin, end, k, tau, &m_histograms[worker], profile ? &m_profileSamples[c] : nullptr, partial[c]);
-    });
+    for (auto& h : m_histograms)
+        h.clear();
+    const bool finished = forEachChunk(
+        count, kChunk, m_threads, stage, [&](std::size_t c, std::size_t begin, std::size_t end, unsigned worker) {
+            run(xyz, begin, end, k, tau, &m_histograms[worker], profile ? &m_profileSamples[c] : nullptr, partial[c]);
+        });
     if (!finished) return false;
     sums = RadialSums{};
     sums.minT = std::numeric_limits<double>::infinity();
     sums.maxT = -sums.minT;
-    for (const RadialSums& c : partial) sums.add(c);
-    for (std::size_t w = 1; w < m_histograms.size(); ++w) m_histograms[0].merge(m_histograms[w]);
+    for (const RadialSums& c : partial)
+        sums.add(c);
+    for (std::size_t w = 1; w < m_histograms.size(); ++w)
+        m_histograms[0].merge(m_histograms[w]);
     return true;
 }
 
 double FitCylinder::updateProfile()
 {
     std::size_t total = 0;
-    for (const auto& chunk : m_profileSamples) total += chunk.size();
+    for (const auto& chunk : m_profileSamples)
+        total += chunk.size();
     // As many bins as give ~50 inliers each at first, halved until 98 % of them hold points (a scan's
     // columns can be coarser than the bins); then kept, so that successive profiles compare, as long
     // as 90 % stay filled.
-    int bins = m_profileBins > 0 ? m_profileBins
-                                 : int(std::clamp<std::size_t>(total / kProfilePointsPerBin, kMinProfileBins, kMaxProfileBins));
+    int bins = m_profileBins > 0
+                   ? m_profileBins
+                   : int(std::clamp<std::size_t>(total / kProfilePointsPerBin, kMinProfileBins, kMaxProfileBins));
     std::vector<std::pair<std::uint32_t, float>> samples(total);
     for (;;) {
         std::size_t k = 0;
@@ -107,7 +121,8 @@ std::array<double, 6> FitCylinder::solve(const RadialSums& sums) const
 {
     int active[6], n = 0;
     if (m_axisFree)
-        for (int i = 0; i < 4; ++i) active[n++] = i;
+        for (int i = 0; i < 4; ++i)
+            active[n++] = i;
     active[n++] = 4;
     if (m_cone) active[n++] = 5;
     Eigen::MatrixXd a(n, n);
@@ -115,7 +130,8 @@ std::array<double, 6> FitCylinder::solve(const RadialSums& sums) const
     auto entry = [&](int r, int c) { return r >= c ? sums.jtj[r * (r + 1) / 2 + c] : sums.jtj[c * (c + 1) / 2 + r]; };
     double largest = 0.0;
     for (int r = 0; r < n; ++r) {
-        for (int c = 0; c < n; ++c) a(r, c) = entry(active[r], active[c]);
+        for (int c = 0; c < n; ++c)
+            a(r, c) = entry(active[r], active[c]);
         b(r) = -sums.jtr[active[r]];
         largest = std::max(largest, a(r, r));
     }
@@ -123,7 +139,8 @@ std::array<double, 6> FitCylinder::solve(const RadialSums& sums) const
     const Eigen::VectorXd x = a.ldlt().solve(b);
     std::array<double, 6> step{};
     if (!x.allFinite()) return step;
-    for (int r = 0; r < n; ++r) step[active[r]] = x(r);
+    for (int r = 0; r < n; ++r)
+        step[active[r]] = x(r);
     return step;
 }
 
@@ -131,8 +148,10 @@ RadialModel FitCylinder::apply(const RadialModel& model, const std::array<double
 {
     const Eigen::Vector3d e1 = model.reference, e2 = model.axis.direction.cross(e1);
     RadialModel next = model;
-    next.axis.direction = (model.axis.direction + fraction * (step[0] * e1 + step[1] * e2)).normalized();
-    next.axis.point = model.axis.point + fraction * (step[2] * e1 + step[3] * e2);
+    if (m_axisFree) { // (a given axis stays bit for bit as given)
+        next.axis.direction = (model.axis.direction + fraction * (step[0] * e1 + step[1] * e2)).normalized();
+        next.axis.point = model.axis.point + fraction * (step[2] * e1 + step[3] * e2);
+    }
     next.radius = model.radius + fraction * step[4];
     next.slope = model.slope + fraction * step[5];
     // Carry e1 along (azimuth 0 of the profile stays put) and keep the point at the foot of the fit
@@ -147,16 +166,15 @@ RadialModel FitCylinder::apply(const RadialModel& model, const std::array<double
 bool FitCylinder::negligible(const std::array<double, 6>& step) const
 {
     const double tolerance = kRefineTolerance;
-    return std::abs(step[0]) < tolerance && std::abs(step[1]) < tolerance &&
-           std::abs(step[2]) < tolerance * m_scale && std::abs(step[3]) < tolerance * m_scale &&
-           std::abs(step[4]) < tolerance * m_scale && std::abs(step[5]) < tolerance;
+    return std::abs(step[0]) < tolerance && std::abs(step[1]) < tolerance && std::abs(step[2]) < tolerance * m_scale &&
+           std::abs(step[3]) < tolerance * m_scale && std::abs(step[4]) < tolerance * m_scale &&
+           std::abs(step[5]) < tolerance;
 }
 
 bool FitCylinder::runaway(const RadialModel& model) const
 {
     return !std::isfinite(model.radius) || !std::isfinite(model.slope) || !model.axis.point.allFinite() ||
-           !model.axis.direction.allFinite() || std::abs(model.radius) > 1e3 * m_scale ||
-           std::abs(model.slope) > 100.0;
+           !model.axis.direction.allFinite() || std::abs(model.radius) > 1e3 * m_scale || std::abs(model.slope) > 100.0;
 }
 
 void FitCylinder::setStats(const RadialSums& sums)
@@ -191,15 +209,17 @@ bool FitCylinder::refine(const FitPoints& sample, const RadialModel& start, doub
     m_degenerate = runaway(m_model);
     RadialSums sums, trial;
     auto run = [&](const RadialModel& model, bool equations, bool histogram, bool collect, const FitStage& part,
-                   RadialSums& out) { return pass(points->xyz.data(), points->size(), model, m_tau, equations, histogram, collect, part, out); };
+                   RadialSums& out) {
+        return pass(points->xyz.data(), points->size(), model, m_tau, equations, histogram, collect, part, out);
+    };
     m_tau = tau0;
     if (!run(m_model, false, true, false, stage.part(0.0, 0.05), sums)) return false;
     m_tau = m_histograms[0].trimThreshold(tau0, kKappa, floor);
-    bool fresh = false;       // sums, the histogram and the profile samples belong to (m_model, m_tau, f)
-    bool profiling = false;   // phase 2: with the azimuthal profile
+    bool fresh = false;     // sums, the histogram and the profile samples belong to (m_model, m_tau, f)
+    bool profiling = false; // phase 2: with the azimuthal profile
     bool phaseTwoTried = false;
     int profileUpdates = 0;
-    double tauPlain = 0.0;    // the threshold at the end of phase 1
+    double tauPlain = 0.0; // the threshold at the end of phase 1
     for (int round = 0; round < kMaxRounds && !m_degenerate; ++round) {
         const FitStage part = stage.part(0.05 + 0.9 * round / kMaxRounds, 0.05 + 0.9 * (round + 1) / kMaxRounds);
         if (!fresh && !run(m_model, true, true, true, part, sums)) return false;
@@ -298,7 +318,8 @@ double FitCylinder::gap(const FitPoints& sample) const
     std::vector<double> t;
     t.reserve(sample.size());
     for (std::size_t i = 0; i < sample.size(); ++i) {
-        const Eigen::Vector3d w(static_cast<double>(sample.xyz[3 * i]) - q.x(), static_cast<double>(sample.xyz[3 * i + 1]) - q.y(),
+        const Eigen::Vector3d w(static_cast<double>(sample.xyz[3 * i]) - q.x(),
+                                static_cast<double>(sample.xyz[3 * i + 1]) - q.y(),
                                 static_cast<double>(sample.xyz[3 * i + 2]) - q.z());
         const double ti = w.dot(d);
         const double h = (w - ti * d).norm() - (m.radius + m.slope * ti) -
@@ -310,21 +331,14 @@ double FitCylinder::gap(const FitPoints& sample) const
     const double span = *hi - *lo;
     if (!(span > 0.0)) return 0.0;
     std::vector<std::uint32_t> occupied(kGapBins, 0);
-    for (double ti : t) ++occupied[std::size_t(std::min(kGapBins - 1, int((ti - *lo) / span * kGapBins)))];
+    for (double ti : t)
+        ++occupied[std::size_t(std::min(kGapBins - 1, int((ti - *lo) / span * kGapBins)))];
     int run = 0, longest = 0;
     for (int b = 0; b < kGapBins; ++b) {
         run = occupied[std::size_t(b)] < 3 ? run + 1 : 0;
         longest = std::max(longest, run);
     }
     return span * longest / kGapBins;
-}
-
-bool FitCylinder::evaluate(const float* xyz, std::size_t count, const FitStage& stage)
-{
-    RadialSums sums;
-    if (!pass(xyz, count, m_model, m_tau, false, false, false, stage, sums)) return false;
-    setStats(sums);
-    return true;
 }
 
 void FitCylinder::reverse()

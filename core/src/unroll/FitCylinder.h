@@ -17,15 +17,15 @@ namespace stylos::core::unroll::detail {
 struct RadialModel {
     FitLine axis;
     Eigen::Vector3d reference = Eigen::Vector3d::UnitX(); ///< e1 ⊥ axis: azimuth 0 of the profile
-    double radius = 1.0; ///< at axis.point, metres
-    double slope = 0.0;  ///< dr/dt
+    double radius = 1.0;                                  ///< at axis.point, metres
+    double slope = 0.0;                                   ///< dr/dt
 };
 
 /** @brief How well a model fits: over the inliers (|h| ≤ the threshold) unless stated. */
 struct RadialStats {
-    std::uint64_t points = 0;  ///< points evaluated
+    std::uint64_t points = 0; ///< points evaluated
     std::uint64_t inliers = 0;
-    double rms = 0.0;          ///< RMS of h = r − r(t) over the inliers, metres (profile not subtracted)
+    double rms = 0.0; ///< RMS of h = r − r(t) over the inliers, metres (profile not subtracted)
     double minT = 0.0, maxT = 0.0, meanT = 0.0; ///< axial coordinates of the inliers, metres
     double inlierFraction() const { return points ? double(inliers) / double(points) : 0.0; }
 };
@@ -41,25 +41,24 @@ struct RadialStats {
  *        refine() iterates on a sample in memory: each round sets τ to the fixed point of
  *        τ = max(3 × 1.4826 × median{|h| ≤ τ}, floor) (FitResidualHistogram), so τ settles on the
  *        scale of the dominant band of residuals whatever the share of bed faces, breaks or clutter,
- *        and takes one Gauss–Newton step. Phase 1 runs with f = 0 until the step and τ settle; phase 2
- *        then estimates f from the inliers every round (when the inliers go all round the axis) and
- *        goes on until the step, τ and f settle (at most 30 rounds in all). polish() makes passes over
- *        every point with τ and f fixed (at least two, at most four) until the step is negligible.
- *        Work is split in fixed chunks of 16 Ki points reduced in order, so the result does not depend
- *        on the thread count.
+ *        and takes one Gauss–Newton step (the trial pass of the accepted step serves as the next
+ *        round's pass). Phase 1 runs on every k-th point (250 k) with f = 0 until the step and τ
+ *        settle; phase 2, on the whole sample, estimates f from the inliers every round (when the
+ *        inliers go all round the axis; at most 8 times) and goes on until the step, τ and f settle
+ *        (at most 30 rounds in all). polish() takes one Gauss–Newton step over every point with τ and f
+ *        fixed, the statistics from the same pass. Work is split in fixed chunks of 16 Ki points
+ *        reduced in order, so the result does not depend on the thread count.
  */
 class FitCylinder {
-public:
+  public:
     FitCylinder(bool cone, bool axisFree, unsigned threads, const Eigen::Vector3d& centre, double scale);
 
     /** @brief Iterates on @p sample from @p start and the threshold @p tau0 (metres).
      *  @return false when cancelled. */
     bool refine(const FitPoints& sample, const RadialModel& start, double tau0, const FitStage& stage);
-    /** @brief Passes over the @p count points at @p xyz (cloud-local floats) with the current τ.
-     *  @return false when cancelled. */
+    /** @brief One pass over the @p count points at @p xyz (cloud-local floats) with the current τ and f:
+     *  the statistics at the current model, then its Gauss–Newton step. @return false when cancelled. */
     bool polish(const float* xyz, std::size_t count, const FitStage& stage);
-    /** @brief The statistics of the current model over @p xyz, without a step. @return false when cancelled. */
-    bool evaluate(const float* xyz, std::size_t count, const FitStage& stage);
 
     /** @brief The longest empty stretch of the axis (metres) between the sample's inliers (fewer than
      *  3 in a slice of 1/200 of their extent): separate objects along the axis. */
@@ -77,10 +76,10 @@ public:
     /** Whether the azimuthal profile was subtracted (the points go all round the axis). */
     bool profiled() const { return m_profile.enabled(); }
 
-private:
+  private:
     /** One pass: the sums, optionally the histogram of |h| and (bin, h + f) of the inliers for the profile. */
-    bool pass(const float* xyz, std::size_t count, const RadialModel& model, double tau, bool equations,
-              bool histogram, bool profile, const FitStage& stage, RadialSums& sums);
+    bool pass(const float* xyz, std::size_t count, const RadialModel& model, double tau, bool equations, bool histogram,
+              bool profile, const FitStage& stage, RadialSums& sums);
     /** Re-estimates the profile from the samples of the last pass; the largest change of f. */
     double updateProfile();
     /** The Gauss–Newton step for the free parameters from @p sums (zeros elsewhere). */
@@ -102,7 +101,7 @@ private:
     bool m_degenerate = false;
     std::vector<FitResidualHistogram> m_histograms; ///< one per worker
     FitAzimuthProfile m_profile;
-    int m_profileBins = 0; ///< fixed by the first profile that covers the circle
+    int m_profileBins = 0;                       ///< fixed by the first profile that covers the circle
     std::vector<RadialSamples> m_profileSamples; ///< per chunk
 };
 

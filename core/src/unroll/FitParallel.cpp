@@ -37,9 +37,11 @@ bool forEachChunk(std::size_t count, std::size_t chunk, unsigned threads, const 
     };
     std::vector<std::thread> helpers;
     helpers.reserve(threads - 1);
-    for (unsigned t = 1; t < threads; ++t) helpers.emplace_back(work, t);
+    for (unsigned t = 1; t < threads; ++t)
+        helpers.emplace_back(work, t);
     work(0);
-    for (auto& helper : helpers) helper.join();
+    for (auto& helper : helpers)
+        helper.join();
     return !cancelled.load();
 }
 

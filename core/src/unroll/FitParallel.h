@@ -28,7 +28,7 @@ struct FitStage {
 
 /** @brief Forwards only increases of the fraction to @p parent (stages re-run passes), thread-safe. */
 class FitMonotonicSink final : public ProgressSink {
-public:
+  public:
     explicit FitMonotonicSink(ProgressSink* parent) : m_parent(parent) {}
     void update(double fraction) override
     {
@@ -41,19 +41,19 @@ public:
     }
     bool isCancelRequested() const override { return m_parent->isCancelRequested(); }
 
-private:
+  private:
     ProgressSink* m_parent;
     std::atomic<double> m_high{0.0};
 };
 
 /** @brief A FitStage as a ProgressSink, for the algorithms the fit calls (normal estimation). */
 class FitStageSink final : public ProgressSink {
-public:
+  public:
     explicit FitStageSink(const FitStage& stage) : m_stage(stage) {}
     void update(double fraction) override { m_stage.update(fraction); }
     bool isCancelRequested() const override { return m_stage.cancelled(); }
 
-private:
+  private:
     FitStage m_stage;
 };
 
@@ -69,6 +69,9 @@ bool forEachChunk(std::size_t count, std::size_t chunk, unsigned threads, const 
                   const std::function<void(std::size_t, std::size_t, std::size_t, unsigned)>& body);
 
 /** Chunks of forEachChunk() for @p count items. */
-inline std::size_t chunkCount(std::size_t count, std::size_t chunk) { return (count + chunk - 1) / chunk; }
+inline std::size_t chunkCount(std::size_t count, std::size_t chunk)
+{
+    return (count + chunk - 1) / chunk;
+}
 
 } // namespace stylos::core::unroll::detail

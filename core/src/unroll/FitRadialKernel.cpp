@@ -2,29 +2,60 @@
 
 #include "FitAzimuthProfile.h"
 
-#include <Eigen/Core>
-
 #include <algorithm>
 #include <cmath>
 #include <limits>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace stylos::core::unroll::detail {
 
 namespace {
 
-using Pair = Eigen::Array2d;
+// Two points at a time in the compiler's vector types (GCC and Clang): SSE2 on x86-64, NEON on ARM,
+// plain scalar code elsewhere; comparisons give lane masks and `mask ? a : b` selects without branches.
+typedef double Pair __attribute__((vector_size(16)));
+
+Pair splat(double x)
+{
+    return Pair{x, x};
+}
+
+Pair sqrtOf(Pair x)
+{
+#if defined(__SSE2__)
+    return Pair(_mm_sqrt_pd(__m128d(x)));
+#else
+    return Pair{std::sqrt(x[0]), std::sqrt(x[1])};
+#endif
+}
+
+Pair absOf(Pair x)
+{
+    return x < 0.0 ? -x : x;
+}
+Pair minOf(Pair a, Pair b)
+{
+    return a < b ? a : b;
+}
+Pair maxOf(Pair a, Pair b)
+{
+    return a > b ? a : b;
+}
 
 /** FitAzimuthProfile::fastAngle() on two lanes. */
-Pair fastAngles(const Pair& x, const Pair& y)
+Pair fastAngles(Pair x, Pair y)
 {
     constexpr double pi = 3.14159265358979323846;
-    const Pair ax = x.abs(), ay = y.abs();
-    const Pair z = ax.min(ay) / ax.max(ay).max(1e-300);
+    const Pair ax = absOf(x), ay = absOf(y);
+    const Pair z = minOf(ax, ay) / maxOf(maxOf(ax, ay), splat(1e-300));
     Pair a = z * (0.25 * pi + 0.273 * (1.0 - z));
-    a = (ay > ax).select(0.5 * pi - a, a);
-    a = (x < 0.0).select(pi - a, a);
-    a = (y < 0.0).select(2.0 * pi - a, a);
-    return (a < 2.0 * pi).select(a, 0.0);
+    a = ay > ax ? 0.5 * pi - a : a;
+    a = x < 0.0 ? pi - a : a;
+    a = y < 0.0 ? 2.0 * pi - a : a;
+    return a < 2.0 * pi ? a : splat(0.0);
 }
 
 template <bool kEquations, bool kHistogram, bool kCollect, bool kProfiled, bool kCone>
@@ -32,52 +63,49 @@ void accumulate(const float* xyz, std::size_t begin, std::size_t end, const Radi
                 FitResidualHistogram* histogram, RadialSamples* samples, RadialSums& out)
 {
     constexpr int kParameters = kCone ? 6 : 5;
-    Pair jtj[21], jtr[6];
-    for (Pair& s : jtj) s.setZero();
-    for (Pair& s : jtr) s.setZero();
-    Pair cost = Pair::Zero(), sumSquares = Pair::Zero(), sumTrueSquares = Pair::Zero(), sumT = Pair::Zero();
-    Pair count = Pair::Zero();
-    Pair minT = Pair::Constant(std::numeric_limits<double>::infinity()), maxT = -minT;
+    Pair jtj[21] = {}, jtr[6] = {};
+    Pair cost = {}, sumSquares = {}, sumTrueSquares = {}, sumT = {}, count = {};
+    Pair minT = splat(std::numeric_limits<double>::infinity()), maxT = -minT;
     const double tau2 = tau * tau;
     const double slope = kCone ? k.slope : 0.0;
     const std::size_t pairs = (end - begin) / 2;
     for (std::size_t pair = 0; pair < pairs; ++pair) {
         const float* p = xyz + 3 * (begin + 2 * pair);
-        const Pair wx = Pair(p[0], p[3]) - k.qx, wy = Pair(p[1], p[4]) - k.qy, wz = Pair(p[2], p[5]) - k.qz;
+        const Pair wx = Pair{p[0], p[3]} - k.qx, wy = Pair{p[1], p[4]} - k.qy, wz = Pair{p[2], p[5]} - k.qz;
         const Pair t = wx * k.dx + wy * k.dy + wz * k.dz;
         const Pair we1 = wx * k.e1x + wy * k.e1y + wz * k.e1z;
         const Pair we2 = wx * k.e2x + wy * k.e2y + wz * k.e2z;
-        const Pair rho = (we1 * we1 + we2 * we2).sqrt(); // w − t·d expressed in (e1, e2)
+        const Pair rho = sqrtOf(we1 * we1 + we2 * we2); // w − t·d expressed in (e1, e2)
         const Pair bare = rho - (k.radius + slope * t);
-        Pair angle = Pair::Zero(), f = Pair::Zero();
+        Pair angle = {}, f = {};
         if constexpr (kProfiled || kCollect) angle = fastAngles(we1, we2);
         if constexpr (kProfiled)
             for (int l = 0; l < 2; ++l)
                 f[l] = FitAzimuthProfile::interpolate(k.profileValues, k.profileSlopes, k.profileBins,
                                                       k.profilePerRadian, angle[l]);
         const Pair h = bare - f;
-        const Pair size = h.abs();
+        const Pair size = absOf(h);
         if constexpr (kHistogram) {
             histogram->add(size[0]);
             histogram->add(size[1]);
         }
         // An outlier's values become 0 (selections, not branches; a NaN point stays out of the sums).
         const auto inlier = size <= tau;
-        const Pair in = inlier.select(Pair::Ones(), 0.0);
-        const Pair hm = inlier.select(h, 0.0), bm = inlier.select(bare, 0.0), tm = inlier.select(t, 0.0);
+        const Pair in = inlier ? splat(1.0) : splat(0.0);
+        const Pair hm = inlier ? h : 0.0, bm = inlier ? bare : 0.0, tm = inlier ? t : 0.0;
         cost += hm * hm + (1.0 - in) * tau2;
         sumSquares += hm * hm;
         sumTrueSquares += bm * bm;
         sumT += tm;
         count += in;
-        minT = minT.min(inlier.select(t, minT));
-        maxT = maxT.max(inlier.select(t, maxT));
+        minT = minOf(minT, inlier ? t : minT);
+        maxT = maxOf(maxT, inlier ? t : maxT);
         if constexpr (kCollect)
             for (int l = 0; l < 2; ++l)
                 if (inlier[l]) samples->emplace_back(std::uint32_t(angle[l] * 0x1p28), float(bare[l]));
         if constexpr (kEquations) {
-            const Pair e1m = inlier.select(we1, 0.0), e2m = inlier.select(we2, 0.0);
-            const Pair inverse = 1.0 / inlier.select(rho, 1.0);
+            const Pair e1m = inlier ? we1 : 0.0, e2m = inlier ? we2 : 0.0;
+            const Pair inverse = 1.0 / (inlier ? rho : 1.0);
             const Pair a = e1m * inverse, b = e2m * inverse;
             Pair j[6] = {-(tm * a), -(tm * b), -a, -b, -in, -tm};
             if constexpr (kCone) {
@@ -86,15 +114,18 @@ void accumulate(const float* xyz, std::size_t begin, std::size_t end, const Radi
             }
             int index = 0;
             for (int r = 0; r < kParameters; ++r) {
-                for (int c = 0; c <= r; ++c) jtj[index++] += j[r] * j[c];
+                for (int c = 0; c <= r; ++c)
+                    jtj[index++] += j[r] * j[c];
                 jtr[r] += j[r] * hm;
             }
         }
     }
     // The lanes, then an odd last point (a pair whose second lane repeats it and is dropped would
     // cost the same; this keeps one code path).
-    for (int i = 0; i < 21; ++i) out.jtj[std::size_t(i)] = jtj[i][0] + jtj[i][1];
-    for (int i = 0; i < 6; ++i) out.jtr[std::size_t(i)] = jtr[i][0] + jtr[i][1];
+    for (int i = 0; i < 21; ++i)
+        out.jtj[std::size_t(i)] = jtj[i][0] + jtj[i][1];
+    for (int i = 0; i < 6; ++i)
+        out.jtr[std::size_t(i)] = jtr[i][0] + jtr[i][1];
     out.cost = cost[0] + cost[1];
     out.sumSquares = sumSquares[0] + sumSquares[1];
     out.sumTrueSquares = sumTrueSquares[0] + sumTrueSquares[1];
@@ -113,8 +144,10 @@ void accumulate(const float* xyz, std::size_t begin, std::size_t end, const Radi
         FitResidualHistogram* none = nullptr;
         accumulate<kEquations, false, kCollect, kProfiled, kCone>(twice, 0, 2, k, tau, none, &extra, both);
         RadialSums one;
-        for (int i = 0; i < 21; ++i) one.jtj[std::size_t(i)] = 0.5 * both.jtj[std::size_t(i)];
-        for (int i = 0; i < 6; ++i) one.jtr[std::size_t(i)] = 0.5 * both.jtr[std::size_t(i)];
+        for (int i = 0; i < 21; ++i)
+            one.jtj[std::size_t(i)] = 0.5 * both.jtj[std::size_t(i)];
+        for (int i = 0; i < 6; ++i)
+            one.jtr[std::size_t(i)] = 0.5 * both.jtr[std::size_t(i)];
         one.cost = 0.5 * both.cost;
         one.sumSquares = 0.5 * both.sumSquares;
         one.sumTrueSquares = 0.5 * both.sumTrueSquares;
@@ -150,8 +183,10 @@ constexpr std::array<RadialAccumulate, sizeof...(I)> accumulateTable(std::index_
 
 void RadialSums::add(const RadialSums& other)
 {
-    for (std::size_t i = 0; i < 21; ++i) jtj[i] += other.jtj[i];
-    for (std::size_t i = 0; i < 6; ++i) jtr[i] += other.jtr[i];
+    for (std::size_t i = 0; i < 21; ++i)
+        jtj[i] += other.jtj[i];
+    for (std::size_t i = 0; i < 6; ++i)
+        jtr[i] += other.jtr[i];
     cost += other.cost;
     sumSquares += other.sumSquares;
     sumTrueSquares += other.sumTrueSquares;

@@ -14,9 +14,9 @@ namespace stylos::core::unroll::detail {
 struct RadialSums {
     std::array<double, 21> jtj{}; ///< lower triangle of JᵀJ, row by row
     std::array<double, 6> jtr{};
-    double cost = 0.0;            ///< Σ min(h², τ²)
-    double sumSquares = 0.0;      ///< Σ h² over the inliers (profile subtracted)
-    double sumTrueSquares = 0.0;  ///< Σ (r − r(t))² over the inliers (profile not subtracted)
+    double cost = 0.0;                         ///< Σ min(h², τ²)
+    double sumSquares = 0.0;                   ///< Σ h² over the inliers (profile subtracted)
+    double sumTrueSquares = 0.0;               ///< Σ (r − r(t))² over the inliers (profile not subtracted)
     double sumT = 0.0, minT = 0.0, maxT = 0.0; ///< t over the inliers
     std::uint64_t inliers = 0, points = 0;
     /** Adds @p other (min / max for the extremes). */
@@ -25,11 +25,11 @@ struct RadialSums {
 
 /** @brief The model in the form the per-point loop wants. */
 struct RadialKernel {
-    double qx, qy, qz;    ///< axis point, cloud-local
-    double dx, dy, dz;    ///< axis direction
-    double e1x, e1y, e1z; ///< reference ⊥ direction (azimuth 0)
-    double e2x, e2y, e2z; ///< direction × e1
-    double radius, slope; ///< r(t) = radius + slope · t
+    double qx, qy, qz;                     ///< axis point, cloud-local
+    double dx, dy, dz;                     ///< axis direction
+    double e1x, e1y, e1z;                  ///< reference ⊥ direction (azimuth 0)
+    double e2x, e2y, e2z;                  ///< direction × e1
+    double radius, slope;                  ///< r(t) = radius + slope · t
     const double* profileValues = nullptr; ///< FitAzimuthProfile tables (when profiled)
     const double* profileSlopes = nullptr;
     int profileBins = 0;
@@ -50,8 +50,8 @@ using RadialAccumulate = void (*)(const float* xyz, std::size_t begin, std::size
 /**
  * @brief The loop for these options: @p equations (JᵀJ, Jᵀh), @p histogram (|h| of every point),
  *        @p collect (the inliers' samples for the profile), @p profiled (subtract f), @p cone (the
- *        slope's column). Points go two at a time through Eigen's 2-lane arrays (SSE2 / NEON), each
- *        lane summing its own points, the lanes added at the end; an odd last point alone. Branch-free
+ *        slope's column). Points go two at a time through the compiler's 2-lane vectors (SSE2 / NEON),
+ *        each lane summing its own points, the lanes added at the end; an odd last point alone. Branch-free
  *        per point (inliers and outliers alternate unpredictably in a shuffled or cluttered cloud): the
  *        inlier test is a selection, which also keeps a non-finite point out of the sums. The result
  *        depends only on the points and [begin, end).

@@ -14,7 +14,8 @@ FitResidualHistogram::FitResidualHistogram(double scale)
 
 void FitResidualHistogram::merge(const FitResidualHistogram& other)
 {
-    for (int b = 0; b < kBins; ++b) m_counts[b] += other.m_counts[b];
+    for (int b = 0; b < kBins; ++b)
+        m_counts[b] += other.m_counts[b];
     m_dirty = true;
 }
 
@@ -27,7 +28,8 @@ void FitResidualHistogram::clear()
 std::uint64_t FitResidualHistogram::total() const
 {
     std::uint64_t sum = 0;
-    for (std::uint64_t c : m_counts) sum += c;
+    for (std::uint64_t c : m_counts)
+        sum += c;
     return sum;
 }
 
@@ -48,7 +50,8 @@ void FitResidualHistogram::cumulate() const
 {
     if (!m_dirty) return;
     m_cumulative[0] = 0.0;
-    for (int b = 0; b < kBins; ++b) m_cumulative[b + 1] = m_cumulative[b] + double(m_counts[b]);
+    for (int b = 0; b < kBins; ++b)
+        m_cumulative[b + 1] = m_cumulative[b] + double(m_counts[b]);
     m_dirty = false;
 }
 

@@ -14,7 +14,7 @@ namespace stylos::core::unroll::detail {
  *        Quantiles interpolate linearly within a bin. Not thread-safe (one per worker, then merge).
  */
 class FitResidualHistogram {
-public:
+  public:
     static constexpr int kBins = 48 * 128 + 2;
 
     /** Residuals are counted in units of @p scale (> 0, metres). */
@@ -46,7 +46,7 @@ public:
     /** The residual (metres) below which @p count residuals lie (the inverse of countBelow). */
     double valueAtCount(double count) const;
 
-private:
+  private:
     static constexpr std::uint32_t kLowBits = 0x2B800000u; ///< bits of 2⁻⁴⁰ as a float
     static constexpr int kShift = 23 - 7;                  ///< 2⁷ bins per octave
     double binLow(int bin) const;                          ///< lower edge, in units of scale

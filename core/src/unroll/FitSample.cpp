@@ -22,7 +22,8 @@ std::vector<std::size_t> stratifiedSample(std::size_t count, std::size_t target,
     std::vector<std::size_t> indices;
     if (count <= target) {
         indices.resize(count);
-        for (std::size_t i = 0; i < count; ++i) indices[i] = i;
+        for (std::size_t i = 0; i < count; ++i)
+            indices[i] = i;
         return indices;
     }
     indices.resize(target);

@@ -17,13 +17,14 @@ constexpr double kKeep = 2.5 * 1.482602218505602; ///< lines kept within this ma
 
 } // namespace
 
-Status estimateSampleNormals(FitPoints& sample, const Eigen::Vector3d& centre, unsigned threads,
-                             const FitStage& stage, const std::string& source)
+Status estimateSampleNormals(FitPoints& sample, const Eigen::Vector3d& centre, unsigned threads, const FitStage& stage,
+                             const std::string& source)
 {
     const std::size_t n = sample.size();
     std::vector<double> positions(3 * n);
     for (std::size_t i = 0; i < n; ++i)
-        for (int k = 0; k < 3; ++k) positions[3 * i + k] = static_cast<double>(sample.xyz[3 * i + k]) - centre[k];
+        for (int k = 0; k < 3; ++k)
+            positions[3 * i + k] = static_cast<double>(sample.xyz[3 * i + k]) - centre[k];
     sample.normals.assign(3 * n, 0.0f);
     normals::NormalOptions options;
     options.threads = threads;
@@ -84,7 +85,8 @@ FitLine lineComplexAxis(const FitPoints& sample, const Eigen::Vector3d& centre, 
         const auto middle = sorted.begin() + std::ptrdiff_t(sorted.size() / 2);
         std::nth_element(sorted.begin(), middle, sorted.end());
         const double limit = std::max(kKeep * *middle, 1e-12);
-        for (std::size_t i = 0; i < n; ++i) keep[i] = residual[i] <= limit ? 1 : 0;
+        for (std::size_t i = 0; i < n; ++i)
+            keep[i] = residual[i] <= limit ? 1 : 0;
         if (round > 0 && moved < 1e-12) break;
     }
     FitLine line;

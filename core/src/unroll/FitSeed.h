@@ -22,8 +22,8 @@ struct FitLine {
  *        unoriented: the normal lines need no orientation). Errors: Cancelled or what the estimation
  *        returns, with @p source in the message.
  */
-Status estimateSampleNormals(FitPoints& sample, const Eigen::Vector3d& centre, unsigned threads,
-                             const FitStage& stage, const std::string& source);
+Status estimateSampleNormals(FitPoints& sample, const Eigen::Vector3d& centre, unsigned threads, const FitStage& stage,
+                             const std::string& source);
 
 /**
  * @brief The axis of the linear line complex that best contains the normal lines of @p sample

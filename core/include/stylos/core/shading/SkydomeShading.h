@@ -20,15 +20,21 @@
  * Method. Per direction, each line is walked once against the direction, keeping on a stack the upper
  * convex hull of the profile behind the current pixel; the horizon is the tangent to that hull, and
  * the pops that find it also restore convexity: amortised O(1) per pixel·direction, exact (equal to a
- * brute-force scan of the line up to rounding). 64 neighbouring lines are walked together, one step
- * at a time, so the pixels touched at each step are neighbours in memory (HorizonSweep.h). Bands of
- * lines of one direction are shared among SkydomeOptions::threads threads; directions run one after
- * the other, so every pixel's sum is taken in the same order: the image is bitwise identical whatever
- * the thread count.
+ * brute-force scan of the line up to float rounding, ~1e-7 relative). A direction and its opposite
+ * share their lines (DirectionRaster.h), so with D even each line is read once and walked both ways.
+ * 16 neighbouring lines are walked together, one step at a time, in the lanes of one AVX-512 register
+ * where the CPU has AVX-512 (chosen at run time; a portable kernel otherwise, same bits), with the top
+ * of each lane's hull held in registers. The lines read a copy of the field in which each step is
+ * contiguous: row-major for the row-major rasters, transposed for the column-major ones. Bands of 16
+ * lines are shared among SkydomeOptions::threads threads; directions run one after the other, so
+ * every pixel's sum is taken in the same order: the image is bitwise identical whatever the thread
+ * count (and whichever kernel runs).
  *
- * Cost: pixels × D × ~20 ns of one core (docs/benchmarks.md); memory 4 bytes per pixel (the sum)
- * plus 1.5 KiB × the longest side per thread (the stacks). Cancel is checked every 64 lines;
- * progress advances per direction.
+ * Cost: pixels × D × ~5 ns of one core with AVX-512, ~18 ns with the portable kernel
+ * (docs/benchmarks.md). Memory: 8 bytes per pixel at most besides the result (a copy of the field and
+ * a transposed sum, each 4 bytes per pixel, on huge pages where Linux grants them) plus ~1.5 MiB per
+ * thread for a 4096-pixel side. Cancel is checked every 64 lines; progress advances per direction
+ * (per pair of opposite directions when D is even).
  *
  * Thread-safety: reentrant; starts and joins its own std::threads; the ProgressSink is called from
  * the calling thread (update) and from the workers (cancel checks). Failure modes: InvalidArgument
@@ -47,7 +53,7 @@ namespace stylos::core::shading {
 struct SkydomeOptions {
     int directions = 40; ///< D, number of azimuths evenly spaced from 0 (up), in [1, 4096]
     unsigned threads = 0; ///< worker threads, the caller's included; 0 = hardware threads
-    bool simd = true;     ///< use the AVX-512 kernel where the CPU has one (same bits as the portable one)
+    bool simd = true;     ///< use the AVX-512 kernel where the CPU has one (false: the portable one; same bits)
 };
 
 /** @brief Azimuth of direction @p k of @p directions, radians: 2πk / D. */
