@@ -85,7 +85,7 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
         const std::int64_t offset = walk.offsets[s];
         const int ahead = walk.reverse ? s - kAhead : s + kAhead;
         if (ahead >= 0 && ahead < n) { // each step is a new row: prefetch the rows kAhead steps ahead
-            const std::int64_t next = walk.offsets[ahead] + (L - 1); // the lane that is surely in the row
+            const std::int64_t next = walk.offsets[ahead] + (L - 1); // lanes 0 … 15: one or two lines
             if (walk.fromSource) prefetchLine(walk.source, next);
             if (walk.output != WalkOutput::Values) prefetchLine(walk.sum, next);
         }
@@ -142,7 +142,5 @@ GroupKernel groupKernel(bool simd)
     (void)simd;
     return walkGroupScalar;
 }
-
-const char* groupKernelName(bool simd) { return groupKernel(simd) == walkGroupScalar ? "scalar" : "avx512"; }
 
 } // namespace stylos::core::shading::detail

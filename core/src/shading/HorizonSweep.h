@@ -99,7 +99,4 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks);
 /** The best kernel this CPU runs (AVX-512 where available), or the portable one when !simd. */
 GroupKernel groupKernel(bool simd);
 
-/** Name of the kernel groupKernel(simd) returns ("avx512" or "scalar"), for benchmarks and logs. */
-const char* groupKernelName(bool simd);
-
 } // namespace stylos::core::shading::detail

@@ -27,7 +27,7 @@
 namespace stylos::core::shading::detail {
 namespace {
 
-/** Levels of each stack cached in registers (6: ~0.5 refills per step of 16 pixels). */
+/** Levels of each stack cached in registers (6: ~0.25 refills per step of 16 pixels, 3 levels each). */
 constexpr int kLevels = 6;
 /** Vertices a dry cache takes from the list at once. */
 constexpr int kRefill = 3;
@@ -65,7 +65,7 @@ struct Walk {
 
 /**
  * Lanes @p dry have popped every cached vertex: up to kRefill vertices under the cache come up from the
- * list, each slope computed again exactly as at its push. ~1 lane in 3 steps: scalar, but inline (a
+ * list, each slope computed again exactly as at its push. ~1 lane in 4 steps: scalar, but inline (a
  * call would make the compiler keep the whole cache in memory).
  */
 STYLOS_AVX512_INLINE void refill(Cache& cache, __mmask16 dry, const Walk& walk)
