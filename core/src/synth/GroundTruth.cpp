@@ -1,5 +1,7 @@
 #include "stylos/core/synth/GroundTruth.h"
 
+#include "stylos/core/util/AtomicTextFile.h"
+
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -48,29 +50,7 @@ nlohmann::json buildGroundTruth(const GroundTruthInput& input)
 
 Status writeGroundTruth(const std::filesystem::path& path, const nlohmann::json& truth)
 {
-    std::filesystem::path temporary = path;
-    temporary += ".part";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            return Error::at(ErrorCode::WriteFailed, temporary.string(), {},
-                             std::string("cannot create: ") + std::strerror(errno));
-        out << truth.dump(2) << '\n';
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            return Error::at(ErrorCode::WriteFailed, temporary.string(), {}, "write failed");
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        return Error::at(ErrorCode::WriteFailed, path.string(), {}, "cannot rename into place: " + error.message());
-    }
-    return {};
+    return writeTextFileAtomically(path, truth.dump(2) + "\n");
 }
 
 } // namespace stylos::core::synth

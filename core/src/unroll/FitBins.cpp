@@ -33,9 +33,12 @@ std::vector<FitBin> medianRadiusByT(const std::vector<double>& t, const std::vec
     std::vector<FitBin> result;
     if (t.empty() || bins < 1) return result;
     std::vector<double> sorted = t;
-    std::sort(sorted.begin(), sorted.end());
-    const double lo = sorted[std::size_t(0.001 * double(sorted.size() - 1))];
-    const double hi = sorted[std::size_t(0.999 * double(sorted.size() - 1))];
+    const auto at = [&](double q) {
+        const auto k = sorted.begin() + std::ptrdiff_t(q * double(sorted.size() - 1));
+        std::nth_element(sorted.begin(), k, sorted.end());
+        return *k;
+    };
+    const double lo = at(0.001), hi = at(0.999);
     const double width = (hi - lo) / bins;
     if (!(width > 0.0)) {
         std::vector<double> all = r;

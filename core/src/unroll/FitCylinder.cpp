@@ -19,6 +19,7 @@ constexpr int kMaxRounds = 30; ///< Gauss–Newton rounds on the sample
 constexpr int kMaxHalvings = 8;
 constexpr int kMaxProfileUpdates = 8;
 constexpr std::size_t kCoarsePoints = 250'000; ///< phase 1's share of the sample
+constexpr std::size_t kGapPoints = 250'000;    ///< gap(): every k-th point of the sample, about this many
 constexpr double kRefineTolerance = 1e-6;      ///< radians, or relative to the scale
 constexpr std::size_t kProfilePointsPerBin = 50;
 constexpr std::size_t kMinProfileBins = 64, kMaxProfileBins = 4096;
@@ -316,8 +317,9 @@ double FitCylinder::gap(const FitPoints& sample) const
     const RadialModel& m = m_model;
     const Eigen::Vector3d q = m.axis.point + m_centre, d = m.axis.direction, e1 = m.reference, e2 = d.cross(e1);
     std::vector<double> t;
-    t.reserve(sample.size());
-    for (std::size_t i = 0; i < sample.size(); ++i) {
+    const std::size_t stride = std::max<std::size_t>(1, sample.size() / kGapPoints);
+    t.reserve(sample.size() / stride + 1);
+    for (std::size_t i = 0; i < sample.size(); i += stride) {
         const Eigen::Vector3d w(static_cast<double>(sample.xyz[3 * i]) - q.x(),
                                 static_cast<double>(sample.xyz[3 * i + 1]) - q.y(),
                                 static_cast<double>(sample.xyz[3 * i + 2]) - q.z());

@@ -60,8 +60,8 @@ class FitCylinder {
      *  the statistics at the current model, then its Gauss–Newton step. @return false when cancelled. */
     bool polish(const float* xyz, std::size_t count, const FitStage& stage);
 
-    /** @brief The longest empty stretch of the axis (metres) between the sample's inliers (fewer than
-     *  3 in a slice of 1/200 of their extent): separate objects along the axis. */
+    /** @brief The longest empty stretch of the axis (metres) between the inliers among about 250 k
+     *  points of @p sample (fewer than 3 in a slice of 1/200 of their extent): separate objects. */
     double gap(const FitPoints& sample) const;
 
     /** Turns the axis round (direction reversed, slope negated): the same surface. */

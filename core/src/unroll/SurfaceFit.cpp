@@ -65,6 +65,18 @@ std::string refusal(const char* what, double rms, const char* radiusName, double
            fixed(radius, radius < 0.1 ? 4 : 2) + " m (inliers " + fixed(inliers * 100.0, 0) + " %)";
 }
 
+/** The report of a fitted @p surface from the statistics of its final pass (RadialStats or MeridianStats). */
+template <class Stats> FitReport reportFor(Surface surface, const Stats& s, std::uint64_t points, int iterations)
+{
+    FitReport report;
+    report.surface = std::move(surface);
+    report.rmsResidual = s.rms;
+    report.inlierFraction = s.inlierFraction();
+    report.points = points;
+    report.iterations = iterations;
+    return report;
+}
+
 /** The fit frame: cloud-local coordinates less the centroid of the seed sample; scale = RMS distance. */
 struct Frame {
     Eigen::Vector3d centre = Eigen::Vector3d::Zero();
@@ -105,6 +117,7 @@ struct Context {
     bool axisFree = true;
     unsigned threads = 1;
     FitStage stage;
+    FitPoints seedSample = {}; ///< ≤ 100 k points, with normals when they were needed for the seed
 };
 
 Result<FitReport> fitRadial(Context& c, bool cone)
@@ -117,8 +130,8 @@ Result<FitReport> fitRadial(Context& c, bool cone)
     FitLine axis = c.axis;
     axis.point -= axis.point.dot(axis.direction) * axis.direction;
     std::vector<double> t, r;
-    axialCoordinates(sample, c.frame.centre, axis, t, r);
-    const int bins = int(std::clamp<std::size_t>(sample.size() / 2000, 8, 128));
+    axialCoordinates(c.seedSample, c.frame.centre, axis, t, r);
+    const int bins = int(std::clamp<std::size_t>(t.size() / 1000, 8, 128));
     FitProfileLine line = robustProfileLine(medianRadiusByT(t, r, bins), cone);
     // Moved onto the densest band of radii about it: the surface, where bed faces, fracture faces and
     // clutter spread out (a fragment's outer face may hold a quarter of its points).
@@ -170,13 +183,7 @@ Result<FitReport> fitRadial(Context& c, bool cone)
     Result<Surface> surface =
         cone ? Surface::cone(world, bottomRadius, m.slope, meanRadius) : Surface::cylinder(world, bottomRadius);
     if (!surface) return invalid(c.source, std::string("not ") + what + ": " + surface.error().message);
-    FitReport report;
-    report.surface = std::move(surface).value();
-    report.rmsResidual = s.rms;
-    report.inlierFraction = s.inlierFraction();
-    report.points = n;
-    report.iterations = fit.iterations();
-    return report;
+    return reportFor(std::move(surface).value(), s, n, fit.iterations());
 }
 
 /** Arc-length-weighted mean radius of a polyline. */
@@ -260,13 +267,7 @@ Result<FitReport> fitRevolution(Context& c)
     if (!meridian) return invalid(c.source, "not a surface of revolution: " + meridian.error().message);
     auto surface = Surface::revolution(world, std::move(meridian).value(), reference);
     if (!surface) return invalid(c.source, "not a surface of revolution: " + surface.error().message);
-    FitReport report;
-    report.surface = std::move(surface).value();
-    report.rmsResidual = s.rms;
-    report.inlierFraction = s.inlierFraction();
-    report.points = n;
-    report.iterations = fit.iterations();
-    return report;
+    return reportFor(std::move(surface).value(), s, n, fit.iterations());
 }
 
 } // namespace
@@ -293,7 +294,8 @@ Result<FitReport> fitSurface(const cloud::PointCloud& cloud, const FitOptions& o
               !options.axis.has_value(),
               fitThreads(options.threads),
               FitStage{progress ? &*monotonic : nullptr, 0.0, 1.0}};
-    FitPoints seed = gatherPoints(cloud, stratifiedSample(n, kSeedPoints, options.seed, kSeedStream), true);
+    FitPoints& seed = c.seedSample;
+    seed = gatherPoints(cloud, stratifiedSample(n, kSeedPoints, options.seed, kSeedStream), true);
     if (seed.size() < kMinPoints) return invalid(source, "fewer than 100 finite points");
     c.frame = frameOf(seed);
     if (!(c.frame.scale > 0.0)) return invalid(source, "all points coincide");

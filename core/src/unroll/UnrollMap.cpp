@@ -1,5 +1,7 @@
 #include "stylos/core/unroll/UnrollMap.h"
 
+#include "stylos/core/util/AtomicTextFile.h"
+
 #include "stylos/core/shading/HeightField.h"
 
 #include <Eigen/Geometry>
@@ -162,29 +164,7 @@ Result<UnrollMap> UnrollMap::fromJson(const nlohmann::json& j, const std::string
 
 Status UnrollMap::writeSidecar(const std::filesystem::path& path) const
 {
-    std::filesystem::path temporary = path;
-    temporary += ".part";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            return Error::at(ErrorCode::WriteFailed, path.string(), {},
-                             "cannot create " + temporary.string() + ": " + std::strerror(errno));
-        out << toJson().dump(2) << '\n';
-        out.close();
-        if (!out) {
-            std::error_code ignored;
-            std::filesystem::remove(temporary, ignored);
-            return Error::at(ErrorCode::WriteFailed, path.string(), {}, "write failed");
-        }
-    }
-    std::error_code error;
-    std::filesystem::rename(temporary, path, error);
-    if (error) {
-        std::error_code ignored;
-        std::filesystem::remove(temporary, ignored);
-        return Error::at(ErrorCode::WriteFailed, path.string(), {}, "cannot rename into place: " + error.message());
-    }
-    return {};
+    return writeTextFileAtomically(path, toJson().dump(2) + "\n");
 }
 
 Result<UnrollMap> UnrollMap::readSidecar(const std::filesystem::path& path)
