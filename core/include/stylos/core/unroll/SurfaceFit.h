@@ -14,34 +14,36 @@
  * direction c through c × c̄. The normal lines of any surface of revolution meet the axis and those of a
  * bed face are parallel to it, so both lie in the complex; the cavity's and the clutter's are trimmed.
  *
- * Cylinder and cone. The start: r(t) = R + s·t through the median radii of 8–128 axial slices
- * (Theil–Sen; s = 0 for a cylinder). Then trimmed Gauss–Newton on the radial residuals
- * h = ρ − R − s·t − f(φ) (ρ the distance from the axis) over a stratified sample of ≤ 1 M points,
- * minimising Σ min(h², τ²) with steps halved until that cost does not grow, where τ is the fixed point of
- * τ = 3 × 1.4826 × median{|h| ≤ τ} (a histogram of |h|): the scale of the band of residuals that holds
- * the surface, whatever the share of bed faces (over half the points of a short drum), breaks and
- * clutter. Phase 1 (on 250 k of the sample, f = 0) until the step and τ settle; phase 2 (the whole
- * sample) adds f, the median residual per azimuth bin with its mean and first harmonics removed (those
- * are R and the axis position): a fluted drum's flutes, 8 mm deep, leave only the noise, τ comes down
- * from ~10 mm to ~1 mm and the shallow rim of a broken cavity stops pulling the axis. f needs points all
- * round (≥ 98 % of the bins); on a fragment it stays 0. Last, one Gauss–Newton step over every point
- * with τ and f fixed; the statistics below come from that pass (taken just before its step, which
+ * Cylinder and cone. The start: r(t) = R + s·t through the median radii of 8–128 axial slices of the
+ * seed's sample (Theil–Sen; s = 0 for a cylinder), moved onto the densest band of radii about it (bed,
+ * fracture faces and clutter spread out, the surface peaks), τ from 5 % of R. Then trimmed Gauss–Newton
+ * on the radial residuals h = ρ − R − s·t − f(φ) (ρ the distance from the axis) over a stratified sample
+ * of ≤ 1 M points, minimising Σ min(h², τ²) with steps halved until that cost does not grow, where τ is
+ * the fixed point of τ = 3 × 1.4826 × median{|h| ≤ τ} (a histogram of |h|): the scale of the band of
+ * residuals that holds the surface, whatever the share of bed faces (over half the points of a short
+ * drum), breaks and clutter. Phase 1 (on 250 k of the sample, f = 0) until the step and τ settle; phase 2
+ * (the whole sample) adds f, the median residual per azimuth bin with its mean and first harmonics
+ * removed (those are R and the axis position): a fluted drum's flutes, 8 mm deep, leave only the noise, τ
+ * comes down from ~10 mm to ~1 mm and the shallow rim of a broken cavity stops pulling the axis. f needs
+ * points all round (≥ 98 % of the bins); on a fragment it stays 0. Last, one Gauss–Newton step over every
+ * point with τ and f fixed; the statistics below come from that pass (taken just before its step, which
  * moves the axis by micrometres). R is the least-squares radius of the inliers: for a fluted drum the
  * mean radius of the flutes as the scan samples them, not the fillet radius.
  *
- * Revolution. A meridian (Meridian.h) from the median radii of axial slices, then principal-curve
- * rounds on a sample of ≤ 200 k points: project on the meridian (points beyond an end along its
- * tangent, so the curve grows over bed faces and up to an apex), τ as above, cut the inliers' range
- * of arc length into bins at least 4τ long (≤ 300; finer detail than the scatter only wanders), move
- * each bin's point along the normal by the shorth midpoint of its h (the densest half: the omphalos's
- * net, proud of the ovoid on less than half of a circle, does not pull it), smoothing the moves by
- * (1, 2, 1) / 4; the band the curve follows starts at 3 % of the cloud's size and halves each round down
- * to 3τ, so ledges and corners missed by the slices are pulled in first. Without a given axis, one
- * Gauss–Newton step of the axis per round on the inliers' h with the meridian held. At most 16 rounds.
- * The statistics (RMS, inlier fraction) are the sample's: within a percent of all points' for a
- * larger cloud, in a fraction of the time (the unroller projects every point anyway).
- * referenceRadius() is the meridian's arc-length-weighted mean radius; its reach (how far the unroller
- * finds points) is max(8τ, 5 % of the meridian's size).
+ * Revolution. A meridian (Meridian.h) from the median radii of axial slices, then principal-curve rounds
+ * on a sample of ≤ 200 k points (FitMeridian.h): project on the meridian (points beyond an end along its
+ * direction over the last vertices, so the curve grows over bed faces and up to an apex, but only across
+ * occupied bins: not along a stray tangent through clutter), τ as above, cut the inliers' range of arc
+ * length into bins at least 4τ long (≤ 300; finer detail than the scatter only wanders), move each bin's
+ * point along the normal by the shorth midpoint of its h (the densest half: the omphalos's net, proud of
+ * the ovoid on less than half of a circle, does not pull it), smoothing the moves by (1, 2, 1) / 4; the
+ * band the curve follows starts at 3 % of the cloud's size and halves each round down to 3τ, so ledges
+ * and corners missed by the slices are pulled in first. Without a given axis, one Gauss–Newton step of
+ * the axis per round on the inliers' h with the meridian held. At most 16 rounds. The statistics (RMS,
+ * inlier fraction) are the sample's: within a percent of all points' for a larger cloud, in a fraction of
+ * the time (the unroller projects every point anyway). referenceRadius() is the meridian's
+ * arc-length-weighted mean radius; its reach (how far the unroller finds points) is max(8τ, 5 % of the
+ * meridian's size).
  *
  * Orientation, when the axis is not given: a cone's wider end and a revolution's wider end (the mean
  * radius of the lowest vs the highest quarter of the meridian's t range) at the bottom when they differ
@@ -78,8 +80,11 @@
  * histograms; normal estimation is itself thread-count independent). The seed changes which points the
  * samples hold (clouds over 100 k points), hence the last digits.
  *
- * Speed (stylos_fit_benchmark, see docs/benchmarks.md): 30 M points of a broken fluted drum with 2 %
- * clutter in about 1.5 s on 2 cores. Memory: the samples (≤ 1.2 M points, ~40 MB) beside the cloud.
+ * Speed (stylos_fit_benchmark --points 30000000, idle 2-core 2.5 GHz Xeon dev box): 30 M points of a
+ * broken fluted drum with 2 % clutter, no normals, fitted as a cylinder in 1.27–1.56 s (10 runs; one
+ * thread 2.6 s), as a cone in 1.7 s, as a revolution in 1.0–1.1 s; a plain drum 1.2 s. Half of it is the
+ * final pass over all points (about 36 ns of one core per point). Memory: the samples (≤ 1.3 M points, about
+ * 50 MB with the per-point work arrays) beside the cloud.
  * Units: metres, radians. Thread-safety: reentrant; starts and joins its own threads. Progress (rising
  * to 1) and cancel through ProgressSink, checked every 16 Ki points (Cancelled).
  */
