@@ -2,6 +2,7 @@
 
 #include "CommandLine.h"
 
+#include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/octree/PackedOctree.h"
 
 #include <nlohmann/json.hpp>
@@ -119,9 +120,7 @@ bool isPoctFile(const std::filesystem::path& path)
 {
     std::string ext = path.extension().string();
     std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    if (ext == ".poct") return true;
-    const auto bytes = firstBytes(path, 8);
-    return bytes.size() == 8 && oct::isPoctSignature(bytes);
+    return ext == ".poct" || core::cloud::isPoctPath(path);
 }
 
 int runPoctInfo(const std::string& file, bool json)

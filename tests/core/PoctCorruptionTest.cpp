@@ -2,6 +2,7 @@
 // every length, a flipped byte (and a flipped bit) at every offset, and files whose checksums were
 // recomputed after the damage ("re-signed"), so that the structural checks behind the checksums are
 // exercised too. The layout is read here from docs/file-format.md's offsets, not from the code.
+#include "PoctTestSupport.h"
 #include "ReferenceOctree.h"
 #include "TestSupport.h"
 #include "stylos/core/octree/PackedOctree.h"
@@ -16,16 +17,9 @@ using namespace stylos::core;
 using namespace stylos::core::octree;
 using stylos::test::ReferenceOctree;
 using stylos::test::TempDir;
+using stylos::test::valueAt;
 
 namespace {
-
-template <typename T>
-T get(const std::vector<std::uint8_t>& b, std::size_t offset)
-{
-    T v;
-    std::memcpy(&v, b.data() + offset, sizeof v);
-    return v;
-}
 
 template <typename T>
 void set(std::vector<std::uint8_t>& b, std::size_t offset, T v)
@@ -46,17 +40,17 @@ struct Layout {
     explicit Layout(const std::vector<std::uint8_t>& b)
     {
         if (b.size() < 64) return;
-        headerBytes = get<std::uint32_t>(b, 12);
+        headerBytes = valueAt<std::uint32_t>(b, 12);
         depth = b[56];
         table = 64 + 8 * (static_cast<std::size_t>(depth) + 1);
-        const auto count = get<std::uint32_t>(b, 60);
+        const auto count = valueAt<std::uint32_t>(b, 60);
         if (headerBytes < 8 || headerBytes > b.size() || table + 48 * std::uint64_t(count) > b.size()) return;
         for (std::uint32_t s = 0; s < count; ++s) {
             const std::size_t e = table + 48 * s;
             const char* name = reinterpret_cast<const char*>(b.data() + e);
             sections.push_back({std::string(name, strnlen(name, 16)), e,
-                                static_cast<std::size_t>(get<std::uint64_t>(b, e + 24)),
-                                static_cast<std::size_t>(get<std::uint64_t>(b, e + 32))});
+                                static_cast<std::size_t>(valueAt<std::uint64_t>(b, e + 24)),
+                                static_cast<std::size_t>(valueAt<std::uint64_t>(b, e + 32))});
         }
         valid = true;
     }
@@ -220,7 +214,7 @@ TEST(PoctCorruption, ResignedStructuralDamage)
     }
     {   // Cell counts that contradict the section lengths.
         auto bad = bytes;
-        set<std::uint64_t>(bad, 64 + 8 * 5, get<std::uint64_t>(bad, 64 + 8 * 5) + 1);
+        set<std::uint64_t>(bad, 64 + 8 * 5, valueAt<std::uint64_t>(bad, 64 + 8 * 5) + 1);
         expectError(bad, ErrorCode::Malformed, "length");
     }
     {   // A level with more cells than 8 × its parent level.

@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <memory>
 #include <vector>
@@ -18,6 +19,15 @@ inline std::vector<std::uint8_t> fileBytes(const std::filesystem::path& p)
 {
     const auto c = readBytes(p);
     return {c.begin(), c.end()};
+}
+
+/** The little-endian value of type T at byte @p offset of a file image. */
+template <typename T>
+T valueAt(const std::vector<std::uint8_t>& bytes, std::size_t offset)
+{
+    T v;
+    std::memcpy(&v, bytes.data() + offset, sizeof v);
+    return v;
 }
 
 /** writePoct + open; fails the test (and returns nullptr) on error. */

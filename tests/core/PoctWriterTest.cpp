@@ -17,17 +17,10 @@ using namespace stylos::core::octree;
 using stylos::test::ManualOctree;
 using stylos::test::ReferenceOctree;
 using stylos::test::TempDir;
+using stylos::test::valueAt;
 using stylos::test::fileBytes;
 
 namespace {
-
-template <typename T>
-T at(const std::vector<std::uint8_t>& b, std::size_t offset)
-{
-    T v;
-    std::memcpy(&v, b.data() + offset, sizeof v);
-    return v;
-}
 
 std::size_t entriesIn(const std::filesystem::path& dir)
 {
@@ -66,19 +59,19 @@ TEST(PoctWriter, ByteLayoutOfTheSmallestTree)
     // Header: 64 fixed + 8 × 2 levels + 48 × 3 sections + 8 checksum = 232 bytes.
     const std::uint8_t magic[8] = {0x89, 'P', 'O', 'C', 'T', '\r', '\n', 0x1A};
     EXPECT_EQ(std::memcmp(b.data(), magic, 8), 0);
-    EXPECT_EQ(at<std::uint32_t>(b, 8), 1u);
-    EXPECT_EQ(at<std::uint32_t>(b, 12), 232u);
-    EXPECT_EQ(at<double>(b, 16), 1.5);
-    EXPECT_EQ(at<double>(b, 24), -2.0);
-    EXPECT_EQ(at<double>(b, 32), 3.25);
-    EXPECT_EQ(at<double>(b, 40), 0.75);
-    EXPECT_EQ(at<std::uint64_t>(b, 48), 7u);
+    EXPECT_EQ(valueAt<std::uint32_t>(b, 8), 1u);
+    EXPECT_EQ(valueAt<std::uint32_t>(b, 12), 232u);
+    EXPECT_EQ(valueAt<double>(b, 16), 1.5);
+    EXPECT_EQ(valueAt<double>(b, 24), -2.0);
+    EXPECT_EQ(valueAt<double>(b, 32), 3.25);
+    EXPECT_EQ(valueAt<double>(b, 40), 0.75);
+    EXPECT_EQ(valueAt<std::uint64_t>(b, 48), 7u);
     EXPECT_EQ(b[56], 1);            // depth
     EXPECT_EQ(b[57], 1);            // Octahedral16
-    EXPECT_EQ(at<std::uint16_t>(b, 58), 0u);
-    EXPECT_EQ(at<std::uint32_t>(b, 60), 3u);
-    EXPECT_EQ(at<std::uint64_t>(b, 64), 1u);
-    EXPECT_EQ(at<std::uint64_t>(b, 72), 3u);
+    EXPECT_EQ(valueAt<std::uint16_t>(b, 58), 0u);
+    EXPECT_EQ(valueAt<std::uint32_t>(b, 60), 3u);
+    EXPECT_EQ(valueAt<std::uint64_t>(b, 64), 1u);
+    EXPECT_EQ(valueAt<std::uint64_t>(b, 72), 3u);
     // Sections: masks at 256 (1 byte), normals at 320 (8 bytes), colour at 384 (9 bytes): 393 bytes.
     ASSERT_EQ(b.size(), 393u);
     ASSERT_EQ(*written, 393u);
@@ -94,17 +87,17 @@ TEST(PoctWriter, ByteLayoutOfTheSmallestTree)
         EXPECT_EQ(b[e + 17], sections[s].type);
         EXPECT_EQ(b[e + 18], sections[s].comps);
         for (int r = 19; r < 24; ++r) EXPECT_EQ(b[e + r], 0);
-        EXPECT_EQ(at<std::uint64_t>(b, e + 24), sections[s].offset);
-        EXPECT_EQ(at<std::uint64_t>(b, e + 32), sections[s].length);
-        EXPECT_EQ(at<std::uint64_t>(b, e + 40), xxh64(b.data() + sections[s].offset, sections[s].length));
+        EXPECT_EQ(valueAt<std::uint64_t>(b, e + 24), sections[s].offset);
+        EXPECT_EQ(valueAt<std::uint64_t>(b, e + 32), sections[s].length);
+        EXPECT_EQ(valueAt<std::uint64_t>(b, e + 40), xxh64(b.data() + sections[s].offset, sections[s].length));
     }
-    EXPECT_EQ(at<std::uint64_t>(b, 224), xxh64(b.data(), 224));
+    EXPECT_EQ(valueAt<std::uint64_t>(b, 224), xxh64(b.data(), 224));
     for (std::size_t i = 232; i < 256; ++i) EXPECT_EQ(b[i], 0) << i; // padding
     EXPECT_EQ(b[256], 0x29);
     const std::uint16_t root = encodeNormal(NormalCodeKind::Octahedral16, 0, 0, 1);
-    EXPECT_EQ(at<std::uint16_t>(b, 320), root);
-    EXPECT_EQ(at<std::uint16_t>(b, 322), encodeNormal(NormalCodeKind::Octahedral16, -1, -1, -1));
-    EXPECT_EQ(at<std::uint16_t>(b, 324), encodeNormal(NormalCodeKind::Octahedral16, 1, 1, -1));
+    EXPECT_EQ(valueAt<std::uint16_t>(b, 320), root);
+    EXPECT_EQ(valueAt<std::uint16_t>(b, 322), encodeNormal(NormalCodeKind::Octahedral16, -1, -1, -1));
+    EXPECT_EQ(valueAt<std::uint16_t>(b, 324), encodeNormal(NormalCodeKind::Octahedral16, 1, 1, -1));
     const std::vector<std::uint8_t> colours(b.begin() + 384, b.end());
     EXPECT_EQ(colours, (std::vector<std::uint8_t>{0, 0, 200, 30, 60, 200, 50, 100, 200}));
 }
@@ -157,14 +150,14 @@ TEST(PoctWriter, ExtraLayersAreWrittenAfterTheColour)
     auto size = writePoct(tree, dir / "t.poct", layers);
     ASSERT_TRUE(size.ok()) << size.error().message;
     const auto b = fileBytes(dir / "t.poct");
-    EXPECT_EQ(at<std::uint32_t>(b, 60), 5u);
+    EXPECT_EQ(valueAt<std::uint32_t>(b, 60), 5u);
     const std::size_t table = 64 + 16;
     EXPECT_STREQ(reinterpret_cast<const char*>(b.data() + table + 2 * 48), "colour");
     EXPECT_STREQ(reinterpret_cast<const char*>(b.data() + table + 3 * 48), "ambient");
     EXPECT_EQ(b[table + 3 * 48 + 17], 3);
     EXPECT_STREQ(reinterpret_cast<const char*>(b.data() + table + 4 * 48), "class");
     EXPECT_EQ(b[table + 4 * 48 + 18], 2);
-    EXPECT_EQ(at<std::uint64_t>(b, table + 4 * 48 + 32), 8u);
+    EXPECT_EQ(valueAt<std::uint64_t>(b, table + 4 * 48 + 32), 8u);
 }
 
 TEST(PoctWriter, RefusesBadLayers)

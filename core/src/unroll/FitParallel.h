@@ -46,17 +46,6 @@ class FitMonotonicSink final : public ProgressSink {
     std::atomic<double> m_high{0.0};
 };
 
-/** @brief A FitStage as a ProgressSink, for the algorithms the fit calls (normal estimation). */
-class FitStageSink final : public ProgressSink {
-  public:
-    explicit FitStageSink(const FitStage& stage) : m_stage(stage) {}
-    void update(double fraction) override { m_stage.update(fraction); }
-    bool isCancelRequested() const override { return m_stage.cancelled(); }
-
-  private:
-    FitStage m_stage;
-};
-
 /**
  * @brief Calls body(k, begin, end, worker) for every chunk k of [0, count): chunk k is
  *        [k·chunk, min(count, (k+1)·chunk)). The chunks are fixed by @p count and @p chunk alone, so

@@ -1,5 +1,7 @@
 #include "FitSeed.h"
 
+#include "UnrollStageProgress.h"
+
 #include "stylos/core/normals/NormalEstimation.h"
 
 #include <Eigen/Dense>
@@ -29,7 +31,7 @@ Status estimateSampleNormals(FitPoints& sample, const Eigen::Vector3d& centre, u
     normals::NormalOptions options;
     options.threads = threads;
     options.orientation = normals::NormalOrientation::Unoriented;
-    FitStageSink sink(stage);
+    UnrollStageProgress sink(stage.sink, stage.from, stage.to);
     auto report = normals::estimateNormals(positions, sample.normals, options, &sink);
     if (!report) {
         sample.normals.clear();
