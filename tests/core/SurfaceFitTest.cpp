@@ -298,6 +298,45 @@ TEST(SurfaceFitTest, RefusesCloudsThatAreNoSurfaceOfRevolution)
     }
 }
 
+TEST(SurfaceFitTest, RefusesANearlyFlatCloudUnlessTheAxisIsGiven)
+{
+    // 20 000 points of a 1 m × 1 m patch of a cylinder of radius 50 m (an arc of 1.1°), 1 mm noise: any
+    // huge cylinder fits it, as one fits an airborne terrain scan.
+    synth::Random random(4);
+    cloud::PointCloud cloud;
+    cloud.source = "terrain";
+    const double radius = 50.0;
+    for (int i = 0; i < 20000; ++i) {
+        const double phi = random.uniform(-0.5, 0.5) / radius, z = random.uniform(0.0, 1.0);
+        const double r = radius + 0.001 * random.normal();
+        cloud.addWorld({r * std::cos(phi), r * std::sin(phi), z});
+    }
+    const auto free = fitSurface(cloud, kindOptions(SurfaceKind::Cylinder));
+    ASSERT_FALSE(free.ok()) << free->surface.toJson().dump();
+    EXPECT_EQ(free.error().message.rfind("terrain: not a cylinder: ", 0), 0u) << free.error().message;
+
+    FitOptions given = kindOptions(SurfaceKind::Cylinder);
+    given.axis = Axis{{0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}};
+    const auto fitted = fitSurface(cloud, given);
+    ASSERT_TRUE(fitted.ok()) << fitted.error().message;
+    EXPECT_NEAR(fitted->surface.radius(), radius, 1e-3);
+}
+
+TEST(SurfaceFitTest, RefusesAnAirborneTerrainScanAsNearlyFlat)
+{
+    // Autzen (airborne LiDAR, 339 m RMS size): a cylinder of radius ~9.6 km and a cone of ~1.7 km fit it.
+    SKIP_WITHOUT_SHARED_DATA();
+    auto loaded = cloud::loadPointCloud(test::sharedData() / "formats" / "autzen_trim.las");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    for (SurfaceKind kind : {SurfaceKind::Cylinder, SurfaceKind::Cone}) {
+        const auto fitted = fitSurface(*loaded, kindOptions(kind));
+        ASSERT_FALSE(fitted.ok()) << fitted->surface.toJson().dump();
+        EXPECT_NE(fitted.error().message.find("autzen_trim.las: not a c"), std::string::npos) << fitted.error().message;
+        EXPECT_NE(fitted.error().message.find("the points are nearly flat"), std::string::npos)
+            << fitted.error().message;
+    }
+}
+
 TEST(SurfaceFitTest, RefusesSeparateObjectsAlongTheAxis)
 {
     // Two drums one above the other with a gap as tall as both: each piece is a cylinder, the pair

@@ -31,6 +31,11 @@ constexpr double kMaxRmsOverRadius = 0.3;          ///< cylinder, cone
 constexpr double kMaxRmsOverSize = 0.2;            ///< cylinder, cone
 constexpr double kMaxRmsOverRadiusMeridian = 0.15; ///< revolution
 constexpr double kMaxRmsOverSizeMeridian = 0.1;    ///< revolution
+/// A free axis whose radius exceeds this many times the cloud's size: the points are nearly flat (an
+/// arc of under ~6° of its circle), e.g. a terrain, which any huge cylinder fits.
+constexpr double kMaxRadiusOverSize = 10.0;
+/// A free axis whose arc bulges over the cloud by less than this many RMS residuals: the curvature is noise.
+constexpr double kMinSagittaOverRms = 3.0;
 constexpr double kMaxGap = 0.2;                    ///< of the extent: the longest stretch without inliers
 constexpr double kMinThickness = 0.02;             ///< revolution: spread of the inliers along / across the axis
 constexpr double kMinInlierFraction = 0.05;        ///< a thin drum slab still has 15 % on its side
@@ -171,6 +176,17 @@ Result<FitReport> fitRadial(Context& c, bool cone)
     if (!(meanRadius > 0.0) || s.rms > kMaxRmsOverRadius * meanRadius || s.rms > kMaxRmsOverSize * c.frame.scale ||
         s.inlierFraction() < kMinInlierFraction)
         return invalid(c.source, refusal(what, s.rms, radiusName, std::abs(meanRadius), s.inlierFraction()));
+    // Nearly flat: the radius dwarfs the cloud, or the arc's sagitta over the cloud (about 0.75 scale² / R
+    // for a patch whose RMS distance to its centre is the scale) is lost in the residual.
+    const double sagitta = 0.75 * c.frame.scale * c.frame.scale / std::abs(meanRadius);
+    if (c.axisFree && (std::abs(meanRadius) > kMaxRadiusOverSize * c.frame.scale || sagitta < kMinSagittaOverRms * s.rms))
+        return invalid(c.source, std::string("not ") + what + ": the " + radiusName + " " +
+                                     fixed(std::abs(meanRadius), 2) + " m is " +
+                                     fixed(std::abs(meanRadius) / c.frame.scale, 1) + " times the cloud's size (" +
+                                     fixed(c.frame.scale, 2) + " m) and its arc bulges " + fixed(sagitta * 1000.0, 1) +
+                                     " mm for an RMS residual of " + fixed(s.rms * 1000.0, 1) +
+                                     " mm: the points are nearly flat (give the axis if they are a shallow arc of a"
+                                     " large drum)");
     if (gap > kMaxGap * span)
         return invalid(c.source, std::string("not ") + what +
                                      ": the points form separate groups along the axis (a gap of " + fixed(gap, 3) +

@@ -60,7 +60,10 @@
  * radius or 20 % of the cloud's size (the RMS distance of its points from their centroid) — for a
  * revolution 15 % and 10 %; fewer than 5 % inliers; the inliers leave a gap of more than 20 % of their
  * extent along the axis (or the meridian): separate objects; a revolution whose inliers spread less
- * than 2 % as much along the axis as across it: a plane. Measured (RMS / radius, RMS / size):
+ * than 2 % as much along the axis as across it: a plane; with a free axis, a cylinder or cone nearly
+ * flat over the cloud — radius over 10 × its size, or an arc bulging (sagitta ≈ 0.75 size² / R) less
+ * than 3 RMS residuals: an airborne terrain scan (Autzen: a 9.6 km cylinder, a 1.7 km cone) is refused,
+ * a shallow arc of a large drum fits with its axis given. Measured (RMS / radius, RMS / size):
  * generated drums 0.5 %, 0.5 %; the omphalos as a revolution 0.06 %, 0.04 %; the Happy Buddha
  * (1.1 M points, a statuette) as a cylinder 25 %, 11 %, a cone 19 %, 9 %, a revolution 11 %, 5 %: all
  * accepted; the Igea head: cylinder 29 %, 22 % (refused), cone 27 %, 19 % (accepted), revolution 15 %,
