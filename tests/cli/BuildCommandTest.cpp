@@ -14,6 +14,8 @@
 #include <unistd.h>
 
 #include <chrono>
+#include <fstream>
+#include <string>
 #include <thread>
 
 extern char** environ;
@@ -208,6 +210,21 @@ TEST(CliBuild, SyntheticDrumIsReproducibleAndMethodIndependent)
     EXPECT_EQ(stylos::test::readBytes(b), stylos::test::readBytes(c));
 }
 
+/** Whether process @p pid catches @p signal (Linux: the SigCgt mask of /proc/PID/status), polled until @p limit. */
+static bool waitUntilCatching(pid_t pid, int signal, std::chrono::seconds limit)
+{
+    const auto end = std::chrono::steady_clock::now() + limit;
+    while (std::chrono::steady_clock::now() < end) {
+        std::ifstream status("/proc/" + std::to_string(pid) + "/status");
+        std::string line;
+        while (std::getline(status, line))
+            if (line.rfind("SigCgt:", 0) == 0 && (std::stoull(line.substr(7), nullptr, 16) >> (signal - 1)) & 1u)
+                return true;
+        std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    }
+    return false;
+}
+
 TEST(CliBuild, CtrlCCancelsCleanly)
 {
     TempDir dir;
@@ -223,7 +240,10 @@ TEST(CliBuild, CtrlCCancelsCleanly)
     pid_t pid = 0;
     ASSERT_EQ(posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ), 0);
     posix_spawn_file_actions_destroy(&actions);
-    std::this_thread::sleep_for(std::chrono::milliseconds(700)); // well into the bounds pass
+    // Signal only once the CLI catches SIGINT (on a loaded machine start-up may take longer than any fixed
+    // delay), then give it time to get well into the bounds pass.
+    ASSERT_TRUE(waitUntilCatching(pid, SIGINT, std::chrono::seconds(20))) << "the CLI never installed its handler";
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));
     kill(pid, SIGINT);
     int status = 0;
     const auto start = std::chrono::steady_clock::now();
