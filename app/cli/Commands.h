@@ -10,5 +10,6 @@ int runGenerate(const std::vector<std::string>& args);
 int runNormals(const std::vector<std::string>& args);
 int runBuild(const std::vector<std::string>& args);
 int runUnroll(const std::vector<std::string>& args);
+int runAo(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

@@ -19,7 +19,8 @@ void printUsage(std::FILE* out)
                "  generate KIND -o OUT   synthetic scan with known truth: drum, omphalos or fragment\n"
                "  normals IN -o OUT.ply  estimate normals (k-nearest PCA) for a scan that has none\n"
                "  build IN -o OUT.poct   build the packed point octree of a scan (or of --synthetic-drum N)\n"
-               "  unroll IN -o OUT.png   the développée of a drum: fit, unroll, fill holes, shade (skydome)\n",
+               "  unroll IN -o OUT.png   the développée of a drum: fit, unroll, fill holes, shade (skydome)\n"
+               "  ao IN -o OUT.ply|poct  3D skydome (ambient occlusion) of the octree's cells\n",
                out);
 }
 
@@ -48,6 +49,7 @@ int main(int argc, char** argv)
     if (command == "normals") return runNormals(args);
     if (command == "build") return runBuild(args);
     if (command == "unroll") return runUnroll(args);
+    if (command == "ao") return runAo(args);
     std::fprintf(stderr, "stylos-cli: unknown command \"%s\"\n", command.c_str());
     printUsage(stderr);
     return ExitUsage;

@@ -1,0 +1,261 @@
+// stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
+//               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--json]
+#include "AoScratchFolder.h"
+#include "CommandLine.h"
+#include "Commands.h"
+#include "ConsoleProgress.h"
+
+#include "stylos/core/ao/AmbientOcclusion.h"
+#include "stylos/core/ao/AoCells.h"
+#include "stylos/core/ao/AoExport.h"
+#include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/octree/OctreeBuild.h"
+#include "stylos/core/octree/PackedOctree.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cctype>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <mutex>
+#include <numeric>
+#include <optional>
+#include <thread>
+
+namespace stylos::cli {
+
+namespace {
+
+namespace ao = core::ao;
+namespace oct = core::octree;
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+std::string lowerExtension(const fs::path& path)
+{
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+    return ext;
+}
+
+bool sameFile(const fs::path& a, const fs::path& b)
+{
+    std::error_code error;
+    return fs::equivalent(a, b, error) && !error;
+}
+
+/** Serialises update() for a sink that is not thread-safe (the skydome's workers all report). */
+class LockedProgress final : public core::ProgressSink {
+public:
+    explicit LockedProgress(core::ProgressSink& inner) : m_inner(inner) {}
+    void update(double fraction) override
+    {
+        std::lock_guard lock(m_mutex);
+        m_inner.update(fraction);
+    }
+    bool isCancelRequested() const override { return m_inner.isCancelRequested(); }
+
+private:
+    core::ProgressSink& m_inner;
+    std::mutex m_mutex;
+};
+
+struct AoRequest {
+    std::string input, output;
+    bool poctInput = false, plyOutput = false, json = false;
+    std::optional<int> level;
+    ao::AoOptions options;
+    oct::BuildOptions build;
+    core::io::ReadOptions read;
+};
+
+/** Reads and checks the command line (all but the level against the octree); false with @p problem set. */
+bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
+{
+    if (cl.positionals().size() != 1) return problem = "ao takes exactly one input file", false;
+    r.input = cl.positionals()[0];
+    r.output = cl.value("output").value_or("");
+    if (r.output.empty()) return problem = "ao needs -o OUT.ply or -o OUT.poct", false;
+    const std::string ext = lowerExtension(r.output);
+    if (ext != ".ply" && ext != ".poct")
+        return problem = "the output must be a .ply or .poct file, not \"" + r.output + "\"", false;
+    r.plyOutput = ext == ".ply";
+    r.json = cl.flag("json");
+
+    long long directions = r.options.directions, threads = 0, depth = r.build.depth, level = -1;
+    double bias = r.options.bias;
+    if (!cl.integer("directions", directions) || !cl.integer("threads", threads) || !cl.integer("depth", depth) ||
+        !cl.integer("level", level) || !cl.number("bias", bias))
+        return problem = cl.error(), false;
+    if (directions < 1 || directions > 65536) return problem = "--directions must be between 1 and 65536", false;
+    if (threads < 0 || threads > 1024) return problem = "--threads must be between 0 and 1024", false;
+    if (!(bias >= 0.0) || !std::isfinite(bias)) return problem = "--bias must be a finite number of cell edges ≥ 0", false;
+    if (const auto name = cl.value("method")) {
+        const auto method = ao::aoMethodFromName(*name);
+        if (!method) return problem = "unknown method \"" + *name + "\" (slices or depthmap)", false;
+        r.options.method = *method;
+    }
+    r.options.directions = int(directions);
+    r.options.threads = unsigned(threads);
+    r.options.bias = bias;
+    r.options.upperHemisphere = cl.flag("upper-hemisphere");
+    r.options.cosineWeighted = cl.flag("cosine");
+
+    r.poctInput = core::cloud::isPoctPath(r.input) || lowerExtension(r.input) == ".poct";
+    if (r.poctInput && (cl.value("depth") || cl.value("columns")))
+        return problem = "--depth and --columns apply to a point-file input only, not to the octree " + r.input, false;
+    if (depth < oct::MinOctreeDepth || depth > oct::MaxOctreeDepth)
+        return problem = "--depth must be between " + std::to_string(oct::MinOctreeDepth) + " and " +
+                         std::to_string(oct::MaxOctreeDepth), false;
+    r.build.depth = int(depth);
+    r.build.threads = threads > 0 ? unsigned(threads) : std::max(1u, std::thread::hardware_concurrency());
+    r.read.columns = cl.value("columns").value_or("");
+    if (cl.value("level")) {
+        const int deepest = r.poctInput ? oct::MaxOctreeDepth : r.build.depth;
+        if (level < 0 || level > deepest)
+            return problem = "--level must be between 0 and " + std::to_string(deepest) +
+                             (r.poctInput ? "" : " (the --depth of the octree built from " + r.input + ")"), false;
+        r.level = int(level);
+    }
+    if ((!r.poctInput || r.plyOutput) && sameFile(r.input, r.output))
+        return problem = "the output " + r.output + " would replace the input (only a .poct is updated in place)", false;
+    return true;
+}
+
+int fail(const core::Error& error)
+{
+    std::cerr << "stylos-cli: " << error.message << "\n";
+    return ExitFailure;
+}
+
+} // namespace
+
+int runAo(const std::vector<std::string>& args)
+{
+    CommandLine cl("ao", "IN -o OUT.ply|OUT.poct [options]",
+                   {{"output", "OUT", "leaf centres + ambient (.ply), or the octree + \"ambient\" layer (.poct; IN: in place)", "o"},
+                    {"directions", "D", "directions over the sphere (or hemisphere), 1..65536 (default 256)"},
+                    {"level", "L", "octree level of the skydome's cells (default: the deepest level whose cells still form a closed surface); values spread to the leaves"},
+                    {"method", "NAME", std::string("slices or depthmap (default ") +
+                                           ao::aoMethodName(ao::AoOptions{}.method) + ")"},
+                    {"upper-hemisphere", "", "only directions above the world's horizon (z > 0), as CloudCompare's PCV"},
+                    {"cosine", "", "weight each direction by the cosine to the normal (irradiance)"},
+                    {"bias", "B", "cell edges above a cell's tangent plane before a cell occludes it (default 1)"},
+                    {"depth", "N", "point-file input: leaf level of the octree built first, 1..21 (default 12)"},
+                    {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
+                    {"threads", "N", "worker threads (default: all cores)"},
+                    {"json", "", "print one JSON object on stdout"}});
+    if (!cl.parse(args)) return usageError(cl, cl.error());
+    if (cl.helpRequested()) {
+        std::cout << "Computes the 3D skydome (ambient occlusion) of a packed octree: for every cell, the fraction of\n"
+                     "the sky around its normal that no other cell hides. IN is a .poct or a point file (any format\n"
+                     "`info` reads), whose octree is then built first in a temporary folder beside OUT.\n"
+                  << cl.usage();
+        return ExitOk;
+    }
+    AoRequest r;
+    std::string problem;
+    if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
+
+    const auto start = Clock::now();
+    // A point file: its octree first, in a folder beside the output that goes when this function returns.
+    AoScratchFolder scratch;
+    fs::path octreePath = r.input;
+    std::optional<oct::BuildReport> built;
+    if (!r.poctInput) {
+        if (auto s = scratch.create(fs::path(r.output)); !s) return fail(s.error());
+        octreePath = scratch.path() / "octree.poct";
+        ConsoleProgress progress("building the octree of " + r.input);
+        auto report = oct::buildOctreeFile(r.input, octreePath, r.build, &progress, r.read);
+        if (!report) return fail(report.error());
+        built = std::move(report).value();
+    }
+    const double buildSeconds = built ? built->seconds : 0.0;
+
+    const auto readStart = Clock::now();
+    auto opened = oct::PackedOctree::open(octreePath);
+    if (!opened) return fail(opened.error());
+    const oct::PackedOctree& octree = opened.value();
+    const int level = r.level.value_or(ao::closedSurfaceLevel(octree));
+    if (level > octree.depth())
+        return usageError(cl, "--level " + std::to_string(level) + " is outside the levels 0.." +
+                                  std::to_string(octree.depth()) + " of " + r.input);
+    ao::AoCells cells;
+    {
+        ConsoleProgress progress("reading the cells of level " + std::to_string(level));
+        auto read = ao::cellsAtLevel(octree, level, &progress);
+        if (!read) return fail(read.error());
+        cells = std::move(read).value();
+    }
+    const double readSeconds = secondsSince(readStart);
+
+    const auto aoStart = Clock::now();
+    std::vector<float> perLeaf;
+    {
+        ConsoleProgress console("skydome, " + std::to_string(r.options.directions) + " directions");
+        LockedProgress progress(console);
+        auto values = ao::computeAmbientOcclusion(cells, r.options, &progress);
+        if (!values) return fail(values.error());
+        perLeaf = ao::valuesPerLeaf(cells, values.value());
+    }
+    const double aoSeconds = secondsSince(aoStart);
+
+    const auto writeStart = Clock::now();
+    const bool inPlace = !r.plyOutput && sameFile(octreePath, r.output);
+    {
+        ConsoleProgress progress("writing " + r.output);
+        auto written = r.plyOutput ? ao::writeAmbientPly(octree, perLeaf, r.output, &progress)
+                                   : ao::writeAmbientPoct(octree, perLeaf, r.output, &progress);
+        if (!written) return fail(written.error());
+    }
+    const double writeSeconds = secondsSince(writeStart);
+    const double seconds = secondsSince(start);
+    const double mean =
+        perLeaf.empty() ? 0.0 : std::accumulate(perLeaf.begin(), perLeaf.end(), 0.0) / double(perLeaf.size());
+    const unsigned threads = r.options.threads ? r.options.threads : std::max(1u, std::thread::hardware_concurrency());
+
+    if (r.json) {
+        nlohmann::json j{{"input", r.input},
+                         {"output", r.output},
+                         {"format", r.plyOutput ? "ply" : "poct"},
+                         {"in_place", inPlace},
+                         {"directions", r.options.directions},
+                         {"cells", cells.size()},
+                         {"level", level},
+                         {"depth", octree.depth()},
+                         {"leaves", perLeaf.size()},
+                         {"method", ao::aoMethodName(r.options.method)},
+                         {"upper_hemisphere", r.options.upperHemisphere},
+                         {"cosine", r.options.cosineWeighted},
+                         {"bias", r.options.bias},
+                         {"threads", threads},
+                         {"mean_ambient", mean},
+                         {"octree_built", built.has_value()},
+                         {"normals_estimated", built && built->normalsEstimated},
+                         {"build_seconds", buildSeconds},
+                         {"read_seconds", readSeconds},
+                         {"ao_seconds", aoSeconds},
+                         {"write_seconds", writeSeconds},
+                         {"seconds", seconds}};
+        std::cout << j.dump() << "\n";
+    } else {
+        if (built)
+            std::printf("built the octree of %s first: %llu points -> %llu leaves, depth %d%s, %.2f s\n",
+                        r.input.c_str(), static_cast<unsigned long long>(built->points),
+                        static_cast<unsigned long long>(built->leaves), built->depth,
+                        built->normalsEstimated ? " (normals estimated)" : "", buildSeconds);
+        std::printf("skydome of %zu cells at level %d (%zu leaves), %d directions, %s: mean ambient %.4f; wrote %s%s\n",
+                    cells.size(), level, perLeaf.size(), r.options.directions, ao::aoMethodName(r.options.method), mean,
+                    r.output.c_str(), inPlace ? " (in place)" : "");
+        std::printf("read %.2f s, skydome %.2f s, write %.2f s, total %.2f s\n", readSeconds, aoSeconds, writeSeconds,
+                    seconds);
+    }
+    return ExitOk;
+}
+
+} // namespace stylos::cli

@@ -1,0 +1,68 @@
+#pragma once
+/** @file
+ * @brief The 3D skydome (ambient occlusion) on the cells of one octree level (Duguet et al., VAST 2004,
+ *        section 6, figures 12–13): for every cell, the fraction of the sky around its normal that is
+ *        not hidden by other cells.
+ *
+ * The value, exactly: with directions d_k (Directions.h, each an equal solid angle), a cell with normal n
+ * and weight w_k = [n·d_k > 0] (or n·d_k with cosineWeighted) gets Σ w_k · v_k / Σ w_k, where v_k ∈ [0, 1]
+ * is its visibility from d_k; 0 when Σ w_k = 0 (no direction of the set in front of it). Visibility toward
+ * d of the cell at c: nothing in the way along the ray c + t·d, t > 0 — where only cells more than
+ * `bias` edges above the cell's tangent plane on that side count as occluders (a surface does not shadow
+ * itself: an occluder at distance t along the ray lies t·(n·d) above the plane, so the tolerance along
+ * the ray grows as bias / (n·d) toward grazing directions, the slope-scaled bias of shadow maps).
+ *
+ * Methods:
+ *  - Slices (the paper's): per direction, the cells are swept slice by slice along the direction's main
+ *    axis, from the sky inward, with a 2D occlusion mask (transmittance). The mask is kept in the light's
+ *    frame — each mask cell is one ray through all slices —, so moving to the next slice costs nothing;
+ *    a cell entering the mask at its slice's fractional offset splits its opacity by overlap area over
+ *    the (at most 2×2 of the) 9 mask cells its square may cover, once, instead of resampling the whole
+ *    mask every slice (which blurs a shadow like a binomial and costs the shadow's volume). Each cell
+ *    reads T = 1 − o at its centre ray, then adds its opacity: T ← T · (1 − coverage · opacity).
+ *    Self-shadowing: each mask cell remembers where its latest burst of writes began (one surface
+ *    crossed) and T before it; a reader skips that burst when it began within (bias + ¾)·|d_m| / (n·d)
+ *    slices. Sparse: 32×32 mask tiles allocated on first write, empty slices skipped: the cost grows
+ *    with the occupied cells, not the cube (SliceKernel.h).
+ *  - DepthMap: per direction, a shadow map of the cells projected across the direction (one pixel per
+ *    cell edge), the cell nearest the sky per pixel; a cell is visible when none lies ahead of it beyond
+ *    the slope-scaled bias. Binary visibility, two passes over the cells per direction.
+ * Both are compared with a brute-force reference (ReferenceAo.h) in docs/benchmarks.md.
+ *
+ * Multithreaded over directions (each thread its own accumulators, directions dealt by a fixed stride):
+ * the same thread count gives the same bits; another differs by float rounding at most (not at all for
+ * DepthMap with uniform weights, whose sums are small integers). Progress: the fraction of directions done; cancel is checked between directions.
+ * Thread-safety: reentrant. Failure modes: InvalidArgument (directions outside 1..65536, bias < 0),
+ * Cancelled.
+ */
+#include "stylos/core/ao/AoCells.h"
+#include "stylos/core/util/Progress.h"
+#include "stylos/core/util/Result.h"
+
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace stylos::core::ao {
+
+enum class AoMethod { Slices, DepthMap };
+
+/** @brief "slices" or "depthmap". */
+const char* aoMethodName(AoMethod method);
+/** @brief The method of that name, or none. */
+std::optional<AoMethod> aoMethodFromName(const std::string& name);
+
+struct AoOptions {
+    int directions = 256;
+    AoMethod method = AoMethod::DepthMap;
+    bool cosineWeighted = false;      ///< weight each direction by n·d (irradiance) instead of 1 (solid angle)
+    bool upperHemisphere = false;     ///< only directions with z > 0 (the sky above the world's horizon), as PCV
+    double bias = 1.0;                ///< cell edges above the tangent plane before a cell occludes
+    unsigned threads = 0;             ///< 0: hardware concurrency
+};
+
+/** @brief Per-cell values in [0, 1], in the order of @p cells. */
+Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,
+                                                   ProgressSink* progress = nullptr);
+
+} // namespace stylos::core::ao

@@ -1,0 +1,98 @@
+#include "stylos/core/ao/AmbientOcclusion.h"
+
+#include "../shading/ParallelChunks.h"
+#include "AoKernel.h"
+#include "stylos/core/ao/Directions.h"
+
+#include <algorithm>
+#include <atomic>
+#include <string>
+
+namespace stylos::core::ao {
+
+const char* aoMethodName(AoMethod method)
+{
+    return method == AoMethod::Slices ? "slices" : "depthmap";
+}
+
+std::optional<AoMethod> aoMethodFromName(const std::string& name)
+{
+    if (name == "slices") return AoMethod::Slices;
+    if (name == "depthmap") return AoMethod::DepthMap;
+    return std::nullopt;
+}
+
+namespace detail {
+
+PreparedCells prepareCells(const AoCells& cells)
+{
+    PreparedCells p;
+    const std::size_t n = cells.size();
+    for (auto* v : {&p.x, &p.y, &p.z, &p.nx, &p.ny, &p.nz}) v->resize(n);
+    p.opacity = cells.opacity;
+    p.opacity.resize(n, 1.0f);
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& c = cells.coords[i];
+        p.x[i] = float(c[0]) + 0.5f;
+        p.y[i] = float(c[1]) + 0.5f;
+        p.z[i] = float(c[2]) + 0.5f;
+        p.nx[i] = cells.normals[i][0];
+        p.ny[i] = cells.normals[i][1];
+        p.nz[i] = cells.normals[i][2];
+        for (int a = 0; a < 3; ++a) p.extent[a] = std::max(p.extent[a], c[a] + 1);
+    }
+    return p;
+}
+
+} // namespace detail
+
+Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,
+                                                   ProgressSink* progress)
+{
+    if (options.directions < 1 || options.directions > 65536)
+        return Error::at(ErrorCode::InvalidArgument, "skydome", "",
+                         "the number of directions must be 1..65536, not " + std::to_string(options.directions));
+    if (!(options.bias >= 0.0))
+        return Error::at(ErrorCode::InvalidArgument, "skydome", "", "the bias must be ≥ 0");
+
+    const detail::PreparedCells prepared = detail::prepareCells(cells);
+    const std::vector<Direction> directions = fibonacciDirections(options.directions, options.upperHemisphere);
+    const unsigned threads =
+        std::max(1u, std::min<unsigned>(shading::detail::resolveThreads(options.threads), unsigned(directions.size())));
+
+    // One kernel (scratch) and one pair of sums per worker. Worker w takes directions w, w + T, w + 2T...
+    // and the workers' sums are added in worker order: the same thread count gives the same bits; another
+    // count groups the float sums differently (a difference in the last bits; none with uniform weights
+    // and binary visibility, whose sums are small integers).
+    std::vector<detail::Accumulator> sums;
+    sums.reserve(threads);
+    for (unsigned t = 0; t < threads; ++t) sums.emplace_back(prepared.size());
+    std::atomic<std::size_t> done{0};
+    const bool finished = shading::detail::parallelChunks(
+        threads, 1, threads, progress, [&](std::size_t worker, std::size_t, unsigned) {
+            auto kernel = options.method == AoMethod::Slices ? detail::makeSliceKernel(prepared, options)
+                                                             : detail::makeDepthMapKernel(prepared, options);
+            for (std::size_t k = worker; k < directions.size(); k += threads) {
+                if (progress && progress->isCancelRequested()) return;
+                const auto& d = directions[k];
+                kernel->run({float(d[0]), float(d[1]), float(d[2])}, sums[worker]);
+                const std::size_t n = done.fetch_add(1) + 1;
+                if (progress) progress->update(double(n) / double(directions.size()));
+            }
+        });
+    if (!finished || (progress && progress->isCancelRequested()))
+        return Error::at(ErrorCode::Cancelled, "skydome", "", "skydome cancelled");
+
+    std::vector<float> values(prepared.size(), 0.0f);
+    for (std::size_t i = 0; i < values.size(); ++i) {
+        double seen = 0.0, total = 0.0;
+        for (const auto& s : sums) {
+            seen += s.seen[i];
+            total += s.total[i];
+        }
+        values[i] = total > 0.0 ? float(std::clamp(seen / total, 0.0, 1.0)) : 0.0f;
+    }
+    return values;
+}
+
+} // namespace stylos::core::ao
