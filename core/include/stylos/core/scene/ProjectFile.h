@@ -1,0 +1,71 @@
+#pragma once
+/** @file
+ * @brief The project file (`.stylos`): the scene as JSON,
+ *
+ *     {"format": "stylos-project", "version": 1, "nextId": 3,
+ *      "fragments": [{"id": 1, "name": "Drum 1", "octree": "drum1.poct", "source": "scans/drum1.ply",
+ *                     "pose": [16 numbers, row-major], "colour": "#d6ccba", "visible": true,
+ *                     "guides": [{"name": "axis", "kind": "axis", "origin": [x, y, z],
+ *                                 "direction": [x, y, z]}],
+ *                     "annotations": ""}]}
+ *
+ * Paths are stored relative to the project file's folder ('/' separators; absolute only when no relative
+ * form exists) and resolved back to absolute on load, so a project folder can be moved or copied whole.
+ * Doubles are written with enough digits to read back bit for bit: save then load gives an equal Scene.
+ * Saving is atomic (util/AtomicTextFile.h). Every key listed is written, even when empty; unknown keys
+ * are ignored (a later version-1 writer may add some). Optional on load (defaults in brackets): "nextId"
+ * [above the largest id], "source" [""], "colour" [#c8c8c8], "visible" [true], "guides" [[]],
+ * "annotations" [""]; "id", "name", "octree" and "pose" are required.
+ *
+ * Load failures name the file and the key: NotFound, Unreadable, Empty; Malformed (not JSON: "line L,
+ * column C"; a key of the wrong type or out of range: its path, e.g. "fragments[1].pose"; a duplicate
+ * id); UnknownFormat (no "format": "stylos-project"); Unsupported (another "version").
+ * A fragment whose octree file does not exist is not a failure: the project loads with that fragment's
+ * octreeMissing set and one NotFound problem naming the octree file.
+ * Thread-safety: reentrant.
+ */
+#include "stylos/core/scene/Scene.h"
+#include "stylos/core/util/Result.h"
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace stylos::core::scene {
+
+/** @brief The value of "format". */
+inline constexpr std::string_view ProjectFormatName = "stylos-project";
+/** @brief The version this code writes and the only one it reads. */
+inline constexpr int ProjectFormatVersion = 1;
+/** @brief The project file's extension, dot included. */
+inline constexpr std::string_view ProjectExtension = ".stylos";
+
+/** @brief A loaded project: the scene, and what was wrong with single fragments (missing octrees). */
+struct LoadedProject {
+    Scene scene;
+    std::vector<Error> problems;  ///< one per fragment whose octree is missing, in fragment order
+};
+
+class ProjectFile {
+public:
+    /** @brief The JSON text of @p scene for a project file at @p projectPath (paths made relative to its folder). */
+    static std::string toJson(const Scene& scene, const std::filesystem::path& projectPath);
+    /**
+     * @brief Parses @p text as the project file @p projectPath (for the messages and to resolve paths).
+     *        Checks the octree files' existence (see the file comment).
+     */
+    static Result<LoadedProject> fromJson(std::string_view text, const std::filesystem::path& projectPath);
+
+    /** @brief Writes @p scene to @p projectPath atomically. Errors: WriteFailed naming the file. */
+    static Status save(const Scene& scene, const std::filesystem::path& projectPath);
+    /** @brief Reads @p projectPath (errors in the file comment). */
+    static Result<LoadedProject> load(const std::filesystem::path& projectPath);
+
+    /** @brief @p file as stored in a project in @p folder: relative with '/' when possible; "" stays "". */
+    static std::string storedPath(const std::filesystem::path& file, const std::filesystem::path& folder);
+    /** @brief A stored path back to absolute (normalised) against @p folder; "" stays "". */
+    static std::filesystem::path resolvedPath(std::string_view stored, const std::filesystem::path& folder);
+};
+
+} // namespace stylos::core::scene

@@ -1,0 +1,310 @@
+#include "stylos/core/scene/ProjectFile.h"
+
+#include "stylos/core/util/AtomicTextFile.h"
+
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <system_error>
+
+namespace stylos::core::scene {
+
+namespace {
+
+using nlohmann::json;
+using OrderedJson = nlohmann::ordered_json;
+
+OrderedJson vectorJson(const std::array<double, 3>& v)
+{
+    return OrderedJson::array({v[0], v[1], v[2]});
+}
+
+OrderedJson fragmentJson(const Fragment& f, const std::filesystem::path& folder)
+{
+    OrderedJson guides = OrderedJson::array();
+    for (const Guide& g : f.guides) {
+        OrderedJson guide;
+        guide["name"] = g.name;
+        guide["kind"] = guideKindName(g.kind);
+        guide["origin"] = vectorJson(g.origin);
+        guide["direction"] = vectorJson(g.direction);
+        guides.push_back(std::move(guide));
+    }
+    OrderedJson pose = OrderedJson::array();
+    for (double v : f.pose.rowMajor()) pose.push_back(v);
+
+    OrderedJson out;
+    out["id"] = f.id;
+    out["name"] = f.name;
+    out["octree"] = ProjectFile::storedPath(f.octreePath, folder);
+    out["source"] = ProjectFile::storedPath(f.sourcePath, folder);
+    out["pose"] = std::move(pose);
+    out["colour"] = f.colour.toHex();
+    out["visible"] = f.visible;
+    out["guides"] = std::move(guides);
+    out["annotations"] = f.annotationLayer;
+    return out;
+}
+
+std::filesystem::path projectFolder(const std::filesystem::path& projectPath)
+{
+    std::error_code ignored;
+    std::filesystem::path absolute = std::filesystem::absolute(projectPath, ignored);
+    if (absolute.empty()) absolute = projectPath;
+    return absolute.lexically_normal().parent_path();
+}
+
+/** "line L, column C" of the byte at 1-based offset @p byte of @p text (nlohmann's parse_error::byte). */
+std::string textPosition(std::string_view text, std::size_t byte)
+{
+    const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
+    std::size_t line = 1, column = 1;
+    for (std::size_t i = 0; i < end; ++i) {
+        if (text[i] == '\n') {
+            ++line;
+            column = 1;
+        } else {
+            ++column;
+        }
+    }
+    return "line " + std::to_string(line) + ", column " + std::to_string(column);
+}
+
+/** Reads the JSON tree into a scene, naming the file and the key path in every error. */
+class SceneReader {
+public:
+    SceneReader(std::string file, std::filesystem::path folder) : m_file(std::move(file)), m_folder(std::move(folder)) {}
+
+    Result<LoadedProject> read(const json& root);
+
+private:
+    Error bad(const std::string& key, const std::string& problem) const
+    {
+        return Error::at(ErrorCode::Malformed, m_file, key, problem);
+    }
+
+    static const json* member(const json& object, const char* name)
+    {
+        const auto it = object.find(name);
+        return it == object.end() ? nullptr : &*it;
+    }
+
+    static bool finiteNumbers(const json& value, std::size_t count, double* out)
+    {
+        if (!value.is_array() || value.size() != count) return false;
+        for (std::size_t i = 0; i < count; ++i) {
+            if (!value[i].is_number()) return false;
+            out[i] = value[i].get<double>();
+            if (!std::isfinite(out[i])) return false;
+        }
+        return true;
+    }
+
+    Result<Fragment> readFragment(const json& value, const std::string& key) const;
+    Result<Guide> readGuide(const json& value, const std::string& key) const;
+
+    std::string m_file;
+    std::filesystem::path m_folder;
+};
+
+Result<LoadedProject> SceneReader::read(const json& root)
+{
+    if (!root.is_object())
+        return Error::at(ErrorCode::UnknownFormat, m_file, {}, "not a Stylos project (not a JSON object)");
+    const json* format = member(root, "format");
+    if (!format || !format->is_string() || format->get<std::string>() != ProjectFormatName)
+        return Error::at(ErrorCode::UnknownFormat, m_file, "format",
+                         "not a Stylos project (\"format\" is not \"" + std::string(ProjectFormatName) + "\")");
+    const json* version = member(root, "version");
+    if (!version) return bad("version", "is missing");
+    if (!version->is_number_integer()) return bad("version", "is not an integer");
+    if (version->get<std::int64_t>() != ProjectFormatVersion)
+        return Error::at(ErrorCode::Unsupported, m_file, "version",
+                         "version " + std::to_string(version->get<std::int64_t>()) +
+                             " is not supported (this Stylos reads version " + std::to_string(ProjectFormatVersion) + ")");
+
+    const json* fragments = member(root, "fragments");
+    if (!fragments) return bad("fragments", "is missing");
+    if (!fragments->is_array()) return bad("fragments", "is not an array");
+
+    LoadedProject project;
+    std::set<FragmentId> ids;
+    for (std::size_t i = 0; i < fragments->size(); ++i) {
+        const std::string key = "fragments[" + std::to_string(i) + "]";
+        auto fragment = readFragment((*fragments)[i], key);
+        if (!fragment) return fragment.error();
+        if (!ids.insert(fragment->id).second)
+            return bad(key + ".id", "duplicate id " + std::to_string(fragment->id));
+        if (!fragment->octreePath.empty() && !std::filesystem::exists(fragment->octreePath)) {
+            fragment->octreeMissing = true;
+            project.problems.push_back(Error::at(ErrorCode::NotFound, fragment->octreePath.string(), {},
+                                                 "the octree of fragment \"" + fragment->name + "\" does not exist"));
+        }
+        project.scene.add(std::move(fragment).value());
+    }
+
+    if (const json* nextId = member(root, "nextId")) {
+        if (!nextId->is_number_unsigned() || !project.scene.setNextId(nextId->get<FragmentId>()))
+            return bad("nextId", "is not an integer above every fragment id");
+    }
+    return project;
+}
+
+Result<Fragment> SceneReader::readFragment(const json& value, const std::string& key) const
+{
+    if (!value.is_object()) return bad(key, "is not an object");
+    Fragment f;
+
+    const json* id = member(value, "id");
+    if (!id) return bad(key + ".id", "is missing");
+    if (!id->is_number_unsigned() || id->get<FragmentId>() == NoFragment)
+        return bad(key + ".id", "is not a positive integer");
+    f.id = id->get<FragmentId>();
+
+    const json* name = member(value, "name");
+    if (!name) return bad(key + ".name", "is missing");
+    if (!name->is_string()) return bad(key + ".name", "is not a string");
+    f.name = name->get<std::string>();
+
+    const json* octree = member(value, "octree");
+    if (!octree) return bad(key + ".octree", "is missing");
+    if (!octree->is_string() || octree->get<std::string>().empty()) return bad(key + ".octree", "is not a file name");
+    f.octreePath = ProjectFile::resolvedPath(octree->get<std::string>(), m_folder);
+
+    if (const json* source = member(value, "source")) {
+        if (!source->is_string()) return bad(key + ".source", "is not a string");
+        f.sourcePath = ProjectFile::resolvedPath(source->get<std::string>(), m_folder);
+    }
+
+    const json* pose = member(value, "pose");
+    if (!pose) return bad(key + ".pose", "is missing");
+    std::array<double, 16> m{};
+    if (!finiteNumbers(*pose, 16, m.data())) return bad(key + ".pose", "is not an array of 16 finite numbers");
+    f.pose = Pose(m);
+    if (!f.pose.isRigid()) return bad(key + ".pose", "is not a rigid transform (a rotation and a translation)");
+
+    if (const json* colour = member(value, "colour")) {
+        const auto rgb = colour->is_string() ? Rgb::fromHex(colour->get<std::string>()) : std::nullopt;
+        if (!rgb) return bad(key + ".colour", "is not a colour \"#rrggbb\"");
+        f.colour = *rgb;
+    }
+    if (const json* visible = member(value, "visible")) {
+        if (!visible->is_boolean()) return bad(key + ".visible", "is not true or false");
+        f.visible = visible->get<bool>();
+    }
+    if (const json* guides = member(value, "guides")) {
+        if (!guides->is_array()) return bad(key + ".guides", "is not an array");
+        for (std::size_t i = 0; i < guides->size(); ++i) {
+            auto guide = readGuide((*guides)[i], key + ".guides[" + std::to_string(i) + "]");
+            if (!guide) return guide.error();
+            f.guides.push_back(std::move(guide).value());
+        }
+    }
+    if (const json* annotations = member(value, "annotations")) {
+        if (!annotations->is_string()) return bad(key + ".annotations", "is not a string");
+        f.annotationLayer = annotations->get<std::string>();
+    }
+    return f;
+}
+
+Result<Guide> SceneReader::readGuide(const json& value, const std::string& key) const
+{
+    if (!value.is_object()) return bad(key, "is not an object");
+    Guide g;
+    const json* name = member(value, "name");
+    if (!name || !name->is_string()) return bad(key + ".name", "is missing or not a string");
+    g.name = name->get<std::string>();
+    const json* kind = member(value, "kind");
+    const auto parsed = kind && kind->is_string() ? guideKindFromName(kind->get<std::string>()) : std::nullopt;
+    if (!parsed) return bad(key + ".kind", "is not \"axis\" or \"groove\"");
+    g.kind = *parsed;
+    const json* origin = member(value, "origin");
+    if (!origin || !finiteNumbers(*origin, 3, g.origin.data()))
+        return bad(key + ".origin", "is not an array of 3 finite numbers");
+    const json* direction = member(value, "direction");
+    if (!direction || !finiteNumbers(*direction, 3, g.direction.data()))
+        return bad(key + ".direction", "is not an array of 3 finite numbers");
+    const auto& d = g.direction;
+    if (std::abs(std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]) - 1.0) > 1e-6)
+        return bad(key + ".direction", "is not a unit vector");
+    return g;
+}
+
+} // namespace
+
+std::string ProjectFile::toJson(const Scene& scene, const std::filesystem::path& projectPath)
+{
+    const std::filesystem::path folder = projectFolder(projectPath);
+    OrderedJson fragments = OrderedJson::array();
+    for (const Fragment& f : scene.fragments()) fragments.push_back(fragmentJson(f, folder));
+    OrderedJson root;
+    root["format"] = ProjectFormatName;
+    root["version"] = ProjectFormatVersion;
+    root["nextId"] = scene.nextId();
+    root["fragments"] = std::move(fragments);
+    return root.dump(2) + "\n";
+}
+
+Result<LoadedProject> ProjectFile::fromJson(std::string_view text, const std::filesystem::path& projectPath)
+{
+    const std::string file = projectPath.string();
+    if (std::all_of(text.begin(), text.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }))
+        return Error::at(ErrorCode::Empty, file, {}, "the project file is empty");
+    json root;
+    try {
+        root = json::parse(text);
+    } catch (const json::parse_error& e) {
+        std::string detail = e.what();
+        const auto colon = detail.find(": ", detail.find("parse error"));
+        detail = colon == std::string::npos ? std::string("syntax error") : detail.substr(colon + 2);
+        return Error::at(ErrorCode::Malformed, file, textPosition(text, e.byte), "not valid JSON: " + detail);
+    }
+    return SceneReader(file, projectFolder(projectPath)).read(root);
+}
+
+Status ProjectFile::save(const Scene& scene, const std::filesystem::path& projectPath)
+{
+    return writeTextFileAtomically(projectPath, toJson(scene, projectPath));
+}
+
+Result<LoadedProject> ProjectFile::load(const std::filesystem::path& projectPath)
+{
+    const std::string name = projectPath.string();
+    std::error_code error;
+    const auto status = std::filesystem::status(projectPath, error);
+    if (!std::filesystem::exists(status)) return Error::at(ErrorCode::NotFound, name, {}, "no such file");
+    if (std::filesystem::is_directory(status)) return Error::at(ErrorCode::Unreadable, name, {}, "is a folder");
+    std::ifstream in(projectPath, std::ios::binary);
+    if (!in) return Error::at(ErrorCode::Unreadable, name, {}, std::string("cannot open: ") + std::strerror(errno));
+    std::ostringstream text;
+    text << in.rdbuf();
+    if (in.bad()) return Error::at(ErrorCode::Unreadable, name, {}, "read failed");
+    return fromJson(text.str(), projectPath);
+}
+
+std::string ProjectFile::storedPath(const std::filesystem::path& file, const std::filesystem::path& folder)
+{
+    if (file.empty()) return {};
+    std::error_code ignored;
+    std::filesystem::path absolute = file.is_absolute() ? file : std::filesystem::absolute(file, ignored);
+    absolute = absolute.lexically_normal();
+    const std::filesystem::path relative = absolute.lexically_relative(folder.lexically_normal());
+    // No relative form (another root, e.g. another drive): keep it absolute.
+    return relative.empty() ? absolute.generic_string() : relative.generic_string();
+}
+
+std::filesystem::path ProjectFile::resolvedPath(std::string_view stored, const std::filesystem::path& folder)
+{
+    if (stored.empty()) return {};
+    const std::filesystem::path path{std::string(stored)};
+    if (path.is_absolute()) return path.lexically_normal();
+    return (folder / path).lexically_normal();
+}
+
+} // namespace stylos::core::scene

@@ -1,0 +1,151 @@
+// Scene and Fragment: stable ids never reused, order, insert/take round trips; colours and guide kinds.
+#include "stylos/core/scene/Scene.h"
+
+#include <gtest/gtest.h>
+
+namespace stylos::core::scene {
+namespace {
+
+Fragment named(const std::string& name, FragmentId id = NoFragment)
+{
+    Fragment f;
+    f.id = id;
+    f.name = name;
+    f.octreePath = "/data/" + name + ".poct";
+    return f;
+}
+
+std::vector<std::string> names(const Scene& scene)
+{
+    std::vector<std::string> out;
+    for (const Fragment& f : scene.fragments()) out.push_back(f.name);
+    return out;
+}
+
+TEST(SceneTest, FragmentDefaultsAreAVisibleIdentityPlacement)
+{
+    const Fragment f;
+    EXPECT_EQ(f.id, NoFragment);
+    EXPECT_TRUE(f.visible);
+    EXPECT_EQ(f.pose, Pose());
+    EXPECT_EQ(f.pose(0, 0), 1.0);
+    EXPECT_EQ(f.pose(0, 3), 0.0);
+    EXPECT_TRUE(f.guides.empty());
+    EXPECT_EQ(f.annotationLayer, "");
+    EXPECT_FALSE(f.octreeMissing);
+}
+
+TEST(SceneTest, AddAssignsIncreasingIdsInOrder)
+{
+    Scene scene;
+    EXPECT_TRUE(scene.empty());
+    EXPECT_EQ(scene.nextId(), 1u);
+    EXPECT_EQ(scene.add(named("a")), 1u);
+    EXPECT_EQ(scene.add(named("b")), 2u);
+    EXPECT_EQ(scene.add(named("c")), 3u);
+    EXPECT_EQ(scene.size(), 3u);
+    EXPECT_EQ(scene.nextId(), 4u);
+    EXPECT_EQ(names(scene), (std::vector<std::string>{"a", "b", "c"}));
+    ASSERT_NE(scene.find(2), nullptr);
+    EXPECT_EQ(scene.find(2)->name, "b");
+    EXPECT_EQ(scene.indexOf(3), 2u);
+    EXPECT_EQ(scene.find(NoFragment), nullptr);
+    EXPECT_EQ(scene.find(99), nullptr);
+    EXPECT_FALSE(scene.indexOf(99).has_value());
+}
+
+TEST(SceneTest, RemovedIdsAreNeverReused)
+{
+    Scene scene;
+    scene.add(named("a"));
+    scene.add(named("b"));
+    ASSERT_TRUE(scene.remove(2));
+    EXPECT_FALSE(scene.remove(2));
+    EXPECT_EQ(scene.add(named("c")), 3u);
+    scene.clear();
+    EXPECT_TRUE(scene.empty());
+    EXPECT_EQ(scene.add(named("d")), 4u);
+}
+
+TEST(SceneTest, TakeThenInsertRestoresTheSceneExactly)
+{
+    Scene scene;
+    scene.add(named("a"));
+    Fragment b = named("b");
+    b.pose = Pose::translation({1.5, -2.0, 1e6});
+    b.colour = {1, 2, 3};
+    b.visible = false;
+    b.guides.push_back({"axis", GuideKind::Axis, {0.1, 0.2, 0.3}, {0.0, 1.0, 0.0}});
+    b.annotationLayer = "class";
+    scene.add(b);
+    scene.add(named("c"));
+    const Scene before = scene;
+
+    const auto taken = scene.take(2);
+    ASSERT_TRUE(taken.has_value());
+    EXPECT_EQ(taken->name, "b");
+    EXPECT_EQ(taken->guides.size(), 1u);
+    EXPECT_EQ(names(scene), (std::vector<std::string>{"a", "c"}));
+    EXPECT_FALSE(scene.take(2).has_value());
+
+    EXPECT_EQ(scene.insert(1, *taken), 2u);
+    EXPECT_EQ(scene, before);
+}
+
+TEST(SceneTest, InsertKeepsAGivenIdAndRefusesDuplicates)
+{
+    Scene scene;
+    EXPECT_EQ(scene.insert(0, named("x", 7)), 7u);
+    EXPECT_EQ(scene.nextId(), 8u);
+    EXPECT_EQ(scene.insert(0, named("y", 7)), NoFragment);
+    EXPECT_EQ(scene.size(), 1u);
+    EXPECT_EQ(scene.insert(0, named("z", 3)), 3u);   // below nextId: kept, nextId unchanged
+    EXPECT_EQ(scene.nextId(), 8u);
+    EXPECT_EQ(scene.insert(100, named("w")), 8u);     // index clamped: appended
+    EXPECT_EQ(names(scene), (std::vector<std::string>{"z", "x", "w"}));
+}
+
+TEST(SceneTest, AllocatedIdsAreSkippedByLaterAdds)
+{
+    Scene scene;
+    const FragmentId reserved = scene.allocateId();
+    EXPECT_EQ(reserved, 1u);
+    EXPECT_EQ(scene.add(named("a")), 2u);
+    EXPECT_EQ(scene.insert(0, named("r", reserved)), reserved);
+    EXPECT_EQ(scene.indexOf(reserved), 0u);
+}
+
+TEST(SceneTest, SetNextIdMustStayAboveEveryId)
+{
+    Scene scene;
+    scene.add(named("a"));
+    scene.add(named("b"));
+    EXPECT_FALSE(scene.setNextId(2));
+    EXPECT_FALSE(scene.setNextId(NoFragment));
+    EXPECT_EQ(scene.nextId(), 3u);
+    EXPECT_TRUE(scene.setNextId(10));
+    EXPECT_EQ(scene.add(named("c")), 10u);
+}
+
+TEST(SceneTest, ColoursConvertToAndFromHex)
+{
+    EXPECT_EQ((Rgb{0, 15, 255}).toHex(), "#000fff");
+    EXPECT_EQ(Rgb::fromHex("#A0b1C2"), (Rgb{0xa0, 0xb1, 0xc2}));
+    EXPECT_EQ(Rgb::fromHex("#000fff"), (Rgb{0, 15, 255}));
+    for (const char* bad : {"", "#", "a0b1c2", "#a0b1c", "#a0b1c2d", "#g0b1c2", " #a0b1c2"})
+        EXPECT_FALSE(Rgb::fromHex(bad).has_value()) << bad;
+    EXPECT_NE(defaultFragmentColour(0), defaultFragmentColour(1));
+    EXPECT_EQ(defaultFragmentColour(0), defaultFragmentColour(8));
+}
+
+TEST(SceneTest, GuideKindsHaveStableNames)
+{
+    EXPECT_STREQ(guideKindName(GuideKind::Axis), "axis");
+    EXPECT_STREQ(guideKindName(GuideKind::Groove), "groove");
+    EXPECT_EQ(guideKindFromName("groove"), GuideKind::Groove);
+    EXPECT_EQ(guideKindFromName("axis"), GuideKind::Axis);
+    EXPECT_FALSE(guideKindFromName("Axis").has_value());
+}
+
+} // namespace
+} // namespace stylos::core::scene

@@ -1,0 +1,227 @@
+// ScanImporter: scans become packed octrees in background tasks and fragments through the undo stack;
+// a broken file gives one message naming it; a cancelled import adds nothing and leaves no file.
+#include "SceneTestSupport.h"
+#include "WidgetTestSupport.h"
+
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/widgets/ScanImporter.h"
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/SceneTreeModel.h"
+#include "stylos/widgets/TaskManager.h"
+
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+using stylos::core::synth::SyntheticKind;
+using stylos::widgets::ScanImporter;
+using stylos::widgets::SceneDocument;
+using stylos::widgets::SceneTreeModel;
+using stylos::widgets::TaskManager;
+
+class ScanImporterTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void importsTwoScansAtOnce();
+    void importsIntoTheProjectFolderOnceSaved();
+    void opensAPoctDirectly();
+    void aBrokenFileIsNamedAndNothingIsAdded();
+    void cancelLeavesNothing();
+
+private:
+    /** A fresh folder for one test's outputs. */
+    QString freshFolder(const QString& name) const;
+
+    QTemporaryDir m_dir;
+    QString m_scans;
+    QString m_fragmentScan;  ///< a fragment, ~5 k points, with normals
+    QString m_drumScan;      ///< a drum at 2 cm, ~10 k points, without normals (estimated on import)
+    stylos::core::octree::BuildOptions m_options;
+};
+
+void ScanImporterTest::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_scans = freshFolder("scans");
+    m_fragmentScan = stylos::test::generateScanFile(m_scans, "fragment.ply", SyntheticKind::Fragment, 0.01, true);
+    m_drumScan = stylos::test::generateScanFile(m_scans, "drum.ply", SyntheticKind::Drum, 0.02, false);
+    m_options.depth = 6;
+    m_options.threads = 1;
+}
+
+QString ScanImporterTest::freshFolder(const QString& name) const
+{
+    const QString path = m_dir.filePath(name);
+    if (!QDir().mkpath(path)) qFatal("cannot create %s", qPrintable(path));
+    return path;
+}
+
+void ScanImporterTest::importsTwoScansAtOnce()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    SceneTreeModel tree(doc);
+    ScanImporter importer(doc, tasks);
+    importer.setBuildOptions(m_options);
+    const QString cache = freshFolder("cache-two");
+    importer.setCacheDirectory(cache);
+    QCOMPARE(importer.outputDirectory(), cache);
+    QSignalSpy imported(&importer, &ScanImporter::fragmentImported);
+    QSignalSpy finished(&importer, &ScanImporter::importsFinished);
+
+    QCOMPARE(importer.importFiles({m_fragmentScan, m_drumScan}), 2);
+    QCOMPARE(tasks.count(), 2);
+    QCOMPARE(importer.pending(), 2);
+    QVERIFY(doc.scene().empty()); // nothing until the octrees are built
+    QVERIFY(tasks.waitForIdle(30000));
+
+    QCOMPARE(imported.size(), 2);
+    QCOMPARE(finished.size(), 1);
+    QCOMPARE(finished.at(0).at(0).toStringList(), QStringList());
+    QCOMPARE(tree.rowCount(), 2);
+    QStringList names{tree.data(tree.index(0, 0)).toString(), tree.data(tree.index(1, 0)).toString()};
+    names.sort();
+    QCOMPARE(names, (QStringList{"drum", "fragment"}));
+    QCOMPARE(stylos::test::filesUnder(cache), (QStringList{"drum.poct", "fragment.poct"}));
+    for (const auto& f : doc.scene().fragments()) {
+        QCOMPARE(QString::fromStdString(f.octreePath.string()), cache + "/" + QString::fromStdString(f.name) + ".poct");
+        QCOMPARE(QString::fromStdString(f.sourcePath.string()), m_scans + "/" + QString::fromStdString(f.name) + ".ply");
+        QVERIFY(doc.octree(f.id));
+        QCOMPARE(doc.octree(f.id)->depth(), 6);
+    }
+    QCOMPARE(doc.undoStack()->count(), 2);
+    QVERIFY(doc.undoStack()->text(0).startsWith("Import "));
+    // Undo removes the fragment, not its octree file; redo brings it back.
+    doc.undoStack()->undo();
+    QCOMPARE(tree.rowCount(), 1);
+    doc.undoStack()->redo();
+    QCOMPARE(tree.rowCount(), 2);
+
+    // The same scan again gets its own file.
+    QCOMPARE(importer.importFiles({m_fragmentScan}), 1);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(stylos::test::filesUnder(cache), (QStringList{"drum.poct", "fragment-2.poct", "fragment.poct"}));
+}
+
+void ScanImporterTest::importsIntoTheProjectFolderOnceSaved()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    importer.setBuildOptions(m_options);
+    importer.setCacheDirectory(freshFolder("cache-unused"));
+    const QString project = freshFolder("project");
+    QString error;
+    QVERIFY(doc.saveAs(project + "/site.stylos", &error));
+    QCOMPARE(importer.outputDirectory(), project);
+    QCOMPARE(importer.importFiles({m_fragmentScan}), 1);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(doc.scene().size(), 1u);
+    QCOMPARE(QString::fromStdString(doc.scene().fragments()[0].octreePath.string()), project + "/fragment.poct");
+    QVERIFY(doc.isModified());
+    QVERIFY(doc.save(&error));
+    QCOMPARE(stylos::test::filesUnder(project), (QStringList{"fragment.poct", "site.stylos"}));
+    QCOMPARE(stylos::test::filesUnder(importer.cacheDirectory()), QStringList());
+}
+
+void ScanImporterTest::opensAPoctDirectly()
+{
+    const QString folder = freshFolder("direct");
+    const QString poct = stylos::test::makeOctreeFile(folder, "piece.poct");
+    const QStringList before = stylos::test::filesUnder(folder);
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    importer.setCacheDirectory(freshFolder("cache-direct"));
+    QCOMPARE(importer.importFiles({poct}), 1);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(doc.scene().size(), 1u);
+    const auto& f = doc.scene().fragments()[0];
+    QCOMPARE(f.name, std::string("piece"));
+    QCOMPARE(QString::fromStdString(f.octreePath.string()), poct);
+    QVERIFY(f.sourcePath.empty());
+    QVERIFY(doc.octree(f.id));
+    QCOMPARE(stylos::test::filesUnder(folder), before);
+    QCOMPARE(stylos::test::filesUnder(importer.cacheDirectory()), QStringList());
+}
+
+void ScanImporterTest::aBrokenFileIsNamedAndNothingIsAdded()
+{
+    const QString folder = freshFolder("broken");
+    const QString broken = stylos::test::writeFile(folder, "broken.ply",
+        "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nend_header\n0 0\n1\n");
+    const QString notOctree = stylos::test::writeFile(folder, "fake.poct", "not an octree at all");
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    importer.setBuildOptions(m_options);
+    const QString cache = freshFolder("cache-broken");
+    importer.setCacheDirectory(cache);
+    QSignalSpy failed(&importer, &ScanImporter::importFailed);
+    QSignalSpy finished(&importer, &ScanImporter::importsFinished);
+
+    QCOMPARE(importer.importFiles({broken, notOctree, folder + "/absent.ply"}), 3);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(failed.size(), 3);
+    QCOMPARE(finished.size(), 1);
+    const QStringList errors = finished.at(0).at(0).toStringList();
+    QCOMPARE(errors.size(), 3);
+    QString brokenMessage, fakeMessage, absentMessage;
+    for (const auto& args : failed) {
+        const QString path = args.at(0).toString();
+        const QString message = args.at(1).toString();
+        QVERIFY(errors.contains(message));
+        if (path == broken) brokenMessage = message;
+        if (path == notOctree) fakeMessage = message;
+        if (path.endsWith("absent.ply")) absentMessage = message;
+    }
+    QVERIFY2(brokenMessage.startsWith("Could not import broken.ply: "), qPrintable(brokenMessage));
+    QVERIFY(brokenMessage.contains(broken)); // the core's detail names the full path
+    QVERIFY2(fakeMessage.startsWith("Could not import fake.poct: the file format is not recognised."), qPrintable(fakeMessage));
+    QVERIFY2(absentMessage.startsWith("Could not import absent.ply: the file does not exist."), qPrintable(absentMessage));
+    QVERIFY(doc.scene().empty());
+    QCOMPARE(doc.undoStack()->count(), 0);
+    QCOMPARE(stylos::test::filesUnder(cache), QStringList());
+}
+
+void ScanImporterTest::cancelLeavesNothing()
+{
+    // ~130 k points without normals: estimating them and building takes long enough to cancel.
+    const QString folder = freshFolder("cancel");
+    const QString big = stylos::test::generateScanFile(folder, "big.ply", SyntheticKind::Fragment, 0.002, false);
+    const QStringList inputs = stylos::test::filesUnder(folder);
+    TaskManager tasks;
+    tasks.setMaxConcurrent(1); // the second import waits: both ways of cancelling are exercised
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    stylos::core::octree::BuildOptions options = m_options;
+    options.depth = 10;
+    importer.setBuildOptions(options);
+    const QString cache = freshFolder("cache-cancel");
+    importer.setCacheDirectory(cache);
+    QSignalSpy failed(&importer, &ScanImporter::importFailed);
+    QSignalSpy finished(&importer, &ScanImporter::importsFinished);
+    QSignalSpy ended(&tasks, &TaskManager::taskFinished);
+
+    QCOMPARE(importer.importFiles({big, m_fragmentScan}), 2);
+    const auto ids = tasks.tasks();
+    QCOMPARE(ids.size(), 2);
+    QTRY_VERIFY_WITH_TIMEOUT(tasks.isRunning(ids[0]) && tasks.progress(ids[0]) > 0, 10000);
+    QVERIFY(!tasks.isRunning(ids[1]));
+    tasks.cancelAll();
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(ended.size(), 2);
+    QVERIFY(ended.at(0).at(1).toBool() && ended.at(1).at(1).toBool()); // both ended cancelled
+    QCOMPARE(finished.size(), 1);
+    QCOMPARE(finished.at(0).at(0).toStringList(), QStringList());
+    QCOMPARE(failed.size(), 0);
+    QVERIFY(doc.scene().empty());
+    QCOMPARE(doc.undoStack()->count(), 0);
+    QCOMPARE(stylos::test::filesUnder(cache), QStringList());
+    QCOMPARE(stylos::test::filesUnder(folder), inputs);
+}
+
+STYLOS_WIDGET_TEST_MAIN(ScanImporterTest)
+#include "ScanImporterTest.moc"

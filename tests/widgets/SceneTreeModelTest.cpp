@@ -1,0 +1,196 @@
+// SceneTreeModel and FragmentPropertiesWidget: the Scene dock's tree follows the document (rows, guides,
+// check boxes, colours) and edits made in it or in the Properties dock go through the undo stack.
+#include "SceneTestSupport.h"
+#include "WidgetTestSupport.h"
+
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/widgets/FragmentPropertiesWidget.h"
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/SceneTreeModel.h"
+#include "stylos/widgets/TaskManager.h"
+
+#include <QAbstractItemModelTester>
+#include <QCheckBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QLineEdit>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+#include <QUndoStack>
+
+#include <numbers>
+
+using stylos::core::scene::Fragment;
+using stylos::core::scene::FragmentId;
+using stylos::core::scene::Guide;
+using stylos::core::scene::GuideKind;
+using stylos::core::scene::Pose;
+using stylos::widgets::FragmentPropertiesWidget;
+using stylos::widgets::SceneDocument;
+using stylos::widgets::SceneTreeModel;
+using stylos::widgets::TaskManager;
+
+class SceneTreeModelTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void rowsFollowTheDocument();
+    void editsInTheTreeAreUndoable();
+    void propertiesShowAndEditTheFragment();
+
+private:
+    Fragment fragment(const QString& name, int guides = 0) const;
+
+    QTemporaryDir m_dir;
+    QString m_octreePath;
+    SceneDocument::OctreePtr m_octree;
+};
+
+void SceneTreeModelTest::initTestCase()
+{
+    m_octreePath = stylos::test::makeOctreeFile(m_dir.path(), "piece.poct");
+    auto opened = stylos::core::octree::PackedOctree::open(m_octreePath.toStdString());
+    QVERIFY(opened.ok());
+    m_octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened).value());
+}
+
+Fragment SceneTreeModelTest::fragment(const QString& name, int guides) const
+{
+    Fragment f;
+    f.name = name.toStdString();
+    f.octreePath = m_octreePath.toStdString();
+    f.colour = {10, 200, 30};
+    for (int i = 0; i < guides; ++i)
+        f.guides.push_back(Guide{i == 0 ? "axis" : "groove " + std::to_string(i), i == 0 ? GuideKind::Axis : GuideKind::Groove});
+    return f;
+}
+
+void SceneTreeModelTest::rowsFollowTheDocument()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    SceneTreeModel model(doc);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+
+    const FragmentId drum = doc.addFragment(fragment("drum", 3), m_octree);
+    const FragmentId piece = doc.addFragment(fragment("piece"), m_octree);
+    QCOMPARE(model.rowCount(), 2);
+    const QModelIndex drumRow = model.indexOf(drum);
+    QCOMPARE(drumRow.row(), 0);
+    QCOMPARE(model.data(drumRow).toString(), QString("drum"));
+    QCOMPARE(model.data(drumRow, Qt::CheckStateRole).toInt(), int(Qt::Checked));
+    QCOMPARE(model.data(drumRow, Qt::DecorationRole).value<QColor>(), QColor(10, 200, 30));
+    QCOMPARE(model.data(drumRow, SceneTreeModel::FragmentIdRole).toULongLong(), drum);
+    QCOMPARE(model.rowCount(drumRow), 3);
+    QCOMPARE(model.rowCount(model.indexOf(piece)), 0);
+    const QModelIndex groove = model.index(2, 0, drumRow);
+    QCOMPARE(model.data(groove).toString(), QString("groove 2"));
+    QCOMPARE(model.data(groove, Qt::ToolTipRole).toString(), QString("Groove"));
+    QCOMPARE(model.data(groove, SceneTreeModel::GuideIndexRole).toInt(), 2);
+    QCOMPARE(model.parent(groove), drumRow);
+    QCOMPARE(model.fragmentAt(groove), drum);
+    QVERIFY(SceneTreeModel::isGuide(groove));
+    QVERIFY(!(model.flags(groove) & Qt::ItemIsEditable));
+
+    QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
+    doc.removeFragment(drum);
+    QCOMPARE(model.rowCount(), 1);
+    QCOMPARE(removed.size(), 1);
+    QCOMPARE(model.data(model.index(0, 0)).toString(), QString("piece"));
+    doc.undoStack()->undo();
+    QCOMPARE(model.rowCount(), 2);
+    QCOMPARE(model.rowCount(model.indexOf(drum)), 3);
+
+    QSignalSpy reset(&model, &QAbstractItemModel::modelReset);
+    doc.newProject();
+    QCOMPARE(reset.size(), 1);
+    QCOMPARE(model.rowCount(), 0);
+}
+
+void SceneTreeModelTest::editsInTheTreeAreUndoable()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    SceneTreeModel model(doc);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    const FragmentId id = doc.addFragment(fragment("drum"), m_octree);
+    const QModelIndex row = model.indexOf(id);
+    QSignalSpy changed(&model, &QAbstractItemModel::dataChanged);
+
+    QVERIFY(model.flags(row) & Qt::ItemIsEditable);
+    QVERIFY(model.setData(row, "Drum 2"));
+    QCOMPARE(doc.fragment(id)->name, std::string("Drum 2"));
+    QCOMPARE(doc.undoStack()->undoText(), QString("Rename drum to Drum 2"));
+    QVERIFY(!changed.isEmpty());
+    QVERIFY(!model.setData(row, "   ")); // a fragment keeps a name
+    QVERIFY(model.setData(row, Qt::Unchecked, Qt::CheckStateRole));
+    QCOMPARE(doc.fragment(id)->visible, false);
+    QCOMPARE(model.data(row, Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+    QCOMPARE(doc.undoStack()->count(), 3);
+
+    doc.undoStack()->undo();
+    doc.undoStack()->undo();
+    QCOMPARE(model.data(row).toString(), QString("drum"));
+    QCOMPARE(model.data(row, Qt::CheckStateRole).toInt(), int(Qt::Checked));
+}
+
+void SceneTreeModelTest::propertiesShowAndEditTheFragment()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    const FragmentId id = doc.addFragment(fragment("drum"), m_octree);
+    const Pose pose = Pose::fromTranslationAngles({{1.25, -2.5, 3.0}, {0.0, 0.0, std::numbers::pi / 2}});
+    doc.setFragmentPose(id, pose);
+    FragmentPropertiesWidget properties(doc);
+    properties.show();
+    QVERIFY(!properties.nameEdit()->isEnabled());
+    QCOMPARE(properties.pointsLabel()->text(), QString("–"));
+
+    properties.setFragment(id);
+    QVERIFY(properties.nameEdit()->isEnabled());
+    QCOMPARE(properties.nameEdit()->text(), QString("drum"));
+    QCOMPARE(properties.poseSpin(0)->value(), 1.25);
+    QCOMPARE(properties.poseSpin(1)->value(), -2.5);
+    QCOMPARE(properties.poseSpin(5)->value(), 90.0);
+    const QLocale locale;
+    QCOMPARE(properties.pointsLabel()->text(), locale.toString(qulonglong(m_octree->description().points)));
+    QCOMPARE(properties.leafCellsLabel()->text(), locale.toString(qulonglong(m_octree->cellCount(5))));
+    QCOMPARE(properties.totalCellsLabel()->text(), locale.toString(qulonglong(m_octree->totalCells())));
+    QCOMPARE(properties.depthLabel()->text(), QString("5"));
+    QCOMPARE(properties.fileLabel()->text(), m_octreePath);
+
+    // Editing the translation's z keeps the rotation and the other components bit for bit.
+    const int before = doc.undoStack()->count();
+    properties.poseSpin(2)->setValue(4.5);
+    QCOMPARE(doc.undoStack()->count(), before + 1);
+    QCOMPARE(doc.fragment(id)->pose, pose.withTranslation({1.25, -2.5, 4.5}));
+    // Editing a rotation angle keeps the translation.
+    properties.poseSpin(3)->setValue(30.0);
+    const auto angles = doc.fragment(id)->pose.toTranslationAngles();
+    QVERIFY(std::abs(angles.angles[0] - std::numbers::pi / 6) < 1e-12);
+    QVERIFY(std::abs(angles.angles[2] - std::numbers::pi / 2) < 1e-12);
+    QCOMPARE(angles.translation, (std::array<double, 3>{1.25, -2.5, 4.5}));
+
+    properties.nameEdit()->setText("Drum 1");
+    QMetaObject::invokeMethod(properties.nameEdit(), "editingFinished");
+    QCOMPARE(doc.fragment(id)->name, std::string("Drum 1"));
+    properties.visibleCheck()->setChecked(false);
+    QCOMPARE(doc.fragment(id)->visible, false);
+
+    // Undo shows in the fields.
+    doc.undoStack()->undo();
+    QVERIFY(properties.visibleCheck()->isChecked());
+    doc.undoStack()->undo();
+    QCOMPARE(properties.nameEdit()->text(), QString("drum"));
+    doc.undoStack()->undo();
+    QCOMPARE(properties.poseSpin(3)->value(), 0.0);
+    QCOMPARE(doc.undoStack()->count(), before + 4); // undoing pushes nothing
+
+    doc.removeFragment(id);
+    QCOMPARE(properties.fragment(), stylos::core::scene::NoFragment);
+    QVERIFY(!properties.nameEdit()->isEnabled());
+}
+
+STYLOS_WIDGET_TEST_MAIN(SceneTreeModelTest)
+#include "SceneTreeModelTest.moc"

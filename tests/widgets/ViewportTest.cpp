@@ -1,0 +1,244 @@
+// ViewportWidget: renders a small generated drum (.poct built in the test) with OpenGL 3.3 core under
+// Xvfb/llvmpipe; the framebuffer is not blank and the drum covers the middle; a click in the middle
+// picks a point of the drum's front surface (within a cell of the scanned samples); keys and markers.
+#include "DrumOctreeFixture.h"
+#include "WidgetTestSupport.h"
+
+#include "stylos/core/ao/AoExport.h"
+#include "stylos/core/io/PointFileFormat.h"
+#include "stylos/core/io/PointReader.h"
+#include "stylos/widgets/OrbitBenchmark.h"
+#include "stylos/widgets/ViewportWidget.h"
+
+#include <QImage>
+#include <QJsonObject>
+#include <QSignalSpy>
+#include <QTemporaryDir>
+
+#include <limits>
+
+using stylos::widgets::OrbitBenchmark;
+using stylos::widgets::RenderFragment;
+using stylos::widgets::StandardView;
+using stylos::widgets::ViewportWidget;
+
+namespace {
+
+bool isBackground(QRgb c) { return qAbs(qRed(c) - 33) <= 3 && qAbs(qGreen(c) - 36) <= 3 && qAbs(qBlue(c) - 41) <= 3; }
+
+double coveredFraction(const QImage& image, const QRect& rect)
+{
+    int covered = 0;
+    for (int y = rect.top(); y <= rect.bottom(); ++y)
+        for (int x = rect.left(); x <= rect.right(); ++x) covered += isBackground(image.pixel(x, y)) ? 0 : 1;
+    return double(covered) / double(rect.width() * rect.height());
+}
+
+} // namespace
+
+class ViewportTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void rendersTheDrum();
+    void clickPicksTheSurface();
+    void keysChangeTheView();
+    void markerIsDrawn();
+    void ambientShading();
+    void orbitBenchmarkReports();
+
+private:
+    void waitRefined();
+
+    QTemporaryDir m_dir;
+    stylos::test::DrumOctree m_drum;
+    std::unique_ptr<ViewportWidget> m_view;
+    std::vector<Eigen::Vector3d> m_samples;
+};
+
+void ViewportTest::initTestCase()
+{
+    if (!ViewportWidget::isSupported()) QSKIP("no OpenGL 3.3 on this platform (run under xvfb-run)");
+    QVERIFY(m_dir.isValid());
+    m_drum = stylos::test::makeDrumOctree(m_dir.path(), 0.01, 7);
+    auto reader = stylos::core::io::openPointReader(m_drum.ply);
+    QVERIFY(reader.ok());
+    stylos::core::io::PointBatch batch;
+    for (;;) {
+        auto n = (*reader)->read(batch, 65536);
+        QVERIFY(n.ok());
+        if (*n == 0) break;
+        for (std::size_t i = 0; i < batch.size(); ++i)
+            m_samples.emplace_back(batch.positions[3 * i], batch.positions[3 * i + 1], batch.positions[3 * i + 2]);
+    }
+    QVERIFY(m_samples.size() > 10000);
+
+    m_view = std::make_unique<ViewportWidget>();
+    m_view->resize(400, 300);
+    m_view->show();
+    QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
+    RenderFragment f;
+    f.id = 42;
+    f.octree = m_drum.octree;
+    m_view->setFragments({f});
+    waitRefined();
+    QVERIFY2(m_view->glError().isEmpty(), qPrintable(m_view->glError()));
+}
+
+void ViewportTest::waitRefined()
+{
+    QTRY_VERIFY_WITH_TIMEOUT(m_view->isSettled(), 20000);
+    m_view->repaint();
+}
+
+void ViewportTest::rendersTheDrum()
+{
+    const QImage image = m_view->grabFramebuffer();
+    if (qEnvironmentVariableIsSet("STYLOS_VIEWPORT_TEST_IMAGE")) // to look at it: the path of a PNG to write
+        image.save(qEnvironmentVariable("STYLOS_VIEWPORT_TEST_IMAGE"));
+    QCOMPARE(image.size(), QSize(400, 300) * m_view->devicePixelRatio());
+    QVERIFY(m_view->lastPointsDrawn() == m_drum.octree->cellCount(7) || m_view->lastPointsDrawn() > 10000);
+    QVERIFY(m_view->firstFrameMs() >= 0);
+    const double all = coveredFraction(image, image.rect());
+    QVERIFY2(all > 0.1 && all < 0.9, qPrintable(QString::number(all)));
+    // The fitted drum covers the middle of the view, and it is shaded (not one flat colour).
+    const QRect middle(image.width() / 2 - 10, image.height() / 2 - 10, 20, 20);
+    QVERIFY2(coveredFraction(image, middle) > 0.95, qPrintable(QString::number(coveredFraction(image, middle))));
+    QSet<QRgb> colours;
+    for (int y = middle.top(); y <= middle.bottom(); ++y)
+        for (int x = middle.left(); x <= middle.right(); ++x) colours.insert(image.pixel(x, y));
+    QVERIFY(colours.size() > 3);
+    // Corners are background.
+    QVERIFY(isBackground(image.pixel(1, 1)));
+    QVERIFY(isBackground(image.pixel(image.width() - 2, image.height() - 2)));
+}
+
+void ViewportTest::clickPicksTheSurface()
+{
+    QSignalSpy picked(m_view.get(), &ViewportWidget::pointPicked);
+    const QPoint centre(200, 150);
+    QTest::mouseClick(m_view.get(), Qt::LeftButton, {}, centre);
+    QCOMPARE(picked.size(), 1);
+    const auto point = picked.first().at(0).value<Eigen::Vector3d>();
+    QCOMPARE(picked.first().at(1).value<quint64>(), 42u);
+    QVERIFY(m_view->marker() && (*m_view->marker() - point).norm() == 0);
+
+    // On the ray through the click, within the pick radius (3 px) and a cell.
+    const double cell = m_drum.octree->box().cellSize(7);
+    const auto& camera = m_view->camera();
+    const auto ray = camera.rayAt(centre.x(), centre.y());
+    const Eigen::Vector3d toPoint = point - ray.origin;
+    const double along = toPoint.dot(ray.direction);
+    const double off = (toPoint - along * ray.direction).norm();
+    QVERIFY2(off <= 3.0 * along / (camera.pixelsPerMetre() * camera.distance()) + cell,
+             qPrintable(QString::number(off)));
+    // Within a cell of the scanned surface: the leaf holds a sample, within √3/2 of an edge of its centre.
+    double nearest = std::numeric_limits<double>::infinity();
+    for (const Eigen::Vector3d& s : m_samples) nearest = std::min(nearest, (s - point).norm());
+    QVERIFY2(nearest <= 0.87 * cell, qPrintable(QString("%1 > %2").arg(nearest).arg(cell)));
+    // The front of the drum: nearer the eye than its axis.
+    const auto& axis = m_drum.truth["axis"];
+    const Eigen::Vector3d axisPoint(axis["point"][0], axis["point"][1], axis["point"][2]);
+    const Eigen::Vector3d axisDirection(axis["direction"][0], axis["direction"][1], axis["direction"][2]);
+    const Eigen::Vector3d axisMiddle = axisPoint + 0.25 * axisDirection; // the drum is 0.5 m high
+    QVERIFY(along < (axisMiddle - ray.origin).dot(ray.direction));
+
+    // Nothing is picked in an empty corner; a drag is not a click.
+    QTest::mouseClick(m_view.get(), Qt::LeftButton, {}, QPoint(2, 2));
+    QCOMPARE(picked.size(), 1);
+    QTest::mousePress(m_view.get(), Qt::LeftButton, {}, centre);
+    QTest::mouseMove(m_view.get(), centre + QPoint(30, 0));
+    QTest::mouseRelease(m_view.get(), Qt::LeftButton, {}, centre + QPoint(30, 0));
+    QCOMPARE(picked.size(), 1);
+    waitRefined();
+}
+
+void ViewportTest::keysChangeTheView()
+{
+    QTest::keyClick(m_view.get(), Qt::Key_1);
+    QVERIFY((m_view->camera().forward() - Eigen::Vector3d::UnitY()).norm() < 1e-12);
+    QTest::keyClick(m_view.get(), Qt::Key_7);
+    QVERIFY((m_view->camera().forward() + Eigen::Vector3d::UnitZ()).norm() < 1e-12);
+    QTest::keyClick(m_view.get(), Qt::Key_5);
+    QVERIFY(m_view->camera().isOrthographic());
+    QTest::keyClick(m_view.get(), Qt::Key_5);
+    QVERIFY(!m_view->camera().isOrthographic());
+    QTest::keyClick(m_view.get(), Qt::Key_0);
+    m_view->setCamera([&] {
+        auto c = m_view->camera();
+        c.dolly(5);
+        c.pan(100, 0);
+        return c;
+    }());
+    QTest::keyClick(m_view.get(), Qt::Key_F);
+    QVERIFY((m_view->camera().target() - m_view->sceneBounds().center()).norm() < 1e-9);
+    waitRefined();
+    QVERIFY(coveredFraction(m_view->grabFramebuffer(), QRect(190, 140, 20, 20)) > 0.95);
+}
+
+void ViewportTest::markerIsDrawn()
+{
+    // A marker in an empty part of the view shows as non-background pixels there.
+    const auto ray = m_view->camera().rayAt(20, 20);
+    const Eigen::Vector3d point = ray.origin + ray.direction * m_view->camera().distance();
+    QVERIFY(isBackground(m_view->grabFramebuffer().pixel(20, 20)));
+    m_view->setMarker(point);
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(20, 20)));
+    m_view->setMarker(std::nullopt);
+    QVERIFY(isBackground(m_view->grabFramebuffer().pixel(20, 20)));
+}
+
+void ViewportTest::ambientShading()
+{
+    // The same drum with an ambient layer of 0.25 everywhere: the Ambient shading is grey 64 exactly.
+    const auto& octree = *m_drum.octree;
+    const std::vector<float> ambient(octree.cellCount(octree.depth()), 0.25f);
+    const std::filesystem::path path = m_dir.filePath("ambient.poct").toStdString();
+    QVERIFY(stylos::core::ao::writeAmbientPoct(octree, ambient, path).ok());
+    auto opened = stylos::core::octree::PackedOctree::open(path);
+    QVERIFY(opened.ok());
+    RenderFragment f;
+    f.id = 42;
+    f.octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened.value()));
+    m_view->setFragments({f});
+    m_view->setShading(stylos::widgets::PointRenderer::Shading::Ambient);
+    waitRefined();
+    const QImage image = m_view->grabFramebuffer();
+    QCOMPARE(image.pixel(200, 150), qRgb(64, 64, 64));
+    // Colour shading without a colour layer falls back to the headlight: not grey 64.
+    m_view->setShading(stylos::widgets::PointRenderer::Shading::Colour);
+    waitRefined();
+    QVERIFY(m_view->grabFramebuffer().pixel(200, 150) != qRgb(64, 64, 64));
+    m_view->setShading(stylos::widgets::PointRenderer::Shading::Headlight);
+    waitRefined();
+}
+
+void ViewportTest::orbitBenchmarkReports()
+{
+    OrbitBenchmark::Options options;
+    options.frames = 12;
+    options.degreesPerFrame = 5;
+    OrbitBenchmark benchmark(*m_view, options);
+    QSignalSpy finished(&benchmark, &OrbitBenchmark::finished);
+    const Eigen::Vector3d target = m_view->camera().target();
+    benchmark.start();
+    QVERIFY(finished.wait(30000));
+    const QJsonObject o = finished.first().at(0).toJsonObject();
+    QCOMPARE(o["frames"].toInt(), 12);
+    QVERIFY(o["medianMs"].toDouble() > 0);
+    QVERIFY(o["p95Ms"].toDouble() >= o["medianMs"].toDouble());
+    QVERIFY(o["meanPointsDrawn"].toDouble() > 1000);
+    QCOMPARE(o["width"].toInt(), 400);
+    QVERIFY(!o.contains("error"));
+    QVERIFY((m_view->camera().target() - target).norm() < 1e-12); // orbits about the target
+
+    // The summary, exactly: median of an even count, p95 by nearest rank.
+    const QJsonObject s = OrbitBenchmark::summarize({4, 1, 3, 2}, {10, 20, 30, 40});
+    QCOMPARE(s["medianMs"].toDouble(), 2.5);
+    QCOMPARE(s["p95Ms"].toDouble(), 4.0);
+    QCOMPARE(s["meanPointsDrawn"].toDouble(), 25.0);
+}
+
+STYLOS_WIDGET_TEST_MAIN(ViewportTest)
+#include "ViewportTest.moc"

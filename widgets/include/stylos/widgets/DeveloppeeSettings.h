@@ -1,0 +1,66 @@
+#pragma once
+/** @file
+ * @brief What the Développée dock asks of a computation: the surface to fit, the shading, its skydome
+ *        directions and light, the pixel size (0 = the cloud's own spacing) and an optional axis given
+ *        in the octree's frame (then only the radius, slope or profile is fitted; a fragment needs it).
+ *        Plain data with the translated names the dock shows, a check of its ranges, and persistence in
+ *        QSettings. Units: metres and radians, as the core. Thread-safety: a value type.
+ */
+#include "stylos/core/shading/LightShading.h"
+#include "stylos/core/unroll/Surface.h"
+
+#include <QCoreApplication>
+#include <QMetaType>
+#include <QString>
+
+#include <optional>
+
+class QSettings;
+
+namespace stylos::widgets {
+
+/** @brief How the height field becomes grey (the CLI's --shading). */
+enum class DeveloppeeShading {
+    Height,  ///< height as grey, 1–99 % robust range
+    Light,   ///< one directional light (Lambert)
+    Skydome, ///< the visible solid angle of the sky, contrast-stretched 1–99 % (the default)
+};
+
+struct DeveloppeeSettings {
+    Q_DECLARE_TR_FUNCTIONS(stylos::widgets::DeveloppeeSettings)
+
+public:
+    static constexpr int MinDirections = 1;
+    static constexpr int MaxDirections = 4096;
+
+    core::unroll::SurfaceKind surface = core::unroll::SurfaceKind::Cylinder;
+    DeveloppeeShading shading = DeveloppeeShading::Skydome;
+    int directions = 40;          ///< skydome azimuths, [MinDirections, MaxDirections]
+    core::shading::LightShadingOptions light; ///< light shading: azimuth, elevation (radians)
+    bool stretch = true;          ///< skydome: stretch the 1–99 % range to [0, 1] (false: the exact Ω / 2π)
+    double pixelSize = 0.0;       ///< metres; 0 = automatic (the .poct leaf edge)
+    /** Given axis in the octree's frame (unit direction not required: normalised by the job). */
+    std::optional<core::unroll::Axis> axis;
+
+    /** @brief An empty string when usable; else a translated reason (directions, pixel size or axis out of range). */
+    QString problem() const;
+
+    /** @brief "Cylinder", "Cone", "Surface of revolution" (translated). */
+    static QString surfaceName(core::unroll::SurfaceKind kind);
+    /** @brief "Height", "Light", "Skydome" (translated). */
+    static QString shadingName(DeveloppeeShading shading);
+    /** @brief "height", "light", "skydome": the CLI's words, used as settings values. */
+    static const char* shadingKey(DeveloppeeShading shading);
+    static std::optional<DeveloppeeShading> shadingFromKey(const QString& key);
+
+    /** @brief Writes everything but the axis (it belongs to a fragment) under the group "developpee". */
+    void save(QSettings& settings) const;
+    /** @brief Reads what save() wrote; missing or invalid values keep their defaults. */
+    static DeveloppeeSettings load(QSettings& settings);
+
+    bool operator==(const DeveloppeeSettings& other) const;
+};
+
+} // namespace stylos::widgets
+
+Q_DECLARE_METATYPE(stylos::widgets::DeveloppeeSettings)

@@ -1,0 +1,106 @@
+#pragma once
+/** @file
+ * @brief Draws the fragments' cuts as splats with OpenGL 3.3 core: one vertex buffer per fragment
+ *        (SplatBuffer uploaded as is), point sprites whose size follows the cell size and the projection
+ *        (a cell of edge s at depth z covers s · f / z pixels, times the splat factor), round or square.
+ *
+ * Shading: Headlight (the fragment's colour lit by a light at the eye, from the cells' normals),
+ * Ambient (the "ambient" layer, the 3D skydome, as grey; falls back to Headlight without the layer),
+ * Colour (the scan's colour lit by the headlight; falls back to Headlight without colour). Selected
+ * fragments are tinted.
+ *
+ * Parts of the buffers: draw() draws the same slice [from, to) of every buffer (fractions of its
+ * length). The buffers are shuffled, so a prefix is an even subsample: a moving frame draws [0, limit /
+ * visiblePoints()) with splats enlarged by √(1 / (to − from)) to cover the gaps; the full-detail image
+ * is drawn in consecutive slices at the normal size.
+ *
+ * Every method except the setters of display options needs the GL context current (initialize(),
+ * upload(), draw(), release()); GUI thread only. Failure modes: initialize() returns false and
+ * log() says why when a shader does not compile or link (no GL 3.3 core context).
+ */
+#include "stylos/widgets/Camera.h"
+#include "stylos/widgets/RenderFragment.h"
+#include "stylos/widgets/SplatBuffer.h"
+
+#include <QOpenGLFunctions_3_3_Core>
+#include <QString>
+
+#include <cstdint>
+#include <map>
+#include <memory>
+#include <vector>
+
+class QOpenGLBuffer;
+class QOpenGLShaderProgram;
+class QOpenGLVertexArrayObject;
+
+namespace stylos::widgets {
+
+class PointRenderer : protected QOpenGLFunctions_3_3_Core {
+public:
+    enum class Shading { Headlight, Ambient, Colour };
+
+    /** @brief Which splats one draw() call draws, and how. */
+    struct Pass {
+        double from = 0;                ///< slice of every buffer, fractions in [0, 1]
+        double to = 1;
+        bool enlarge = false;           ///< splats × √(1 / (to − from)) (a subsample standing for the whole)
+        bool cullBackFaces = false;     ///< skip splats whose normal faces away from the eye
+        double pixelScale = 1.0;        ///< device pixels per logical pixel of the camera's viewport
+    };
+
+    PointRenderer();
+    ~PointRenderer();
+    PointRenderer(const PointRenderer&) = delete;
+    PointRenderer& operator=(const PointRenderer&) = delete;
+
+    /** @brief Compiles the shaders (context current). False, with log(), on failure. */
+    bool initialize();
+    /** @brief Frees every GL object (context current); initialize() may be called again. */
+    void release();
+    bool isInitialized() const { return m_program != nullptr; }
+    QString log() const { return m_log; }
+
+    /** @brief The fragments drawn, with their poses and colours; buffers of ids no longer present are freed. */
+    void setFragments(const std::vector<RenderFragment>& fragments);
+    /** @brief Replaces the splats of fragment @p id (ignored if no such fragment is set). */
+    void upload(std::uint64_t id, const SplatBuffer& splats);
+    /** @brief Splats held in buffers, all fragments (hidden ones included). */
+    std::uint64_t bufferedPoints() const;
+    /** @brief Splats held in the buffers of visible fragments. */
+    std::uint64_t visiblePoints() const;
+    /** @brief Whether some visible fragment has the "ambient" layer / scan colour in its buffer. */
+    bool hasAmbient() const;
+    bool hasColour() const;
+
+    void setShading(Shading shading) { m_shading = shading; }
+    Shading shading() const { return m_shading; }
+    /** @brief Splat diameter / cell edge (default 1.5; clamped to [0.1, 10]). */
+    void setSplatFactor(double factor);
+    double splatFactor() const { return m_splatFactor; }
+    /** @brief Round splats (default) or squares. */
+    void setRoundSplats(bool round) { m_round = round; }
+    bool roundSplats() const { return m_round; }
+
+    /**
+     * @brief Draws @p pass of the visible fragments for @p camera into the bound framebuffer (depth test on;
+     *        clears nothing; the viewport is the caller's). Returns the points drawn.
+     */
+    std::uint64_t draw(const Camera& camera, const Pass& pass);
+
+private:
+    struct Slot;
+
+    RenderFragment* find(std::uint64_t id);
+
+    std::vector<RenderFragment> m_fragments;
+    std::map<std::uint64_t, std::unique_ptr<Slot>> m_slots;
+    std::unique_ptr<QOpenGLShaderProgram> m_program;
+    QString m_log;
+    Shading m_shading = Shading::Headlight;
+    double m_splatFactor = 1.5;
+    bool m_round = true;
+    float m_maxPointSize = 64;
+};
+
+} // namespace stylos::widgets

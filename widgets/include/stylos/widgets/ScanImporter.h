@@ -1,0 +1,75 @@
+#pragma once
+/** @file
+ * @brief File › Import scans: for each chosen file a background task (TaskManager, with progress and
+ *        Cancel) builds its packed octree with core::octree::buildOctreeFile — into the project's folder,
+ *        or into a cache folder while the project has never been saved — opens it, then adds the fragment
+ *        through the undo stack ("Import NAME"). A `.poct` is opened directly. Each failure becomes one
+ *        translated message naming the file and the reason; a cancelled import adds nothing and leaves no
+ *        file behind. GUI thread only; the window never waits for an import.
+ */
+#include "stylos/core/octree/OctreeBuild.h"
+
+#include <QObject>
+#include <QSet>
+#include <QString>
+#include <QStringList>
+
+class QFutureWatcherBase;
+
+namespace stylos::widgets {
+
+class SceneDocument;
+class TaskManager;
+
+class ScanImporter : public QObject {
+    Q_OBJECT
+
+public:
+    /** Adds to @p document and runs on @p tasks (neither owned; both must outlive the importer). */
+    ScanImporter(SceneDocument& document, TaskManager& tasks, QObject* parent = nullptr);
+
+    /** @brief Octree build settings for the next imports (default: BuildOptions' defaults). */
+    void setBuildOptions(const core::octree::BuildOptions& options) { m_options = options; }
+    const core::octree::BuildOptions& buildOptions() const { return m_options; }
+
+    /** @brief Where octrees go while the project is unsaved; default: the user cache's "octrees" folder. */
+    void setCacheDirectory(const QString& directory) { m_cacheDirectory = directory; }
+    QString cacheDirectory() const { return m_cacheDirectory; }
+    /** @brief Where the next import's octree goes: the project's folder, or the cache folder. */
+    QString outputDirectory() const;
+
+    /**
+     * @brief Starts one task per file of @p paths (absolute or relative to the working folder). Returns
+     *        the number of tasks started; a file that cannot even start (no output folder) is reported
+     *        through importFailed() at once.
+     */
+    int importFiles(const QStringList& paths);
+    /** @brief Imports still running or waiting. */
+    int pending() const { return static_cast<int>(m_pending.size()); }
+
+    /** @brief The file dialog's name filter: every supported point format and `.poct`. */
+    static QString fileFilter();
+
+Q_SIGNALS:
+    /** @brief A fragment was added (one undo step). */
+    void fragmentImported(quint64 id);
+    /** @brief @p message is translated and names the file and the reason. */
+    void importFailed(const QString& path, const QString& message);
+    /** @brief Every pending import ended; @p errors holds their messages (empty on full success). */
+    void importsFinished(const QStringList& errors);
+
+private:
+    QString reserveOutput(const QString& input);
+    void importEnded(const QString& input, const QString& output, QFutureWatcherBase* watcher);
+    void fail(const QString& input, const QString& message);
+
+    SceneDocument& m_document;
+    TaskManager& m_tasks;
+    core::octree::BuildOptions m_options;
+    QString m_cacheDirectory;
+    QSet<QString> m_reserved;            ///< output files of running imports (not yet on disk)
+    QSet<QFutureWatcherBase*> m_pending;
+    QStringList m_errors;
+};
+
+} // namespace stylos::widgets

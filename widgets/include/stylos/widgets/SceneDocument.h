@@ -1,0 +1,153 @@
+#pragma once
+/** @file
+ * @brief The open project: owns the core scene, its undo stack, the opened octree of each fragment, the
+ *        project file's path and the modified flag. Every edit is an undo command (AddFragmentCommand,
+ *        RemoveFragmentCommand, SetFragmentPoseCommand, RenameFragmentCommand, SetFragmentColourCommand,
+ *        SetFragmentVisibleCommand); the edit functions below push them. Docks and views observe the
+ *        signals, which always come in about-to/done pairs around a structural change (for item models).
+ *        Octrees are opened in background tasks (TaskManager); a fragment in the scene that has no
+ *        octree and is not marked missing gets one opened, so undoing a removal restores it either way.
+ *        GUI thread only. Failures come back as translated messages naming the file and the reason.
+ */
+#include "stylos/core/scene/Scene.h"
+
+#include <QObject>
+#include <QPointer>
+#include <QString>
+#include <QStringList>
+
+#include <map>
+#include <memory>
+
+class QFutureWatcherBase;
+class QUndoStack;
+
+namespace stylos::core::octree {
+class PackedOctree;
+}
+
+namespace stylos::widgets {
+
+class TaskManager;
+
+class SceneDocument : public QObject {
+    Q_OBJECT
+
+public:
+    using FragmentId = core::scene::FragmentId;
+    using OctreePtr = std::shared_ptr<const core::octree::PackedOctree>;
+
+    /** Runs its background jobs on @p tasks (not owned; it must outlive the document). */
+    explicit SceneDocument(TaskManager& tasks, QObject* parent = nullptr);
+    ~SceneDocument() override;
+
+    const core::scene::Scene& scene() const { return m_scene; }
+    /** @brief The fragment with @p id, or nullptr (invalidated by the next structural change). */
+    const core::scene::Fragment* fragment(FragmentId id) const { return m_scene.find(id); }
+    /** @brief The opened octree of @p id; nullptr while it opens, when it is missing or failed. */
+    OctreePtr octree(FragmentId id) const;
+    /** @brief True while octrees are being opened (after open(), or for restored fragments). */
+    bool isLoading() const { return !m_loads.empty(); }
+
+    QUndoStack* undoStack() const { return m_undo; }
+    TaskManager& tasks() const { return m_tasks; }
+
+    /** @brief The project file, absolute; empty for a project never saved. */
+    QString projectPath() const { return m_path; }
+    /** @brief The project file's folder; empty for a project never saved. */
+    QString projectFolder() const;
+    /** @brief The project's file name, or "Untitled" (translated) when never saved. */
+    QString displayName() const;
+    /** @brief True when the scene differs from the last save or open (the undo stack is not clean). */
+    bool isModified() const;
+
+    // Edits: each pushes one undo command and returns false (pushing nothing) when it would change nothing.
+    /**
+     * @brief Adds @p fragment (its id, when NoFragment, is allocated here) with its already opened
+     *        @p octree, or none (then it is opened in the background). @p commandText names the undo
+     *        step ("Import drum.ply"); default "Add NAME". Returns the fragment's id.
+     */
+    FragmentId addFragment(core::scene::Fragment fragment, OctreePtr octree, const QString& commandText = {});
+    bool removeFragment(FragmentId id);
+    bool renameFragment(FragmentId id, const QString& name);
+    /** @brief @p continuing: part of a drag, merged with the previous pose step of the same fragment. */
+    bool setFragmentPose(FragmentId id, const core::scene::Pose& pose, bool continuing = false);
+    bool setFragmentColour(FragmentId id, core::scene::Rgb colour);
+    bool setFragmentVisible(FragmentId id, bool visible);
+
+    // Files.
+    /** @brief An empty, unsaved project (the undo history is cleared). */
+    void newProject();
+    /** @brief Saves to projectPath(); false (with @p error) when it fails or the project was never saved. */
+    bool save(QString* error = nullptr);
+    /** @brief Saves to @p path (paths inside are made relative to its folder) and makes it the project path. */
+    bool saveAs(const QString& path, QString* error = nullptr);
+    /**
+     * @brief Replaces the project by the one in @p path and opens each fragment's octree in the
+     *        background; loadingFinished() follows with the problems met. On failure (unreadable or
+     *        malformed project) returns false with @p error and keeps the current project.
+     */
+    bool open(const QString& path, QString* error = nullptr);
+
+Q_SIGNALS:
+    void fragmentAboutToBeAdded(int index);
+    void fragmentAdded(quint64 id);
+    void fragmentAboutToBeRemoved(quint64 id);
+    void fragmentRemoved(quint64 id);
+    /** @brief Name, pose, colour, visibility, guides or the missing flag changed. */
+    void fragmentChanged(quint64 id);
+    void sceneAboutToBeReset();
+    void sceneReset();
+    /** @brief The octree of @p id became available (or failed: octree() stays null, the fragment is missing). */
+    void octreeChanged(quint64 id);
+    /**
+     * @brief The octrees being opened are all done. @p errors: a translated message per failure (a
+     *        missing or unreadable octree), naming the file; empty when all opened.
+     */
+    void loadingFinished(const QStringList& errors);
+    void projectPathChanged(const QString& path);
+    void modifiedChanged(bool modified);
+
+private:
+    friend class AddFragmentCommand;
+    friend class RemoveFragmentCommand;
+    friend class SetFragmentPoseCommand;
+    friend class RenameFragmentCommand;
+    friend class SetFragmentColourCommand;
+    friend class SetFragmentVisibleCommand;
+
+    // The commands' primitives: change the scene and signal, without touching the undo stack.
+    FragmentId allocateId() { return m_scene.allocateId(); }
+    void insertFragment(int index, core::scene::Fragment fragment, OctreePtr octree);
+    /** Removes the fragment; returns it and its octree (empty fragment when there is none). */
+    std::pair<core::scene::Fragment, OctreePtr> takeFragment(FragmentId id);
+    /** Applies @p change to the fragment and emits fragmentChanged(); false when there is none. */
+    template <typename Change>
+    bool changeFragment(FragmentId id, Change change);
+
+    void resetScene(core::scene::Scene scene);
+    void setProjectPath(const QString& path);
+    void startLoad(FragmentId id);
+    void loadEnded(FragmentId id, QFutureWatcherBase* watcher);
+    void cancelLoads();
+
+    TaskManager& m_tasks;
+    QUndoStack* m_undo;
+    core::scene::Scene m_scene;
+    std::map<FragmentId, OctreePtr> m_octrees;
+    std::map<FragmentId, QPointer<QFutureWatcherBase>> m_loads;  ///< octrees being opened
+    QStringList m_loadErrors;                                    ///< for the next loadingFinished()
+    QString m_path;
+};
+
+template <typename Change>
+bool SceneDocument::changeFragment(FragmentId id, Change change)
+{
+    core::scene::Fragment* f = m_scene.find(id);
+    if (!f) return false;
+    change(*f);
+    Q_EMIT fragmentChanged(id);
+    return true;
+}
+
+} // namespace stylos::widgets

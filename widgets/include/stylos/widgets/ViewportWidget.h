@@ -1,0 +1,161 @@
+#pragma once
+/** @file
+ * @brief The 3D view: a thin QOpenGLWidget (OpenGL 3.3 core) that forwards to the Camera, the
+ *        LodScheduler (which cells to draw, computed in the background), the PointRenderer and the
+ *        MarkerRenderer. It only turns input into camera moves and picks, and paints.
+ *
+ * Mouse: left drag orbits about the target, right or middle drag (or Shift + left) pans, the wheel
+ * dollies; a left click (press and release within 4 pixels) picks the surface point under the cursor
+ * (core::octree::pickRay on each visible fragment's leaves, a few pixels wide), marks it and emits
+ * pointPicked(); moving the cursor emits cursorMoved() when it is over a surface.
+ * Keys (the numeric keypad works too): F fit to the scene, Shift+F fit to the selection, 1 front,
+ * Ctrl+1 back, 3 right, Ctrl+3 left, 7 top, Ctrl+7 bottom, 0 isometric, 5 perspective/orthographic.
+ *
+ * Frames: while the camera moves, each paint draws an even subsample of the cuts (LodScheduler::drawLimit()
+ * points, splats enlarged) without the back faces, so that a frame stays near the target time (the frame
+ * time measured includes the window's composition, up to frameSwapped()). When it stops, the full-detail
+ * image is drawn offscreen in slices, each a short step on the GUI thread between events (sized to take
+ * about the target frame time), while the last image stays on screen; it is shown when complete, and
+ * again after each refinement stage.
+ *
+ * The scene frame is the fragments' common frame (RenderFragment::pose maps each octree into it), +Z up.
+ * Units: metres; positions in signals are in the scene frame, double precision. GUI thread only.
+ */
+#include "stylos/widgets/Camera.h"
+#include "stylos/widgets/LodScheduler.h"
+#include "stylos/widgets/PointRenderer.h"
+#include "stylos/widgets/RenderFragment.h"
+#include "stylos/widgets/ScenePick.h"
+#include "stylos/widgets/ViewRenderer.h"
+
+#include <QElapsedTimer>
+#include <QMetaType>
+#include <QOpenGLWidget>
+#include <QPoint>
+#include <QTimer>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <vector>
+
+namespace stylos::widgets {
+
+class ViewportWidget : public QOpenGLWidget {
+    Q_OBJECT
+
+public:
+    using Pick = ScenePick;
+
+    explicit ViewportWidget(QWidget* parent = nullptr);
+    ~ViewportWidget() override;
+
+    /**
+     * @brief Whether this platform can show the view: an OpenGL 3.3 core context can be created (not on
+     *        Qt's offscreen platform, where Qt 6.4 crashes composing a QOpenGLWidget). Create the view only
+     *        when true; otherwise show a message in its place. Needs a QGuiApplication.
+     */
+    static bool isSupported();
+
+    /** @brief The fragments to show (replaces the previous set). The first non-empty set is fitted. */
+    void setFragments(std::vector<RenderFragment> fragments);
+    const std::vector<RenderFragment>& fragments() const { return m_scheduler.fragments(); }
+
+    const Camera& camera() const { return m_camera; }
+    /** @brief Sets the camera (its viewport is kept); @p moving: part of a continuous move (the view
+     *         refines once it stops) rather than a jump (refined at once). */
+    void setCamera(const Camera& camera, bool moving = true);
+    void fitToScene();
+    void fitToSelection();
+    void setStandardView(StandardView view);
+    void setOrthographic(bool orthographic);
+    /** @brief Bounds of the visible fragments (selected ones only with @p selectedOnly), scene frame. */
+    Eigen::AlignedBox3d sceneBounds(bool selectedOnly = false) const;
+
+    LodScheduler& scheduler() { return m_scheduler; }
+    void setShading(PointRenderer::Shading shading);
+    PointRenderer::Shading shading() const { return m_renderer.points().shading(); }
+    void setSplatFactor(double factor);
+    double splatFactor() const { return m_renderer.points().splatFactor(); }
+    void setRoundSplats(bool round);
+    /** @brief Resolution of moving frames relative to the view (see ViewRenderer::setMotionResolution). */
+    void setMotionResolution(double scale);
+    /** @brief Whether moving frames skip splats facing away (default true; still frames never do). */
+    void setCullBackFacesWhileMoving(bool cull);
+
+    /** @brief Shows a marker at @p point (scene frame); empty hides it. */
+    void setMarker(const std::optional<Eigen::Vector3d>& point);
+    std::optional<Eigen::Vector3d> marker() const { return m_renderer.marker().marker(); }
+
+    /** @brief The surface point under the position @p pixel (logical pixels), if any. */
+    std::optional<Pick> pickAt(const QPointF& pixel) const;
+
+    /** @brief Time of the last frame, ms — drawing, glFinish and, once the window has been composed and
+     *         swapped (frameSwapped()), the composition — and the points it drew. */
+    double lastFrameMs() const { return m_lastFrameMs; }
+    std::uint64_t lastPointsDrawn() const { return m_lastPoints; }
+    /** @brief ms from the last setFragments() to the first frame that drew points; −1 before it. */
+    double firstFrameMs() const { return m_firstFrameMs; }
+    /** @brief Refined to the end and the full-detail image complete (what refined() announces). */
+    bool isSettled() const;
+    /** @brief Empty, or why the GL renderers could not start (no OpenGL 3.3 core). */
+    QString glError() const { return m_glError; }
+
+Q_SIGNALS:
+    void cursorMoved(const Eigen::Vector3d& point);
+    void pointPicked(const Eigen::Vector3d& point, quint64 fragmentId);
+    void frameTimeChanged(double ms);
+    void pointsDrawn(quint64 points);
+    /** @brief The view shows full detail for the current camera (the last stage of LodScheduler, drawn). */
+    void refined();
+    void cameraChanged();
+
+protected:
+    void initializeGL() override;
+    void resizeGL(int width, int height) override;
+    void paintGL() override;
+    void mousePressEvent(QMouseEvent* event) override;
+    void mouseMoveEvent(QMouseEvent* event) override;
+    void mouseReleaseEvent(QMouseEvent* event) override;
+    void wheelEvent(QWheelEvent* event) override;
+    void keyPressEvent(QKeyEvent* event) override;
+
+private:
+    void cameraEdited(bool moving);
+    void releaseGl();
+    void uploadPending();
+    /** The frame painted last is on screen (@p swapped: its time includes the composition), or another
+     *  paint came first (its time is the painting's): report it. */
+    void closeFrame(bool swapped);
+    /** Restarts the full-detail image; @p repaint: the view on screen is no longer right. */
+    void invalidateImage(bool repaint);
+    void imageStep();
+    QSize deviceSize() const;
+
+    Camera m_camera;
+    LodScheduler m_scheduler;
+    ViewRenderer m_renderer;
+    QTimer m_stepTimer;          ///< drives the slices of the full-detail image
+    std::uint64_t m_stepPoints = 100'000; ///< points per slice, adapted to about one target frame time
+    std::shared_ptr<const LodScheduler::CutBatch> m_pending;
+    bool m_fragmentsChanged = false;
+    QString m_glError;
+    QPoint m_pressPosition;
+    QPoint m_lastPosition;
+    Qt::MouseButton m_dragButton = Qt::NoButton;
+    bool m_dragged = false;
+    double m_lastFrameMs = 0;
+    QElapsedTimer m_frameTimer;  ///< from the start of the last paintGL
+    bool m_frameOpen = false;    ///< painted, not yet reported
+    bool m_frameAdapts = false;  ///< that frame was a subsample (feeds the budget controller)
+    std::uint64_t m_lastPoints = 0;
+    double m_firstFrameMs = -1;
+    QElapsedTimer m_sinceFragments;
+};
+
+} // namespace stylos::widgets
+
+Q_DECLARE_METATYPE(Eigen::Vector3d)

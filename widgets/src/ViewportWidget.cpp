@@ -1,0 +1,338 @@
+#include "stylos/widgets/ViewportWidget.h"
+
+#include <QGuiApplication>
+#include <QKeyEvent>
+#include <QMouseEvent>
+#include <QOpenGLContext>
+#include <QSurfaceFormat>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cmath>
+
+namespace stylos::widgets {
+
+namespace {
+
+constexpr double RadiansPerPixel = 0.008;
+constexpr double PickRadiusPixels = 3.0;
+constexpr int ClickTolerance = 4; ///< a press and release closer than this (Manhattan, pixels) is a click
+
+} // namespace
+
+ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent)
+{
+    qRegisterMetaType<Eigen::Vector3d>();
+    QSurfaceFormat format = QSurfaceFormat::defaultFormat();
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    format.setDepthBufferSize(24);
+    setFormat(format);
+    setFocusPolicy(Qt::StrongFocus);
+    setMouseTracking(true);
+    setMinimumSize(160, 120);
+    m_camera.setStandardView(StandardView::Iso);
+    setUpdateBehavior(QOpenGLWidget::PartialUpdate); // paintGL draws everything; nothing to clear for it
+    m_stepTimer.setSingleShot(true);
+    m_stepTimer.setInterval(0);
+    connect(&m_stepTimer, &QTimer::timeout, this, &ViewportWidget::imageStep);
+    connect(&m_scheduler, &LodScheduler::cutReady, this, [this](std::shared_ptr<const LodScheduler::CutBatch> batch) {
+        m_pending = std::move(batch);
+        if (m_renderer.isInitialized() && isValid()) {
+            makeCurrent();
+            uploadPending();
+            doneCurrent();
+        }
+        invalidateImage(false); // the image on screen stays until the new one is complete
+    });
+    connect(&m_scheduler, &LodScheduler::motionStopped, this, [this] { invalidateImage(false); });
+    connect(this, &QOpenGLWidget::frameSwapped, this, [this] { closeFrame(true); });
+}
+
+ViewportWidget::~ViewportWidget() { releaseGl(); }
+
+bool ViewportWidget::isSupported()
+{
+    if (QGuiApplication::platformName() == QLatin1String("offscreen")) return false;
+    QSurfaceFormat format;
+    format.setVersion(3, 3);
+    format.setProfile(QSurfaceFormat::CoreProfile);
+    QOpenGLContext context;
+    context.setFormat(format);
+    if (!context.create()) return false;
+    const QSurfaceFormat got = context.format();
+    return got.majorVersion() > 3 || (got.majorVersion() == 3 && got.minorVersion() >= 3);
+}
+
+void ViewportWidget::releaseGl()
+{
+    if (!m_renderer.isInitialized() || !context()) return;
+    makeCurrent();
+    m_renderer.release();
+    doneCurrent();
+}
+
+QSize ViewportWidget::deviceSize() const
+{
+    const double ratio = devicePixelRatioF();
+    return QSize(std::max(1, int(std::lround(width() * ratio))), std::max(1, int(std::lround(height() * ratio))));
+}
+
+bool ViewportWidget::isSettled() const
+{
+    return m_scheduler.isRefined() && !m_scheduler.isComputing() && m_renderer.isImageComplete() && !m_pending;
+}
+
+void ViewportWidget::uploadPending()
+{
+    if (m_fragmentsChanged) {
+        m_renderer.points().setFragments(m_scheduler.fragments());
+        m_fragmentsChanged = false;
+    }
+    if (!m_pending) return;
+    for (const LodScheduler::FragmentCut& cut : m_pending->fragments) m_renderer.points().upload(cut.id, cut.splats);
+    m_pending.reset();
+}
+
+void ViewportWidget::invalidateImage(bool repaint)
+{
+    m_renderer.restartImage();
+    if (!m_scheduler.isMoving()) m_stepTimer.start();
+    if (repaint) update();
+}
+
+void ViewportWidget::imageStep()
+{
+    if (m_scheduler.isMoving() || m_renderer.isImageComplete() || !m_renderer.isInitialized() || !isValid()) return;
+    makeCurrent();
+    uploadPending();
+    QElapsedTimer timer;
+    timer.start();
+    const std::uint64_t drawn = m_renderer.drawImageStep(m_camera, deviceSize(), devicePixelRatioF(), m_stepPoints);
+    doneCurrent();
+    // Slices of about one target frame time, so that input is handled between them (no composition here:
+    // its own controller, not the scheduler's).
+    const double ms = double(timer.nsecsElapsed()) * 1e-6;
+    if (drawn > 0 && ms > 0) {
+        const double next = std::min(double(drawn) * 0.85 * m_scheduler.targetFrameMs() / ms, 2.0 * double(m_stepPoints));
+        m_stepPoints = std::clamp<std::uint64_t>(std::uint64_t(next), 5'000, std::max<std::uint64_t>(m_scheduler.pointBudget(), 5'000));
+    }
+    if (!m_renderer.isImageComplete()) {
+        m_stepTimer.start();
+        return;
+    }
+    update();
+    if (isSettled()) Q_EMIT refined();
+}
+
+void ViewportWidget::setFragments(std::vector<RenderFragment> fragments)
+{
+    m_sinceFragments.start();
+    m_firstFrameMs = -1;
+    m_fragmentsChanged = true;
+    invalidateImage(false);
+    const bool fit = m_scheduler.fragments().empty() && !fragments.empty();
+    m_camera.setSceneBounds(widgets::sceneBounds(fragments));
+    if (fit) m_camera.fit(m_camera.sceneBounds());
+    m_scheduler.setFragments(std::move(fragments), m_camera);
+    update();
+    if (fit) Q_EMIT cameraChanged();
+}
+
+void ViewportWidget::setCamera(const Camera& camera, bool moving)
+{
+    const int w = m_camera.width(), h = m_camera.height();
+    m_camera = camera;
+    m_camera.setViewport(w, h);
+    cameraEdited(moving);
+}
+
+void ViewportWidget::cameraEdited(bool moving)
+{
+    if (moving) m_scheduler.cameraChanged(m_camera);
+    else m_scheduler.cameraSettled(m_camera);
+    invalidateImage(true);
+    Q_EMIT cameraChanged();
+}
+
+Eigen::AlignedBox3d ViewportWidget::sceneBounds(bool selectedOnly) const
+{
+    return widgets::sceneBounds(m_scheduler.fragments(), selectedOnly);
+}
+
+void ViewportWidget::fitToScene()
+{
+    m_camera.fit(sceneBounds());
+    cameraEdited(false);
+}
+
+void ViewportWidget::fitToSelection()
+{
+    const Eigen::AlignedBox3d box = sceneBounds(true);
+    m_camera.fit(box.isEmpty() ? sceneBounds() : box);
+    cameraEdited(false);
+}
+
+void ViewportWidget::setStandardView(StandardView view)
+{
+    m_camera.setStandardView(view);
+    cameraEdited(false);
+}
+
+void ViewportWidget::setOrthographic(bool orthographic)
+{
+    m_camera.setOrthographic(orthographic);
+    cameraEdited(false);
+}
+
+void ViewportWidget::setShading(PointRenderer::Shading shading)
+{
+    m_renderer.points().setShading(shading);
+    invalidateImage(true);
+}
+
+void ViewportWidget::setSplatFactor(double factor)
+{
+    m_renderer.points().setSplatFactor(factor);
+    invalidateImage(true);
+}
+
+void ViewportWidget::setRoundSplats(bool round)
+{
+    m_renderer.points().setRoundSplats(round);
+    invalidateImage(true);
+}
+
+void ViewportWidget::setMotionResolution(double scale)
+{
+    m_renderer.setMotionResolution(scale);
+    update();
+}
+
+void ViewportWidget::setCullBackFacesWhileMoving(bool cull) { m_renderer.setCullBackFacesWhileMoving(cull); }
+
+void ViewportWidget::setMarker(const std::optional<Eigen::Vector3d>& point)
+{
+    m_renderer.marker().setMarker(point);
+    update();
+}
+
+std::optional<ViewportWidget::Pick> ViewportWidget::pickAt(const QPointF& pixel) const
+{
+    return pickScene(m_scheduler.fragments(), m_camera, pixel.x(), pixel.y(), PickRadiusPixels);
+}
+
+void ViewportWidget::initializeGL()
+{
+    m_glError.clear();
+    if (!m_renderer.initialize()) {
+        m_glError = tr("The 3D view needs OpenGL 3.3: %1").arg(m_renderer.log());
+        qWarning("ViewportWidget: %s", qPrintable(m_glError));
+    }
+    m_fragmentsChanged = true;
+    invalidateImage(false);
+    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+}
+
+void ViewportWidget::resizeGL(int, int)
+{
+    invalidateImage(false);
+    if (width() == m_camera.width() && height() == m_camera.height()) return;
+    m_camera.setViewport(width(), height());
+    m_scheduler.cameraSettled(m_camera);
+}
+
+void ViewportWidget::paintGL()
+{
+    if (m_frameOpen) closeFrame(false); // the previous frame never reached the screen (a grab, a hidden view)
+    m_frameTimer.start();
+    uploadPending();
+    const QSize size = deviceSize();
+    const bool moving = m_scheduler.isMoving();
+    // The complete full-detail image when there is one; otherwise a quick frame (moving, or a preview).
+    const bool complete = !moving && m_renderer.isImageComplete() && m_renderer.presentImage(defaultFramebufferObject(), size);
+    const std::uint64_t drawn = complete ? m_renderer.imagePoints()
+                                         : m_renderer.drawQuick(m_camera, defaultFramebufferObject(), size,
+                                                                devicePixelRatioF(), m_scheduler.drawLimit(), moving);
+    m_renderer.finishFrame(m_camera, devicePixelRatioF());
+    m_lastFrameMs = double(m_frameTimer.nsecsElapsed()) * 1e-6;
+    m_lastPoints = drawn;
+    m_frameOpen = true;
+    m_frameAdapts = !complete;
+    if (drawn > 0 && m_firstFrameMs < 0 && m_sinceFragments.isValid())
+        m_firstFrameMs = double(m_sinceFragments.nsecsElapsed()) * 1e-6;
+}
+
+void ViewportWidget::closeFrame(bool swapped)
+{
+    if (!m_frameOpen) return;
+    m_frameOpen = false;
+    if (swapped) m_lastFrameMs = double(m_frameTimer.nsecsElapsed()) * 1e-6;
+    if (m_frameAdapts) m_scheduler.reportFrame(m_lastFrameMs, m_lastPoints);
+    Q_EMIT frameTimeChanged(m_lastFrameMs);
+    Q_EMIT pointsDrawn(m_lastPoints);
+}
+
+void ViewportWidget::mousePressEvent(QMouseEvent* event)
+{
+    m_pressPosition = m_lastPosition = event->position().toPoint();
+    m_dragButton = event->button();
+    m_dragged = false;
+}
+
+void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint position = event->position().toPoint();
+    if (m_dragButton == Qt::NoButton) {
+        if (const auto pick = pickAt(event->position())) Q_EMIT cursorMoved(pick->point);
+        return;
+    }
+    if ((position - m_pressPosition).manhattanLength() >= ClickTolerance) m_dragged = true;
+    if (!m_dragged) return;
+    const QPoint delta = position - m_lastPosition;
+    m_lastPosition = position;
+    const bool orbit = m_dragButton == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier);
+    if (orbit) m_camera.orbit(-delta.x() * RadiansPerPixel, delta.y() * RadiansPerPixel);
+    else m_camera.pan(delta.x(), delta.y());
+    cameraEdited(true);
+}
+
+void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
+{
+    if (event->button() != m_dragButton) return;
+    const bool click = !m_dragged && m_dragButton == Qt::LeftButton;
+    m_dragButton = Qt::NoButton;
+    if (!click) return;
+    if (const auto pick = pickAt(event->position())) {
+        setMarker(pick->point);
+        Q_EMIT pointPicked(pick->point, pick->fragmentId);
+    }
+}
+
+void ViewportWidget::wheelEvent(QWheelEvent* event)
+{
+    const double steps = event->angleDelta().y() / 120.0;
+    if (steps == 0) return;
+    m_camera.dolly(std::pow(0.85, steps));
+    cameraEdited(true);
+}
+
+void ViewportWidget::keyPressEvent(QKeyEvent* event)
+{
+    const bool ctrl = event->modifiers() & Qt::ControlModifier;
+    switch (event->key()) {
+    case Qt::Key_F:
+        if (event->modifiers() & Qt::ShiftModifier) fitToSelection();
+        else fitToScene();
+        break;
+    case Qt::Key_1: setStandardView(ctrl ? StandardView::Back : StandardView::Front); break;
+    case Qt::Key_3: setStandardView(ctrl ? StandardView::Left : StandardView::Right); break;
+    case Qt::Key_7: setStandardView(ctrl ? StandardView::Bottom : StandardView::Top); break;
+    case Qt::Key_0: setStandardView(StandardView::Iso); break;
+    case Qt::Key_5: setOrthographic(!m_camera.isOrthographic()); break;
+    default: QOpenGLWidget::keyPressEvent(event); return;
+    }
+    event->accept();
+}
+
+} // namespace stylos::widgets
