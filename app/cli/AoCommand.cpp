@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <mutex>
 #include <numeric>
 #include <optional>
 #include <thread>
@@ -48,22 +47,6 @@ bool sameFile(const fs::path& a, const fs::path& b)
     std::error_code error;
     return fs::equivalent(a, b, error) && !error;
 }
-
-/** Serialises update() for a sink that is not thread-safe (the skydome's workers all report). */
-class LockedProgress final : public core::ProgressSink {
-public:
-    explicit LockedProgress(core::ProgressSink& inner) : m_inner(inner) {}
-    void update(double fraction) override
-    {
-        std::lock_guard lock(m_mutex);
-        m_inner.update(fraction);
-    }
-    bool isCancelRequested() const override { return m_inner.isCancelRequested(); }
-
-private:
-    core::ProgressSink& m_inner;
-    std::mutex m_mutex;
-};
 
 struct AoRequest {
     std::string input, output;
@@ -197,8 +180,7 @@ int runAo(const std::vector<std::string>& args)
     const auto aoStart = Clock::now();
     std::vector<float> perLeaf;
     {
-        ConsoleProgress console("skydome, " + std::to_string(r.options.directions) + " directions");
-        LockedProgress progress(console);
+        ConsoleProgress progress("skydome, " + std::to_string(r.options.directions) + " directions");
         auto values = ao::computeAmbientOcclusion(cells, r.options, &progress);
         if (!values) return fail(values.error());
         perLeaf = ao::valuesPerLeaf(cells, values.value());

@@ -24,8 +24,8 @@ ConsoleProgress::~ConsoleProgress()
 void ConsoleProgress::update(double fraction)
 {
     const int percent = static_cast<int>(fraction * 100.0);
-    if (percent == m_lastPercent || !m_tty) return;
-    m_lastPercent = percent;
+    if (!m_tty || m_lastPercent.exchange(percent) == percent) return;
+    std::lock_guard lock(m_print);
     std::fprintf(stderr, "\r%s %3d%%", m_label.c_str(), percent);
     std::fflush(stderr);
 }

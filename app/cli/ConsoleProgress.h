@@ -2,10 +2,13 @@
 // Progress on stderr (only when stderr is a terminal) and cancel on Ctrl-C, for stylos-cli.
 #include "stylos/core/util/Progress.h"
 
+#include <atomic>
+#include <mutex>
 #include <string>
 
 namespace stylos::cli {
 
+/** Thread-safe, as ProgressSink requires: workers of a parallel stage may all report. */
 class ConsoleProgress final : public core::ProgressSink {
 public:
     explicit ConsoleProgress(std::string label);
@@ -15,7 +18,8 @@ public:
 
 private:
     std::string m_label;
-    int m_lastPercent = -1;
+    std::atomic<int> m_lastPercent{-1};
+    std::mutex m_print;
     bool m_tty = false;
 };
 
