@@ -3,33 +3,55 @@
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
+#include <cstdio>
+#include <cstdlib>
+
 namespace stylos::app {
+
+namespace {
+QString tr(const char* text) { return QCoreApplication::translate("stylos::app::CommandLine", text); }
+
+[[noreturn]] void usageError(const QString& message)
+{
+    std::fprintf(stderr, "stylos: %s\n", qPrintable(message));
+    std::exit(2);
+}
+} // namespace
 
 CommandLine CommandLine::parse(const QCoreApplication& app)
 {
     QCommandLineParser parser;
-    parser.setApplicationDescription(QCoreApplication::translate(
-        "stylos::app::CommandLine", "Stylos, a workbench for very large 3D scans of monuments. With no file, "
-                                    "opens the demo scene."));
+    parser.setApplicationDescription(
+        tr("Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene."));
     parser.addHelpOption();
     parser.addVersionOption();
-    const QCommandLineOption grab(
-        QStringLiteral("grab"),
-        QCoreApplication::translate("stylos::app::CommandLine",
-                                    "Wait until loading ends, save the window as a PNG image to <file> and exit "
-                                    "(status 1 if a file could not be loaded)."),
-        QCoreApplication::translate("stylos::app::CommandLine", "file"));
+    const QCommandLineOption grab(QStringLiteral("grab"),
+                                  tr("Wait until the scene and its tasks are ready and the view is refined, save "
+                                     "the window as a PNG image to <file> and exit (status 1 if something failed)."),
+                                  tr("file"));
+    const QCommandLineOption orbit(QStringLiteral("orbit-benchmark"),
+                                   tr("Orbit the camera for <frames> frames at 1280 × 800 once the scene is ready, "
+                                      "print the frame times as JSON and exit."),
+                                   tr("frames"));
     parser.addOption(grab);
-    parser.addPositionalArgument(
-        QStringLiteral("files"),
-        QCoreApplication::translate("stylos::app::CommandLine",
-                                    "Point files to load (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ)."),
-        QStringLiteral("[files...]"));
+    parser.addOption(orbit);
+    parser.addPositionalArgument(QStringLiteral("files"),
+                                 tr("A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, "
+                                    "OBJ, POCT)."),
+                                 QStringLiteral("[files...]"));
     parser.process(app);
 
     CommandLine result;
     result.files = parser.positionalArguments();
     result.grabPath = parser.value(grab);
+    if (parser.isSet(orbit)) {
+        bool ok = false;
+        result.orbitFrames = parser.value(orbit).toInt(&ok);
+        if (!ok || result.orbitFrames < 1 || result.orbitFrames > 100000)
+            usageError(tr("--orbit-benchmark: '%1' is not a frame count (1 to 100000)").arg(parser.value(orbit)));
+        if (result.files.size() != 1) usageError(tr("--orbit-benchmark needs exactly one file"));
+        if (!result.grabPath.isEmpty()) usageError(tr("--grab and --orbit-benchmark do not go together"));
+    }
     return result;
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 /** @file
- * @brief The `stylos` command line: FILES to load (none: the demo scene), --grab OUT.png for automation,
- *        --help and --version (handled by QCommandLineParser, which exits).
+ * @brief The `stylos` command line: FILES to open (a `.stylos` project, or scans and `.poct` octrees to
+ *        import; none: the demo scene), --grab OUT.png and --orbit-benchmark N for automation, --help and
+ *        --version (handled by QCommandLineParser, which exits).
  */
 #include <QString>
 #include <QStringList>
@@ -11,10 +12,11 @@ class QCoreApplication;
 namespace stylos::app {
 
 struct CommandLine {
-    QStringList files;  ///< point files to load; empty: open the demo scene
-    QString grabPath;   ///< non-empty: render the window to this PNG once loading ends, then exit
+    QStringList files;       ///< what to open; empty: the demo scene
+    QString grabPath;        ///< non-empty: render the window to this PNG once everything is ready, then exit
+    int orbitFrames = 0;     ///< > 0: orbit the camera for this many frames, print JSON, exit
 
-    /** Parses the application's arguments; exits the process for --help, --version and usage errors. */
+    /** Parses the application's arguments; exits the process for --help, --version and usage errors (2). */
     static CommandLine parse(const QCoreApplication& app);
 };
 

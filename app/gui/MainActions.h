@@ -1,50 +1,92 @@
 #pragma once
 /** @file
- * @brief The main window's menu actions and their handlers: File › Open scans…, File › Quit,
- *        Help › Open demo, Help › About. MainWindow only places the menus.
+ * @brief The Edit, View, Tools and Help menus and the toolbar: undo/redo (the document's stack), remove,
+ *        fit, standard views, projection and shading of the 3D view, Compute skydome and Développée,
+ *        the demo, the language and About. Actions that need the window's parts (the selection, the demo)
+ *        go out as signals; MainWindow connects them. GUI thread only.
  */
 #include <QObject>
 
+#include <array>
+
 class QAction;
+class QActionGroup;
 class QMenu;
 class QMenuBar;
+class QToolBar;
 class QWidget;
 
 namespace stylos::widgets {
-class SceneSession;
-}
+class SceneDocument;
+class ViewportWidget;
+} // namespace stylos::widgets
 
 namespace stylos::app {
+
+class Translations;
 
 class MainActions : public QObject {
     Q_OBJECT
 
 public:
-    /** Acts on @p session for @p window (both not owned). */
-    MainActions(widgets::SceneSession& session, QWidget& window);
+    /** None owned; @p viewport may be null (no OpenGL: the View actions are disabled). */
+    MainActions(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, Translations& translations,
+                QWidget& window);
 
-    /** Fills @p menuBar with the File and Help menus. */
-    void populate(QMenuBar& menuBar);
+    /** @brief Adds Edit, View, Tools and Help after the menus already in @p menuBar; returns the View menu. */
+    QMenu* populate(QMenuBar& menuBar);
+    /** @brief Fills @p toolBar (after the File actions the window put there). */
+    void populateToolBar(QToolBar& toolBar);
     void retranslateUi();
 
-    /** The name filter of the open dialog, listing every supported extension. */
-    static QString scanFileFilter();
+    /** @brief Enables what needs a selection. */
+    void setSelectionCount(int count);
+    /** @brief Checks the shading action matching the view's shading. */
+    void syncShading();
 
-    QAction* openScansAction() const { return m_openScans; }
+    QAction* undoAction() const { return m_undo; }
+    QAction* redoAction() const { return m_redo; }
+    QAction* removeAction() const { return m_remove; }
+    QAction* skydomeAction() const { return m_skydome; }
+    QAction* developpeeAction() const { return m_developpee; }
     QAction* openDemoAction() const { return m_openDemo; }
+    QAction* orthographicAction() const { return m_orthographic; }
+
+Q_SIGNALS:
+    void removeRequested();
+    void skydomeRequested();
+    void developpeeRequested();
+    void openDemoRequested();
+    /** @brief The shading was changed from the menu. */
+    void shadingChanged();
 
 private:
-    void openScans();
     void about();
-    void updateEnabled();
+    void addViewActions();
 
-    widgets::SceneSession& m_session;
+    widgets::SceneDocument& m_document;
+    widgets::ViewportWidget* m_viewport;
+    Translations& m_translations;
     QWidget& m_window;
-    QMenu* m_fileMenu = nullptr;
-    QMenu* m_helpMenu = nullptr;
-    QAction* m_openScans;
-    QAction* m_quit;
+    QMenu* m_edit = nullptr;
+    QMenu* m_view = nullptr;
+    QMenu* m_standard = nullptr;
+    QMenu* m_shadingMenu = nullptr;
+    QMenu* m_tools = nullptr;
+    QMenu* m_help = nullptr;
+    QMenu* m_language = nullptr;
+    QAction* m_undo;
+    QAction* m_redo;
+    QAction* m_remove;
+    QAction* m_fitScene;
+    QAction* m_fitSelection;
+    std::array<QAction*, 7> m_views{};
+    QAction* m_orthographic;
+    QActionGroup* m_shading;
+    QAction* m_skydome;
+    QAction* m_developpee;
     QAction* m_openDemo;
+    QActionGroup* m_languages;
     QAction* m_about;
 };
 

@@ -1,19 +1,37 @@
 #include "MainWindow.h"
 
+#include "DeveloppeeLink.h"
+#include "LogDock.h"
 #include "MainActions.h"
-#include "stylos/widgets/SceneSession.h"
-#include "stylos/widgets/SceneSummaryModel.h"
-#include "stylos/widgets/SceneSummaryWidget.h"
-#include "stylos/widgets/TaskRunner.h"
-#include "stylos/widgets/TaskStatusWidget.h"
+#include "ProjectActions.h"
+#include "PropertiesDock.h"
+#include "SceneDock.h"
+#include "StatusReadout.h"
+#include "Translations.h"
+#include "ViewportSync.h"
+#include "DisplaySettingsWidget.h"
+#include "stylos/widgets/DemoScene.h"
+#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeeSettings.h"
+#include "stylos/widgets/ScanImporter.h"
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/SkydomeRunner.h"
+#include "stylos/widgets/TaskListWidget.h"
+#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/ViewportWidget.h"
 
 #include <QCloseEvent>
+#include <QDir>
+#include <QLabel>
 #include <QMenuBar>
 #include <QMessageBox>
+#include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
+#include <QToolBar>
+#include <QUndoStack>
 
-#include <cstdio>
+#include <memory>
 
 namespace stylos::app {
 
@@ -22,34 +40,268 @@ const auto GeometryKey = QStringLiteral("mainWindow/geometry");
 const auto StateKey = QStringLiteral("mainWindow/state");
 } // namespace
 
-MainWindow::MainWindow(const QString& demoDirectory, QWidget* parent)
-    : QMainWindow(parent), m_session(new widgets::SceneSession(demoDirectory, this))
+MainWindow::MainWindow(Translations& translations, const QString& demoDirectory, QWidget* parent)
+    : QMainWindow(parent), m_translations(translations), m_tasks(new widgets::TaskManager(this)),
+      m_document(new widgets::SceneDocument(*m_tasks, this)),
+      m_importer(new widgets::ScanImporter(*m_document, *m_tasks, this)),
+      m_demo(new widgets::DemoScene(*m_tasks, demoDirectory, this)),
+      m_skydome(new widgets::SkydomeRunner(*m_document, this))
 {
     setObjectName(QStringLiteral("MainWindow"));
-    m_summary = new widgets::SceneSummaryWidget(m_session->model(), this);
-    setCentralWidget(m_summary);
-    m_taskStatus = new widgets::TaskStatusWidget(m_session->runner(), this);
-    statusBar()->addPermanentWidget(m_taskStatus);
-    m_actions = new MainActions(*m_session, *this);
-    m_actions->populate(*menuBar());
+    setAcceptDrops(true);
+    setDockNestingEnabled(true);
+    if (widgets::ViewportWidget::isSupported()) {
+        m_viewport = new widgets::ViewportWidget(this);
+        m_viewport->setObjectName(QStringLiteral("viewport"));
+        m_viewport->setFocusPolicy(Qt::StrongFocus);
+        setCentralWidget(m_viewport);
+        m_sync = new ViewportSync(*m_document, *m_viewport, this);
+    } else {
+        auto* message = new QLabel(this);
+        message->setObjectName(QStringLiteral("noViewport"));
+        message->setAlignment(Qt::AlignCenter);
+        message->setWordWrap(true);
+        setCentralWidget(message);
+    }
+    createDocks();
+    createMenus();
+    connectDocument();
 
-    connect(m_session, &widgets::SceneSession::operationFinished, this, &MainWindow::reportFinished);
+    m_readout = new StatusReadout(this);
+    statusBar()->addPermanentWidget(m_readout);
+    if (m_viewport) {
+        connect(m_viewport, &widgets::ViewportWidget::cursorMoved, m_readout, &StatusReadout::setCursor3d);
+        connect(m_viewport, &widgets::ViewportWidget::frameTimeChanged, m_readout, &StatusReadout::setFrameTime);
+        connect(m_viewport, &widgets::ViewportWidget::pointsDrawn, m_readout, &StatusReadout::setPointsDrawn);
+        connect(m_viewport, &widgets::ViewportWidget::pointPicked, this, [this](const Eigen::Vector3d& p, quint64 id) {
+            const auto* f = m_document->fragment(id);
+            statusBar()->showMessage(tr("%1 on %2").arg(StatusReadout::formatPoint(p),
+                                                        f ? QString::fromStdString(f->name) : QString()));
+        });
+    }
 
     QSettings settings;
-    if (!restoreGeometry(settings.value(GeometryKey).toByteArray())) resize(960, 600);
+    if (!restoreGeometry(settings.value(GeometryKey).toByteArray())) resize(1280, 800);
     restoreState(settings.value(StateKey).toByteArray());
     retranslateUi();
+    updateTitle();
 }
 
-MainWindow::~MainWindow() = default;
+MainWindow::~MainWindow()
+{
+    // The workers must not outlive the document they report to.
+    m_tasks->cancelAllAndWait();
+}
+
+void MainWindow::createDocks()
+{
+    m_sceneDock = new SceneDock(*m_document, this);
+    addDockWidget(Qt::LeftDockWidgetArea, m_sceneDock);
+    m_propertiesDock = new PropertiesDock(*m_document, m_viewport, this);
+    addDockWidget(Qt::LeftDockWidgetArea, m_propertiesDock);
+
+    m_developpee = new widgets::DeveloppeeDock;
+    m_developpee->setObjectName(QStringLiteral("developpee"));
+    QSettings settings;
+    m_developpee->setSettings(widgets::DeveloppeeSettings::load(settings));
+    m_developpeeDock = new QDockWidget(this);
+    m_developpeeDock->setObjectName(QStringLiteral("developpeeDock"));
+    m_developpeeDock->setWidget(m_developpee);
+    addDockWidget(Qt::RightDockWidgetArea, m_developpeeDock);
+    m_developpeeLink = new DeveloppeeLink(*m_document, *m_tasks, *m_developpee, m_viewport, this);
+    connect(m_developpeeLink, &DeveloppeeLink::finished, this, &MainWindow::report);
+
+    m_tasksDock = new QDockWidget(this);
+    m_tasksDock->setObjectName(QStringLiteral("tasksDock"));
+    m_tasksDock->setWidget(new widgets::TaskListWidget(*m_tasks));
+    addDockWidget(Qt::BottomDockWidgetArea, m_tasksDock);
+    m_logDock = new LogDock(this);
+    addDockWidget(Qt::BottomDockWidgetArea, m_logDock);
+    tabifyDockWidget(m_tasksDock, m_logDock);
+    m_tasksDock->raise();
+    resizeDocks({m_sceneDock, m_developpeeDock}, {280, 420}, Qt::Horizontal);
+    resizeDocks({m_tasksDock}, {140}, Qt::Vertical);
+
+    connect(m_sceneDock, &SceneDock::selectionChanged, this, &MainWindow::selectionChanged);
+}
+
+void MainWindow::createMenus()
+{
+    m_projectActions = new ProjectActions(*m_document, *m_importer, *this);
+    connect(m_projectActions, &ProjectActions::reported, this, &MainWindow::report);
+    m_fileMenu = menuBar()->addMenu(QString());
+    m_fileMenu->setObjectName(QStringLiteral("menuFile"));
+    m_projectActions->populate(*m_fileMenu);
+
+    m_actions = new MainActions(*m_document, m_viewport, m_translations, *this);
+    QMenu* viewMenu = m_actions->populate(*menuBar());
+    for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_propertiesDock),
+                              m_developpeeDock, m_tasksDock, static_cast<QDockWidget*>(m_logDock)})
+        viewMenu->addAction(dock->toggleViewAction());
+
+    m_toolBar = addToolBar(QString());
+    m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
+    m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_toolBar->addAction(m_projectActions->openAction());
+    m_toolBar->addAction(m_projectActions->saveAction());
+    m_toolBar->addAction(m_projectActions->importAction());
+    m_toolBar->addSeparator();
+    m_actions->populateToolBar(*m_toolBar);
+
+    connect(m_actions, &MainActions::removeRequested, this, [this] {
+        const auto ids = m_sceneDock->selectedFragments();
+        if (ids.size() > 1) m_document->undoStack()->beginMacro(tr("Remove %n fragment(s)", nullptr, int(ids.size())));
+        for (const auto id : ids) m_document->removeFragment(id);
+        if (ids.size() > 1) m_document->undoStack()->endMacro();
+    });
+    connect(m_actions, &MainActions::skydomeRequested, this, &MainWindow::computeSkydome);
+    connect(m_actions, &MainActions::developpeeRequested, this, &MainWindow::showDeveloppee);
+    connect(m_actions, &MainActions::openDemoRequested, this, &MainWindow::openDemo);
+    if (auto* display = m_propertiesDock->displaySettings())
+        connect(m_actions, &MainActions::shadingChanged, display, &DisplaySettingsWidget::syncFromViewport);
+}
+
+void MainWindow::connectDocument()
+{
+    using widgets::SceneDocument;
+    connect(m_document, &SceneDocument::modifiedChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::projectPathChanged, this, &MainWindow::updateTitle);
+    connect(m_document, &SceneDocument::loadingFinished, this, &MainWindow::reportAll);
+    connect(m_importer, &widgets::ScanImporter::importFailed, this,
+            [this](const QString&, const QString& message) { m_logDock->append(LogDock::Level::Error, message); });
+    connect(m_importer, &widgets::ScanImporter::fragmentImported, this, [this](quint64 id) {
+        if (const auto* f = m_document->fragment(id))
+            report(tr("Imported %1").arg(QString::fromStdString(f->name)), false);
+    });
+    connect(m_importer, &widgets::ScanImporter::importsFinished, this, [this](const QStringList& errors) {
+        // Each error is in the log already (importFailed); one box says it all.
+        if (errors.isEmpty() || !m_errorDialogs) return;
+        auto* box = new QMessageBox(QMessageBox::Warning, tr("Stylos"),
+                                    errors.size() == 1 ? errors.first()
+                                                       : tr("%n scan(s) could not be imported:", nullptr,
+                                                            int(errors.size())),
+                                    QMessageBox::Ok, this);
+        box->setObjectName(QStringLiteral("errorBox"));
+        if (errors.size() > 1) box->setInformativeText(errors.join(QStringLiteral("\n\n")));
+        box->setAttribute(Qt::WA_DeleteOnClose);
+        box->open();
+    });
+    connect(m_demo, &widgets::DemoScene::ready, this, [this](const QString& project) {
+        m_demoPending = false;
+        if (!m_projectActions->openProject(project)) return;
+        // The instrument at work: once the octrees are open, the drum is selected and unrolled.
+        auto once = std::make_shared<QMetaObject::Connection>();
+        *once = connect(m_document, &SceneDocument::loadingFinished, this, [this, once](const QStringList& errors) {
+            disconnect(*once);
+            if (!errors.isEmpty() || m_document->scene().empty()) return;
+            m_sceneDock->selectFragment(m_document->scene().fragments().front().id);
+            m_developpeeLink->compute();
+        });
+    });
+    connect(m_demo, &widgets::DemoScene::failed, this, [this](const QString& message) {
+        m_demoPending = false;
+        report(message, true);
+    });
+    connect(m_skydome, &widgets::SkydomeRunner::computed, this, [this](quint64, const widgets::SkydomeResult& r) {
+        const auto* f = m_document->fragment(r.fragmentId);
+        report(tr("Skydome of %1: %2 cells at level %3, %4 directions, %5 s")
+                   .arg(f ? QString::fromStdString(f->name) : r.octreePath)
+                   .arg(r.cells)
+                   .arg(r.level)
+                   .arg(r.directions)
+                   .arg(r.seconds, 0, 'f', 1),
+               false);
+    });
+    connect(m_skydome, &widgets::SkydomeRunner::failed, this,
+            [this](quint64, const QString& message) { report(message, true); });
+    connect(m_demo, &widgets::DemoScene::cancelled, this, [this] { m_demoPending = false; });
+}
+
+void MainWindow::selectionChanged()
+{
+    const auto ids = m_sceneDock->selectedFragments();
+    if (m_sync) m_sync->setSelection(ids);
+    const auto current = m_sceneDock->currentFragment();
+    m_propertiesDock->setFragment(current);
+    m_developpeeLink->setFragment(ids.size() == 1 ? ids.first() : current);
+    m_actions->setSelectionCount(static_cast<int>(ids.size()));
+}
+
+void MainWindow::openDemo()
+{
+    if (m_demoPending || !m_projectActions->maybeSave()) return;
+    m_demoPending = true;
+    if (!m_demo->prepare()) m_demoPending = false;
+}
+
+void MainWindow::computeSkydome()
+{
+    const auto ids = m_sceneDock->selectedFragments();
+    if (m_skydome->start(ids) == 0 && !ids.isEmpty())
+        report(tr("The skydome of the selection is being computed already, or its octrees are not open yet"), false);
+    // Show the result as soon as it comes: switch the view to skydome shading.
+    if (m_viewport && m_viewport->shading() != widgets::PointRenderer::Shading::Ambient) {
+        m_viewport->setShading(widgets::PointRenderer::Shading::Ambient);
+        m_actions->syncShading();
+        if (auto* display = m_propertiesDock->displaySettings()) display->syncFromViewport();
+    }
+}
+
+bool MainWindow::isBusy() const
+{
+    return !m_tasks->isIdle() || m_document->isLoading() || m_importer->pending() > 0 || m_demoPending;
+}
+
+void MainWindow::setErrorDialogsEnabled(bool enabled)
+{
+    m_errorDialogs = enabled;
+    m_projectActions->setPromptsEnabled(enabled);
+}
+
+void MainWindow::showDeveloppee()
+{
+    m_developpeeDock->show();
+    m_developpeeDock->raise();
+    m_developpeeLink->compute();
+}
+
+void MainWindow::report(const QString& message, bool failed)
+{
+    m_logDock->append(failed ? LogDock::Level::Error : LogDock::Level::Info, message);
+    statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0), 8000);
+    if (!failed || !m_errorDialogs) return;
+    // Window-modal and non-blocking: the event loop, and every task, keep running.
+    auto* box = new QMessageBox(QMessageBox::Warning, tr("Stylos"), message, QMessageBox::Ok, this);
+    box->setObjectName(QStringLiteral("errorBox"));
+    box->setAttribute(Qt::WA_DeleteOnClose);
+    box->open();
+}
+
+void MainWindow::reportAll(const QStringList& errors)
+{
+    if (errors.isEmpty()) return;
+    for (const QString& error : errors.mid(0, errors.size() - 1)) m_logDock->append(LogDock::Level::Error, error);
+    report(errors.size() == 1 ? errors.first() : errors.join(QStringLiteral("\n\n")), true);
+}
+
+void MainWindow::updateTitle()
+{
+    setWindowTitle(tr("%1[*] — Stylos").arg(m_document->displayName()));
+    setWindowModified(m_document->isModified());
+}
 
 void MainWindow::closeEvent(QCloseEvent* event)
 {
+    if (!m_projectActions->maybeSave()) {
+        event->ignore();
+        return;
+    }
     QSettings settings;
     settings.setValue(GeometryKey, saveGeometry());
     settings.setValue(StateKey, saveState());
-    // The worker checks for Cancel every batch: this returns within a fraction of a second.
-    m_session->runner().cancelAndWait();
+    m_developpee->settings().save(settings);
+    // Every job checks for Cancel between steps: this returns within a fraction of a second.
+    m_tasks->cancelAllAndWait();
     event->accept();
 }
 
@@ -58,33 +310,35 @@ void MainWindow::changeEvent(QEvent* event)
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
         m_actions->retranslateUi();
+        m_projectActions->retranslateUi();
+        updateTitle();
     }
     QMainWindow::changeEvent(event);
 }
 
-void MainWindow::retranslateUi()
+void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 {
-    setWindowTitle(tr("Stylos"));
+    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
 }
 
-void MainWindow::reportFinished(const QStringList& errors, bool cancelled)
+void MainWindow::dropEvent(QDropEvent* event)
 {
-    const int files = m_session->model().rowCount();
-    if (cancelled) statusBar()->showMessage(tr("Cancelled"), 5000);
-    else statusBar()->showMessage(tr("%n file(s) in the scene", nullptr, files), 5000);
-    if (errors.isEmpty()) return;
+    QStringList paths;
+    for (const QUrl& url : event->mimeData()->urls())
+        if (url.isLocalFile()) paths << url.toLocalFile();
+    if (paths.isEmpty()) return;
+    event->acceptProposedAction();
+    m_projectActions->openPaths(paths);
+}
 
-    for (const QString& error : errors) std::fprintf(stderr, "stylos: %s\n", qPrintable(error));
-    if (!m_errorDialogs) return;
-    // Window-modal and non-blocking: the event loop, and any later task, keep running.
-    const int count = static_cast<int>(errors.size());
-    auto* box = new QMessageBox(QMessageBox::Warning, tr("Stylos"),
-                                count == 1 ? errors.first() : tr("%n problem(s) while loading:", nullptr, count),
-                                QMessageBox::Ok, this);
-    box->setObjectName(QStringLiteral("loadErrorBox"));
-    if (count > 1) box->setInformativeText(errors.join(QStringLiteral("\n\n")));
-    box->setAttribute(Qt::WA_DeleteOnClose);
-    box->open();
+void MainWindow::retranslateUi()
+{
+    m_fileMenu->setTitle(tr("&File"));
+    m_toolBar->setWindowTitle(tr("Main toolbar"));
+    m_tasksDock->setWindowTitle(tr("Tasks"));
+    m_developpeeDock->setWindowTitle(tr("Développée"));
+    if (auto* message = findChild<QLabel*>(QStringLiteral("noViewport")))
+        message->setText(tr("The 3D view needs OpenGL 3.3 (core profile), which this display does not offer."));
 }
 
 } // namespace stylos::app

@@ -1,50 +1,112 @@
 #pragma once
 /** @file
- * @brief The Stylos main window. It only wires: the scene session, the summary as central widget, the
- *        task strip in the status bar, the menu actions, window settings and error reporting.
+ * @brief The Stylos main window. It only wires: the scene document with its undo stack, the task
+ *        manager, the importer and the demo; the 3D view in the centre (a message in its place without
+ *        OpenGL 3.3); the Scene, Properties, Tasks, Développée and Log docks; the menus, toolbar and
+ *        status bar; window settings; and the reporting of what happened (log, status bar, message boxes).
  */
 #include <QMainWindow>
 #include <QStringList>
 
+class QDockWidget;
+class QToolBar;
+
 namespace stylos::widgets {
-class SceneSession;
-class SceneSummaryWidget;
-class TaskStatusWidget;
-}
+class DemoScene;
+class DeveloppeeDock;
+class ScanImporter;
+class SceneDocument;
+class SkydomeRunner;
+class TaskManager;
+class ViewportWidget;
+} // namespace stylos::widgets
 
 namespace stylos::app {
 
+class DeveloppeeLink;
+class LogDock;
 class MainActions;
+class ProjectActions;
+class PropertiesDock;
+class SceneDock;
+class StatusReadout;
+class Translations;
+class ViewportSync;
 
 class MainWindow : public QMainWindow {
     Q_OBJECT
 
 public:
-    /** The demo scene goes to @p demoDirectory, or to the user cache when empty. */
-    explicit MainWindow(const QString& demoDirectory = {}, QWidget* parent = nullptr);
+    /** @p translations switches the language (Help › Language; not owned). The demo goes to
+     *  @p demoDirectory, or to the user cache when empty. */
+    explicit MainWindow(Translations& translations, const QString& demoDirectory = {}, QWidget* parent = nullptr);
     ~MainWindow() override;
 
-    widgets::SceneSession& session() const { return *m_session; }
-    widgets::SceneSummaryWidget& summary() const { return *m_summary; }
-    widgets::TaskStatusWidget& taskStatus() const { return *m_taskStatus; }
+    widgets::TaskManager& tasks() const { return *m_tasks; }
+    widgets::SceneDocument& document() const { return *m_document; }
+    widgets::ScanImporter& importer() const { return *m_importer; }
+    widgets::DemoScene& demo() const { return *m_demo; }
+    widgets::SkydomeRunner& skydome() const { return *m_skydome; }
+    /** @brief Null when this platform has no OpenGL 3.3 core (a message stands in its place). */
+    widgets::ViewportWidget* viewport() const { return m_viewport; }
+    SceneDock& sceneDock() const { return *m_sceneDock; }
+    PropertiesDock& propertiesDock() const { return *m_propertiesDock; }
+    widgets::DeveloppeeDock& developpeeDock() const { return *m_developpee; }
+    DeveloppeeLink& developpeeLink() const { return *m_developpeeLink; }
+    LogDock& logDock() const { return *m_logDock; }
+    ProjectActions& projectActions() const { return *m_projectActions; }
     MainActions& actions() const { return *m_actions; }
+    StatusReadout& readout() const { return *m_readout; }
 
-    /** When false, errors go to stderr only (automation); by default also to a message box. */
-    void setErrorDialogsEnabled(bool enabled) { m_errorDialogs = enabled; }
+    /** @brief Opens the demo project (generated first when the cache lacks it). */
+    void openDemo();
+    /** @brief Starts "Compute skydome" on the selected fragments. */
+    void computeSkydome();
+    /** @brief True while anything runs or loads: tasks, imports, octrees being opened, the demo. */
+    bool isBusy() const;
+
+    /** When false, errors go to the log and stderr only (automation, tests); by default also to a message box. */
+    void setErrorDialogsEnabled(bool enabled);
 
 protected:
     void closeEvent(QCloseEvent* event) override;
     void changeEvent(QEvent* event) override;
+    void dragEnterEvent(QDragEnterEvent* event) override;
+    void dropEvent(QDropEvent* event) override;
 
 private:
+    void createDocks();
+    void createMenus();
+    void connectDocument();
+    void selectionChanged();
+    void report(const QString& message, bool failed);
+    void reportAll(const QStringList& errors);
+    void showDeveloppee();
+    void updateTitle();
     void retranslateUi();
-    void reportFinished(const QStringList& errors, bool cancelled);
 
-    widgets::SceneSession* m_session;
-    widgets::SceneSummaryWidget* m_summary;
-    widgets::TaskStatusWidget* m_taskStatus;
-    MainActions* m_actions;
+    Translations& m_translations;
+    widgets::TaskManager* m_tasks;
+    widgets::SceneDocument* m_document;
+    widgets::ScanImporter* m_importer;
+    widgets::DemoScene* m_demo;
+    widgets::SkydomeRunner* m_skydome;
+    widgets::ViewportWidget* m_viewport = nullptr;
+    ViewportSync* m_sync = nullptr;
+    SceneDock* m_sceneDock = nullptr;
+    PropertiesDock* m_propertiesDock = nullptr;
+    QDockWidget* m_tasksDock = nullptr;
+    QDockWidget* m_developpeeDock = nullptr;
+    widgets::DeveloppeeDock* m_developpee = nullptr;
+    DeveloppeeLink* m_developpeeLink = nullptr;
+    LogDock* m_logDock = nullptr;
+    ProjectActions* m_projectActions = nullptr;
+    MainActions* m_actions = nullptr;
+    StatusReadout* m_readout = nullptr;
+    QToolBar* m_toolBar = nullptr;
+    QMenu* m_fileMenu = nullptr;
     bool m_errorDialogs = true;
+    bool m_demoPending = false;
 };
 
 } // namespace stylos::app

@@ -5,6 +5,7 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/octree/PackedOctree.h"
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/TaskManager.h"
 
@@ -101,7 +102,11 @@ void DeveloppeeJobTest::computesTheDrum()
     QCOMPARE(r.heights->height(), r.map->height());
     QCOMPARE(r.image.format(), QImage::Format_ARGB32_Premultiplied);
     QCOMPARE(r.unroll.pixelSize, r.map->pixelSize());
-    // The automatic pixel size is the leaf edge: the width is the circumference in leaves.
+    // The automatic pixel size of a .poct is three leaf edges: the width is the circumference in them.
+    auto octree = stylos::core::octree::PackedOctree::open(m_poct.toStdString());
+    QVERIFY(octree.ok());
+    const double leafEdge = std::ldexp(octree->box().size, -octree->depth());
+    QCOMPARE(r.map->pixelSize(), DeveloppeeJob::PoctPixelEdges * leafEdge);
     QCOMPARE(r.map->width(), int(std::ceil(r.map->circumference() / r.map->pixelSize())));
     // Not blank: most pixels covered (a drum scanned all round), covered exactly where a height is, greys vary.
     qsizetype covered = 0;

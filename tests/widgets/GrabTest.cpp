@@ -1,6 +1,11 @@
-// The `stylos` executable's automation: --grab OUT.png [FILES] waits for loading, writes a non-blank
-// PNG of the window and exits 0, or 1 naming the file that failed; --version and --help.
+// The `stylos` executable's automation: --grab OUT.png [FILES] waits for the scene, its tasks and the
+// refined view, writes a PNG of the window in which the drum is visible and exits 0, or 1 naming the file
+// that failed; --orbit-benchmark N FILE prints the frame times as JSON; --version and --help.
+#include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
+
+#include <QJsonDocument>
+#include <QJsonObject>
 
 #include <QImage>
 #include <QProcess>
@@ -13,9 +18,11 @@ class GrabTest : public QObject {
 private Q_SLOTS:
     void initTestCase();
     void versionAndHelp();
-    void grabsLoadedFiles();
+    void grabsTheDrumInTheView();
     void grabsTheDemoScene();
     void failsNamingTheBadFile();
+    void orbitBenchmarkPrintsFrameTimes();
+    void rejectsBadOptions();
 
 private:
     /** Runs stylos with @p args; returns its exit code, stdout and stderr. */
@@ -23,13 +30,18 @@ private:
     /** Distinct colours in a grid of samples of @p image: 1 means blank. */
     static int distinctColours(const QImage& image);
 
+    /** The 3D view can be created here (an X display; Qt's offscreen platform has no GL widget). */
+    static bool hasDisplay() { return !qEnvironmentVariableIsEmpty("DISPLAY"); }
+
     QTemporaryDir m_dir;
+    stylos::test::DrumOctree m_drum;
 };
 
 void GrabTest::initTestCase()
 {
     QVERIFY(QFileInfo(STYLOS_EXECUTABLE).isExecutable());
     QVERIFY(m_dir.isValid());
+    m_drum = stylos::test::makeDrumOctree(m_dir.path());
 }
 
 int GrabTest::run(const QStringList& args, QString* out, QString* err, int timeoutMs)
@@ -69,16 +81,30 @@ void GrabTest::versionAndHelp()
     QVERIFY(out.contains("--grab"));
 }
 
-void GrabTest::grabsLoadedFiles()
+void GrabTest::grabsTheDrumInTheView()
 {
-    const QString ply = stylos::test::writeFile(m_dir.path(), "tiny.ply", stylos::test::tinyPly());
-    const QString png = m_dir.filePath("tiny.png");
+    const QString png = m_dir.filePath("drum.png");
     QString err;
-    QCOMPARE(run({"--grab", png, ply}, nullptr, &err), 0);
+    QCOMPARE(run({"--grab", png, QString::fromStdString(m_drum.poct.string())}, nullptr, &err), 0);
+    QVERIFY2(!err.contains("stylos:"), qPrintable(err));
     const QImage image(png);
     QVERIFY2(!image.isNull(), qPrintable(err));
-    QVERIFY(image.width() >= 200 && image.height() >= 100);
+    QVERIFY(image.width() >= 640 && image.height() >= 400);
     QVERIFY(distinctColours(image) > 8);
+    if (!hasDisplay()) QSKIP("no display: the 3D view is not created");
+    // The drum fills the middle of the view after the fit: its centre column differs from the corners'
+    // background, and is shaded (many greys), not one flat colour.
+    const QImage view = image.copy(image.width() / 4, image.height() / 4, image.width() / 2, image.height() / 2);
+    const QRgb background = image.pixel(image.width() / 2, image.height() / 6);
+    QSet<QRgb> shades;
+    int drum = 0;
+    for (int y = 0; y < view.height(); y += 3)
+        for (int x = view.width() / 3; x < 2 * view.width() / 3; x += 3) {
+            const QRgb c = view.pixel(x, y);
+            if (qAbs(qGray(c) - qGray(background)) > 20) { ++drum; shades.insert(c); }
+        }
+    QVERIFY2(drum > 200, qPrintable(QString::number(drum)));
+    QVERIFY2(shades.size() > 20, qPrintable(QString::number(shades.size())));
 }
 
 void GrabTest::grabsTheDemoScene()
@@ -90,7 +116,7 @@ void GrabTest::grabsTheDemoScene()
     const QImage image(png);
     QVERIFY(!image.isNull());
     QVERIFY(distinctColours(image) > 8);
-    QVERIFY(QFileInfo(m_dir.filePath("cache/Stylos/stylos/demo/drum.ply")).isFile());
+    QVERIFY(QFileInfo(m_dir.filePath("cache/Stylos/stylos/demo/demo.stylos")).isFile());
 }
 
 void GrabTest::failsNamingTheBadFile()
@@ -100,6 +126,30 @@ void GrabTest::failsNamingTheBadFile()
     QString err;
     QCOMPARE(run({"--grab", png, bad}, nullptr, &err), 1);
     QVERIFY2(err.contains("broken-capital.ply"), qPrintable(err));
+}
+
+void GrabTest::orbitBenchmarkPrintsFrameTimes()
+{
+    if (!hasDisplay()) QSKIP("no display: the 3D view is not created");
+    QString out, err;
+    QCOMPARE(run({"--orbit-benchmark", "5", QString::fromStdString(m_drum.poct.string())}, &out, &err), 0);
+    const QJsonObject result = QJsonDocument::fromJson(out.toUtf8()).object();
+    QVERIFY2(!result.isEmpty(), qPrintable(out + err));
+    QCOMPARE(result.value("frames").toInt(), 5);
+    QCOMPARE(result.value("width").toInt(), 1280);
+    QCOMPARE(result.value("height").toInt(), 800);
+    QVERIFY(result.value("medianMs").toDouble() > 0);
+    QVERIFY(result.value("p95Ms").toDouble() >= result.value("medianMs").toDouble());
+    QVERIFY(result.value("maxPointsDrawn").toDouble() > 0);
+}
+
+void GrabTest::rejectsBadOptions()
+{
+    QString err;
+    QCOMPARE(run({"--orbit-benchmark", "many", "x.poct"}, nullptr, &err), 2);
+    QVERIFY2(err.contains("many"), qPrintable(err));
+    QCOMPARE(run({"--orbit-benchmark", "5"}, nullptr, &err), 2);
+    QVERIFY2(err.contains("exactly one file"), qPrintable(err));
 }
 
 STYLOS_WIDGET_TEST_MAIN(GrabTest)

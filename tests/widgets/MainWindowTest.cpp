@@ -1,141 +1,354 @@
-// MainWindow: loads files in the background and shows their exact total; reports errors in a
-// non-blocking message box naming the file; its status-bar Cancel button stops a running task.
-#include "WidgetTestSupport.h"
-
+// The workbench through its main window: import in the background, the Scene tree, errors naming the
+// file, undo/redo from the Edit menu, save and reopen a project, the développée linked to the 3D view,
+// the skydome task, the language menu, closing with a task running.
+#include "DeveloppeeLink.h"
+#include "DrumOctreeFixture.h"
+#include "LogDock.h"
 #include "MainActions.h"
 #include "MainWindow.h"
-#include "stylos/widgets/SceneSession.h"
-#include "stylos/widgets/SceneSummaryModel.h"
-#include "stylos/widgets/SceneSummaryWidget.h"
-#include "stylos/widgets/TaskRunner.h"
-#include "stylos/widgets/TaskStatusWidget.h"
+#include "ProjectActions.h"
+#include "SceneDock.h"
+#include "StatusReadout.h"
+#include "Translations.h"
+#include "WidgetTestSupport.h"
+#include "stylos/core/scene/ProjectFile.h"
+#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeeView.h"
+#include "stylos/widgets/ScanImporter.h"
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/SceneTreeModel.h"
+#include "stylos/widgets/SkydomeRunner.h"
+#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/ViewportWidget.h"
 
 #include <QAction>
-#include <QLocale>
-#include <QMessageBox>
-#include <QPushButton>
+#include <QMenu>
+#include <QMenuBar>
 #include <QSettings>
-#include <QSignalSpy>
 #include <QTemporaryDir>
-#include <QThread>
+#include <QTreeView>
+#include <QUndoStack>
 
-using stylos::app::MainWindow;
-using stylos::widgets::SceneSession;
+#include <memory>
+
+using namespace stylos;
 
 class MainWindowTest : public QObject {
     Q_OBJECT
 
 private Q_SLOTS:
+    void initTestCase();
     void init();
     void cleanup();
-    void loadsFilesAndShowsExactTotal();
+    void importsInTheBackgroundAndListsTheFragments();
     void reportsErrorsNamingTheFile();
-    void cancelButtonStopsRunningTask();
-    void fileFilterListsEverySupportedExtension();
-    void closingStopsTheTaskAndSavesGeometry();
+    void undoAndRedoFromTheEditMenu();
+    void removesTheSelectionInOneUndoStep();
+    void savesAndReopensTheProject();
+    void developpeeClickMarksThe3dPointAndBack();
+    void computesTheSkydomeOfTheSelection();
+    void switchesTheLanguageFromTheMenu();
+    void statusReadoutFormats();
+    void closingCancelsTasksAndSavesTheLayout();
 
 private:
+    /** A window with dialogs off, shown, the importer writing into the test folder. */
+    std::unique_ptr<app::MainWindow> makeWindow();
+    /** Imports @p paths and waits until every task is done. */
+    static void importAndWait(app::MainWindow& window, const QStringList& paths);
+    static QAction* menuAction(app::MainWindow& window, const QString& objectName);
+
     QTemporaryDir m_dir;
-    std::unique_ptr<MainWindow> m_window;
+    test::DrumOctree m_drum;
+    std::unique_ptr<app::Translations> m_translations;
 };
+
+void MainWindowTest::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    m_drum = test::makeDrumOctree(m_dir.path());
+    m_translations = std::make_unique<app::Translations>();
+}
 
 void MainWindowTest::init()
 {
-    m_window = std::make_unique<MainWindow>(m_dir.filePath("demo"));
-    m_window->show();
-    QVERIFY(QTest::qWaitForWindowExposed(m_window.get()));
-    QCOMPARE(m_window->windowTitle(), QString("Stylos"));
+    QSettings().clear();
 }
 
 void MainWindowTest::cleanup()
 {
-    m_window.reset();
+    QSettings().clear();
 }
 
-void MainWindowTest::loadsFilesAndShowsExactTotal()
+std::unique_ptr<app::MainWindow> MainWindowTest::makeWindow()
 {
-    const QString a = stylos::test::writeFile(m_dir.path(), "a.ply", stylos::test::tinyPly());
-    const QString b = stylos::test::writeFile(m_dir.path(), "b.ply", stylos::test::fourPointPly());
-    QSignalSpy finished(&m_window->session(), &SceneSession::operationFinished);
-    QVERIFY(m_window->session().openFiles({a, b}));
-    QVERIFY(!m_window->actions().openScansAction()->isEnabled());
-    QVERIFY(finished.wait(10000));
-    QVERIFY(finished.first().at(0).toStringList().isEmpty());
-    QVERIFY(m_window->actions().openScansAction()->isEnabled());
+    auto window = std::make_unique<app::MainWindow>(*m_translations, m_dir.filePath("demo"));
+    window->setErrorDialogsEnabled(false);
+    window->importer().setCacheDirectory(m_dir.filePath("octrees"));
+    window->resize(1000, 700);
+    window->show();
+    if (!QTest::qWaitForWindowExposed(window.get())) qWarning("window not exposed");
+    return window;
+}
 
-    QCOMPARE(m_window->session().model().rowCount(), 2);
-    QCOMPARE(m_window->session().model().totalPoints(), 7u);
-    const QString total = m_window->summary().totalText();
-    QVERIFY2(total.contains(QLocale().toString(7)) && total.contains("2 file"), qPrintable(total));
-    QVERIFY(!m_window->findChild<QMessageBox*>("loadErrorBox"));
+void MainWindowTest::importAndWait(app::MainWindow& window, const QStringList& paths)
+{
+    window.projectActions().openPaths(paths);
+    QVERIFY(window.tasks().waitForIdle(60000));
+    QTRY_VERIFY_WITH_TIMEOUT(!window.isBusy(), 10000);
+}
+
+QAction* MainWindowTest::menuAction(app::MainWindow& window, const QString& objectName)
+{
+    return window.findChild<QAction*>(objectName);
+}
+
+void MainWindowTest::importsInTheBackgroundAndListsTheFragments()
+{
+    auto window = makeWindow();
+    const QString ply = QString::fromStdString(m_drum.ply.string());
+    const QString poct = QString::fromStdString(m_drum.poct.string());
+    window->projectActions().openPaths({ply, poct});
+    // The build runs in the background: the call returned at once, the task is listed.
+    QVERIFY(window->isBusy());
+    QCOMPARE(window->tasks().count(), 2);
+    QVERIFY(window->tasks().waitForIdle(60000));
+    QTRY_VERIFY(!window->isBusy());
+
+    const widgets::SceneTreeModel& tree = *window->sceneDock().model();
+    QCOMPARE(tree.rowCount(), 2);
+    QCOMPARE(tree.index(0, 0).data().toString(), QStringLiteral("drum"));
+    QCOMPARE(tree.index(1, 0).data().toString(), QStringLiteral("drum"));
+    const auto& fragments = window->document().scene().fragments();
+    // The scan was built into the importer's folder; the .poct was opened where it is.
+    // (in the order they finished: the .poct only had to be opened)
+    QCOMPARE(fragments[0].octreePath, m_drum.poct);
+    QCOMPARE(QFileInfo(QString::fromStdString(fragments[1].octreePath.string())).absolutePath(),
+             QDir(m_dir.filePath("octrees")).absolutePath());
+    QCOMPARE(window->document().octree(fragments[1].id)->description().points, m_drum.octree->description().points);
+    QVERIFY(window->logDock().text().contains(QStringLiteral("Imported drum")));
+    QCOMPARE(window->logDock().errorCount(), 0);
+    QVERIFY(window->windowTitle().startsWith(QStringLiteral("Untitled")));
+    QVERIFY(window->isWindowModified());
+    if (auto* viewport = window->viewport()) QTRY_COMPARE(viewport->fragments().size(), std::size_t{2});
 }
 
 void MainWindowTest::reportsErrorsNamingTheFile()
 {
-    const QString good = stylos::test::writeFile(m_dir.path(), "good.ply", stylos::test::tinyPly());
-    const QString bad = stylos::test::writeFile(m_dir.path(), "corrupt-drum.ply", "not a ply at all");
-    QSignalSpy finished(&m_window->session(), &SceneSession::operationFinished);
-    QVERIFY(m_window->session().openFiles({good, bad}));
-    QVERIFY(finished.wait(10000));
-    QCOMPARE(finished.first().at(0).toStringList().size(), 1);
+    auto window = makeWindow();
+    const QString bad = test::writeFile(m_dir.path(), "broken-capital.ply", "garbage");
+    importAndWait(*window, {bad, m_dir.filePath("missing-drum.ply")});
+    QCOMPARE(window->document().scene().fragments().size(), std::size_t{0});
+    QCOMPARE(window->logDock().errorCount(), 2);
+    const QString log = window->logDock().text();
+    QVERIFY2(log.contains(QStringLiteral("broken-capital.ply")), qPrintable(log));
+    QVERIFY2(log.contains(QStringLiteral("missing-drum.ply")), qPrintable(log));
+    // Nothing half-built is left behind.
+    QCOMPARE(QDir(m_dir.filePath("octrees")).entryList({QStringLiteral("broken-capital*")}, QDir::Files).size(), 0);
 
-    QMessageBox* box = nullptr;
-    QTRY_VERIFY((box = m_window->findChild<QMessageBox*>("loadErrorBox")) != nullptr);
-    QVERIFY2(box->text().contains("corrupt-drum.ply"), qPrintable(box->text()));
-    // The box does not block: the window still answers and the good file is in the scene.
-    QCOMPARE(m_window->session().model().totalPoints(), 3u);
-    QVERIFY(m_window->session().openFiles({good}));
-    QVERIFY(finished.wait(10000));
-    box->close();
+    // A malformed project: the message names it, the scene is kept.
+    const QString project = test::writeFile(m_dir.path(), "bad.stylos", "{\"format\": 3}");
+    window->projectActions().openPaths({project});
+    QCOMPARE(window->logDock().errorCount(), 3);
+    QVERIFY(window->logDock().text().contains(QStringLiteral("bad.stylos")));
 }
 
-void MainWindowTest::cancelButtonStopsRunningTask()
+void MainWindowTest::undoAndRedoFromTheEditMenu()
 {
-    auto& runner = m_window->session().runner();
-    auto sawCancel = std::make_shared<std::atomic<bool>>(false);
-    QVERIFY(runner.start<int>("endless", [sawCancel](QPromise<int>&, stylos::core::ProgressSink& progress) {
-        while (!progress.isCancelRequested()) QThread::msleep(1);
-        sawCancel->store(true);
-    }));
-    auto* cancel = m_window->taskStatus().cancelButton();
-    QTRY_VERIFY(cancel->isVisible());
-    QSignalSpy finished(&runner, &stylos::widgets::TaskRunner::finished);
-    QTest::mouseClick(cancel, Qt::LeftButton);
-    QVERIFY(finished.wait(10000));
-    QCOMPARE(finished.first().at(0).toBool(), true);
-    QVERIFY(sawCancel->load());
-    QVERIFY(!runner.isBusy());
-    QVERIFY(!m_window->taskStatus().isVisible());
+    auto window = makeWindow();
+    importAndWait(*window, {QString::fromStdString(m_drum.poct.string())});
+    widgets::SceneTreeModel& tree = *window->sceneDock().model();
+    QVERIFY(tree.setData(tree.index(0, 0), QStringLiteral("Drum III"), Qt::EditRole));
+    QCOMPARE(tree.index(0, 0).data().toString(), QStringLiteral("Drum III"));
+
+    QAction* undo = menuAction(*window, QStringLiteral("actionUndo"));
+    QAction* redo = menuAction(*window, QStringLiteral("actionRedo"));
+    QVERIFY(undo && redo);
+    QVERIFY(window->menuBar()->findChild<QMenu*>(QStringLiteral("menuEdit"))->actions().contains(undo));
+    QVERIFY(undo->isEnabled());
+    undo->trigger();
+    QCOMPARE(tree.index(0, 0).data().toString(), QStringLiteral("drum"));
+    redo->trigger();
+    QCOMPARE(tree.index(0, 0).data().toString(), QStringLiteral("Drum III"));
+    undo->trigger();
+    undo->trigger(); // the import itself
+    QCOMPARE(tree.rowCount(), 0);
+    QVERIFY(!undo->isEnabled());
+    redo->trigger();
+    QCOMPARE(tree.rowCount(), 1);
+    QTRY_VERIFY(window->document().octree(window->document().scene().fragments()[0].id) != nullptr);
 }
 
-void MainWindowTest::fileFilterListsEverySupportedExtension()
+void MainWindowTest::removesTheSelectionInOneUndoStep()
 {
-    const QString filter = stylos::app::MainActions::scanFileFilter();
-    for (const char* ext : {"*.ply", "*.las", "*.xyz", "*.asc", "*.csv", "*.pts", "*.txt", "*.obj"})
-        QVERIFY2(filter.contains(ext), ext);
+    auto window = makeWindow();
+    const QString poct = QString::fromStdString(m_drum.poct.string());
+    importAndWait(*window, {poct, poct, poct});
+    QCOMPARE(window->sceneDock().model()->rowCount(), 3);
+    QTreeView* view = window->sceneDock().view();
+    view->selectAll();
+    QCOMPARE(window->sceneDock().selectedFragments().size(), 3);
+    QAction* remove = window->actions().removeAction();
+    QVERIFY(remove->isEnabled());
+    remove->trigger();
+    QCOMPARE(window->sceneDock().model()->rowCount(), 0);
+    QVERIFY(!remove->isEnabled());
+    window->actions().undoAction()->trigger();
+    QCOMPARE(window->sceneDock().model()->rowCount(), 3);
 }
 
-void MainWindowTest::closingStopsTheTaskAndSavesGeometry()
+void MainWindowTest::savesAndReopensTheProject()
 {
-    QSettings().remove("mainWindow/geometry");
-    auto started = std::make_shared<std::atomic<bool>>(false);
-    auto sawCancel = std::make_shared<std::atomic<bool>>(false);
-    QVERIFY(m_window->session().runner().start<int>(
-        "endless", [started, sawCancel](QPromise<int>&, stylos::core::ProgressSink& progress) {
-            started->store(true);
-            while (!progress.isCancelRequested()) QThread::msleep(1);
-            sawCancel->store(true);
-        }));
-    // Under load the pool may not have started the worker yet; a task cancelled before it starts
-    // never runs, so wait for it to run before checking that close() stops it and waits.
-    QTRY_VERIFY(started->load());
-    m_window->resize(700, 450);
-    QVERIFY(m_window->close());
-    QVERIFY(sawCancel->load()); // close() waited for the worker
-    QVERIFY(!QSettings().value("mainWindow/geometry").toByteArray().isEmpty());
+    const QString folder = m_dir.filePath("project");
+    QVERIFY(QDir().mkpath(folder));
+    const QString path = folder + QStringLiteral("/temple.stylos");
+    core::scene::Scene saved;
+    {
+        auto window = makeWindow();
+        importAndWait(*window, {QString::fromStdString(m_drum.poct.string())});
+        widgets::SceneDocument& doc = window->document();
+        const auto id = doc.scene().fragments()[0].id;
+        QVERIFY(doc.setFragmentPose(id, core::scene::Pose().withTranslation({0.25, -1.5, 2.0}).withAngles({0, 0, 30})));
+        QVERIFY(doc.setFragmentColour(id, core::scene::Rgb{10, 120, 240}));
+        QString error;
+        QVERIFY2(doc.saveAs(path, &error), qPrintable(error));
+        QVERIFY(!window->isWindowModified());
+        QCOMPARE(window->windowTitle(), QStringLiteral("temple.stylos[*] — Stylos"));
+        saved = doc.scene();
+    }
+    auto window = makeWindow();
+    QVERIFY(window->projectActions().openProject(path));
+    QVERIFY(window->tasks().waitForIdle(30000));
+    QTRY_VERIFY(!window->isBusy());
+    QCOMPARE(window->document().scene().fragments().size(), std::size_t{1});
+    const core::scene::Fragment& f = window->document().scene().fragments()[0];
+    QCOMPARE(f.name, saved.fragments()[0].name);
+    QCOMPARE(f.pose, saved.fragments()[0].pose);
+    QCOMPARE(f.colour, saved.fragments()[0].colour);
+    QCOMPARE(f.octreePath, m_drum.poct);
+    QVERIFY(window->document().octree(f.id) != nullptr);
+    QVERIFY(!window->isWindowModified());
+    QCOMPARE(app::ProjectActions::recentProjects().value(0), QFileInfo(path).absoluteFilePath());
+}
 
-    MainWindow restored(m_dir.filePath("demo"));
-    QCOMPARE(restored.size(), QSize(700, 450));
+void MainWindowTest::developpeeClickMarksThe3dPointAndBack()
+{
+    auto window = makeWindow();
+    importAndWait(*window, {QString::fromStdString(m_drum.poct.string())});
+    widgets::SceneDocument& doc = window->document();
+    const auto id = doc.scene().fragments()[0].id;
+    const core::scene::Pose pose = core::scene::Pose().withTranslation({2.0, 0.5, -1.0}).withAngles({0, 0, 90});
+    QVERIFY(doc.setFragmentPose(id, pose));
+    window->sceneDock().selectFragment(id);
+    QCOMPARE(window->developpeeDock().fragmentId(), quint64(id));
+    QVERIFY(window->actions().developpeeAction()->isEnabled());
+
+    window->actions().developpeeAction()->trigger();
+    QVERIFY(window->developpeeDock().isBusy());
+    QVERIFY(window->tasks().waitForIdle(60000));
+    widgets::DeveloppeeView* view = window->developpeeDock().view();
+    QVERIFY2(view->hasDeveloppee(), qPrintable(window->developpeeDock().statusText()));
+
+    // A click at the développée's centre marks a point of the drum's surface, in the octree's frame…
+    const QSize size = view->map()->width() > 0 ? QSize(view->map()->width(), view->map()->height()) : QSize();
+    const auto expected = view->pointAtPixel(size.width() / 2, size.height() / 2);
+    QVERIFY(expected.has_value());
+    // (its distance from the drum's true axis is the radius, to the grooves' depth)
+    const auto& axis = m_drum.truth.at("axis");
+    const Eigen::Vector3d a(axis["point"][0], axis["point"][1], axis["point"][2]);
+    const Eigen::Vector3d d = Eigen::Vector3d(axis["direction"][0], axis["direction"][1], axis["direction"][2]).normalized();
+    const Eigen::Vector3d offset = *expected - a;
+    const double distance = (offset - offset.dot(d) * d).norm();
+    const double radius = m_drum.truth.at("radius").get<double>();
+    QVERIFY2(std::abs(distance - radius) < 0.05 * radius, qPrintable(QString::number(distance)));
+    view->resize(400, 300);
+    view->fitToWindow();
+    QTest::mouseClick(view, Qt::LeftButton, {}, view->rect().center());
+    QVERIFY(view->marker().has_value());
+    // …which the 3D view shows at the same place through the fragment's pose.
+    const Eigen::Vector3d local = *view->marker();
+    const auto scene = pose.apply({local.x(), local.y(), local.z()});
+    if (auto* viewport = window->viewport()) {
+        QVERIFY(viewport->marker().has_value());
+        QVERIFY((*viewport->marker() - Eigen::Vector3d(scene[0], scene[1], scene[2])).norm() < 1e-9);
+    }
+    // A pick in 3D comes back into the développée through the inverse pose.
+    view->setMarker(std::nullopt);
+    window->developpeeLink().markInDeveloppee(Eigen::Vector3d(scene[0], scene[1], scene[2]), id);
+    QVERIFY(view->marker().has_value());
+    QVERIFY((*view->marker() - local).norm() < 1e-9);
+    // A pick on another fragment clears it.
+    window->developpeeLink().markInDeveloppee(Eigen::Vector3d::Zero(), id + 100);
+    QVERIFY(!view->marker().has_value());
+}
+
+void MainWindowTest::computesTheSkydomeOfTheSelection()
+{
+    // A copy: the skydome is written into the fragment's own .poct.
+    const QString copy = m_dir.filePath("skydome-drum.poct");
+    QFile::remove(copy);
+    QVERIFY(QFile::copy(QString::fromStdString(m_drum.poct.string()), copy));
+    auto window = makeWindow();
+    importAndWait(*window, {copy});
+    const auto id = window->document().scene().fragments()[0].id;
+    // What was just imported is selected; without a selection there is nothing to compute.
+    QCOMPARE(window->sceneDock().selectedFragments(), QList<core::scene::FragmentId>{id});
+    window->sceneDock().view()->clearSelection();
+    QVERIFY(!window->actions().skydomeAction()->isEnabled());
+    window->sceneDock().selectFragment(id);
+    QVERIFY(window->actions().skydomeAction()->isEnabled());
+    window->actions().skydomeAction()->trigger();
+    QCOMPARE(window->skydome().count(), 1);
+    QVERIFY(window->tasks().waitForIdle(60000));
+    QCOMPARE(window->skydome().count(), 0);
+    const auto octree = window->document().octree(id);
+    QVERIFY(octree != nullptr);
+    QVERIFY(octree->attribute("ambient").has_value());
+    QVERIFY2(window->logDock().text().contains(QStringLiteral("Skydome of skydome-drum")),
+             qPrintable(window->logDock().text()));
+    if (auto* viewport = window->viewport()) QCOMPARE(viewport->shading(), widgets::PointRenderer::Shading::Ambient);
+}
+
+void MainWindowTest::switchesTheLanguageFromTheMenu()
+{
+    auto window = makeWindow();
+    QMenu* file = window->menuBar()->findChild<QMenu*>(QStringLiteral("menuFile"));
+    QMenu* language = window->menuBar()->findChild<QMenu*>(QStringLiteral("menuLanguage"));
+    QVERIFY(file && language);
+    QCOMPARE(language->actions().size(), 4); // system, English, French, Greek
+    const auto pick = [language](const QString& code) {
+        for (QAction* action : language->actions())
+            if (action->data().toString() == code) action->trigger();
+    };
+    pick(QStringLiteral("fr"));
+    QCOMPARE(m_translations->loadedLanguage(), QStringLiteral("fr"));
+    QCOMPARE(file->title(), QStringLiteral("&Fichier"));
+    QCOMPARE(app::Translations::savedLanguage(), QStringLiteral("fr"));
+    pick(QStringLiteral("el"));
+    QCOMPARE(file->title(), QStringLiteral("&Αρχείο"));
+    pick(QStringLiteral("en"));
+    QCOMPARE(file->title(), QStringLiteral("&File"));
+}
+
+void MainWindowTest::statusReadoutFormats()
+{
+    QLocale::setDefault(QLocale::c());
+    QCOMPARE(app::StatusReadout::formatPoint({1.2344, -0.5, 2.0}), QStringLiteral("x 1.234  y -0.500  z 2.000 m"));
+    QCOMPARE(app::StatusReadout::formatFrame(50.0, 1250000), QStringLiteral("20 fps · 50.0 ms · 1.25 M points"));
+}
+
+void MainWindowTest::closingCancelsTasksAndSavesTheLayout()
+{
+    auto window = makeWindow();
+    window->importer().setCacheDirectory(m_dir.filePath("closing"));
+    window->projectActions().openPaths({QString::fromStdString(m_drum.ply.string())});
+    QVERIFY(!window->tasks().isIdle());
+    QVERIFY(window->close()); // cancels the build and waits for its worker
+    QVERIFY(QSettings().contains(QStringLiteral("mainWindow/state")));
+    QVERIFY(window->tasks().waitForIdle(10000));
+    // The cancelled build added nothing and left nothing behind.
+    QCOMPARE(window->document().scene().fragments().size(), std::size_t{0});
+    QCOMPARE(QDir(m_dir.filePath("closing")).entryList(QDir::Files).size(), 0);
 }
 
 STYLOS_WIDGET_TEST_MAIN(MainWindowTest)

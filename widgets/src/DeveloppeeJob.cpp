@@ -130,6 +130,9 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
 
     core::unroll::UnrollOptions unrollOptions;
     if (m_settings.pixelSize > 0.0) unrollOptions.pixelSize = m_settings.pixelSize;
+    // Automatic on a .poct: its points are leaf centres, whose heights step by the leaf edge; at one edge
+    // per pixel the shading reads those steps as relief (salt and pepper), at three the carving shows.
+    else if (cloud.spacing > 0.0) unrollOptions.pixelSize = PoctPixelEdges * cloud.spacing;
     StepProgress unrollStep(progress, 0.4, 0.7);
     auto unrolled = core::unroll::unrollCloud(cloud, fit->surface, unrollOptions, &unrollStep);
     if (!unrolled) return unrolled.error();

@@ -56,6 +56,14 @@ SceneDocument::OctreePtr SceneDocument::octree(FragmentId id) const
     return it == m_octrees.end() ? nullptr : it->second;
 }
 
+bool SceneDocument::replaceOctree(FragmentId id, OctreePtr octree)
+{
+    if (!octree || !m_scene.find(id)) return false;
+    m_octrees[id] = std::move(octree);
+    Q_EMIT octreeChanged(id);
+    return true;
+}
+
 QString SceneDocument::projectFolder() const
 {
     return m_path.isEmpty() ? QString() : QFileInfo(m_path).absolutePath();

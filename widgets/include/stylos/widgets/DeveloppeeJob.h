@@ -6,7 +6,7 @@
  *        light or skydome, the skydome contrast-stretched) and turned into a grey + alpha QImage — the
  *        chain of `stylos-cli unroll`, without writing any file.
  *
- * Use: `tasks.start<DeveloppeeResult>(job.label(), job)` (TaskManager or TaskRunner): the job adds one
+ * Use: `tasks.start<DeveloppeeResult>(job.label(), job)` (TaskManager): the job adds one
  * result, or none when cancelled; a failure is a result whose error() is a translated message naming the
  * file and the reason. Progress: reading to 0.15, fitting to 0.4, unrolling to 0.7, shading to 1.
  * Memory: the cloud (24 bytes a leaf with normals) until the unroll is done, then the field (5 bytes a
@@ -67,6 +67,9 @@ class DeveloppeeJob {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::DeveloppeeJob)
 
 public:
+    /** @brief The automatic pixel of a `.poct`, in leaf edges (a point file: its sampling spacing). */
+    static constexpr double PoctPixelEdges = 3.0;
+
     /** @param octreePath the fragment's `.poct` (any point file works too) */
     DeveloppeeJob(QString octreePath, quint64 fragmentId, DeveloppeeSettings settings);
 

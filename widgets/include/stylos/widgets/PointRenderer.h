@@ -5,7 +5,8 @@
  *        (a cell of edge s at depth z covers s · f / z pixels, times the splat factor), round or square.
  *
  * Shading: Headlight (the fragment's colour lit by a light at the eye, from the cells' normals),
- * Ambient (the "ambient" layer, the 3D skydome, as grey; falls back to Headlight without the layer),
+ * Ambient (the "ambient" layer, the 3D skydome, as grey: its square, to read the relief like the paper's
+ * figures, times 0.7 + 0.3 of the headlight for the form; falls back to Headlight without the layer),
  * Colour (the scan's colour lit by the headlight; falls back to Headlight without colour). Selected
  * fragments are tinted.
  *

@@ -48,6 +48,14 @@ public:
     OctreePtr octree(FragmentId id) const;
     /** @brief True while octrees are being opened (after open(), or for restored fragments). */
     bool isLoading() const { return !m_loads.empty(); }
+    /**
+     * @brief Swaps the opened octree of @p id for @p octree: the same fragment's file opened again after a
+     *        derived attribute layer was written into it (SkydomeJob's "ambient"). Not an undo step and not a
+     *        modification of the project: the scene is unchanged. Emits octreeChanged(id). Returns false
+     *        (changing nothing) when the fragment is gone or @p octree is null. The previous octree stays
+     *        valid for whoever still holds it (a view's buffers, a running job).
+     */
+    bool replaceOctree(FragmentId id, OctreePtr octree);
 
     QUndoStack* undoStack() const { return m_undo; }
     TaskManager& tasks() const { return m_tasks; }

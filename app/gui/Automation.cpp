@@ -1,0 +1,104 @@
+#include "Automation.h"
+
+#include "LogDock.h"
+#include "MainWindow.h"
+#include "stylos/widgets/OrbitBenchmark.h"
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/ViewportWidget.h"
+
+#include <QApplication>
+#include <QDockWidget>
+#include <QElapsedTimer>
+#include <QJsonDocument>
+#include <QPixmap>
+#include <QTimer>
+#include <QToolBar>
+
+#include <cstdio>
+#include <functional>
+
+namespace stylos::app {
+
+namespace {
+
+/** Calls @p then once @p window has been ready for two polls in a row; quits with 1 after @p timeoutMs. */
+void whenReady(MainWindow& window, int timeoutMs, std::function<void()> then)
+{
+    auto* timer = new QTimer(&window);
+    auto* clock = new QElapsedTimer;
+    clock->start();
+    auto streak = std::make_shared<int>(0);
+    QObject::connect(timer, &QTimer::timeout, &window, [&window, timer, clock, streak, timeoutMs, then] {
+        *streak = isWindowReady(window) ? *streak + 1 : 0;
+        if (*streak >= 2) {
+            timer->stop();
+            delete clock;
+            then();
+            return;
+        }
+        if (clock->elapsed() > timeoutMs) {
+            timer->stop();
+            std::fprintf(stderr, "stylos: the scene was not ready after %d s\n", timeoutMs / 1000);
+            QApplication::exit(1);
+        }
+    });
+    timer->start(200);
+}
+
+} // namespace
+
+bool isWindowReady(const MainWindow& window)
+{
+    if (window.isBusy()) return false;
+    const widgets::ViewportWidget* viewport = window.viewport();
+    if (!viewport) return true;
+    std::size_t opened = 0;
+    for (const auto& f : window.document().scene().fragments()) opened += window.document().octree(f.id) ? 1 : 0;
+    return viewport->fragments().size() == opened && (opened == 0 || viewport->isSettled());
+}
+
+void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    whenReady(window, timeoutMs, [&window, path] {
+        if (!window.grab().save(path, "PNG")) {
+            std::fprintf(stderr, "stylos: %s: could not write the image\n", qPrintable(path));
+            QApplication::exit(1);
+            return;
+        }
+        QApplication::exit(window.logDock().errorCount() > 0 ? 1 : 0);
+    });
+}
+
+void orbitWhenReady(MainWindow& window, int frames, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    widgets::ViewportWidget* viewport = window.viewport();
+    if (!viewport) {
+        std::fprintf(stderr, "stylos: --orbit-benchmark needs OpenGL 3.3 (core profile)\n");
+        QTimer::singleShot(0, qApp, [] { QApplication::exit(1); });
+        return;
+    }
+    for (QDockWidget* dock : window.findChildren<QDockWidget*>()) dock->hide();
+    for (QToolBar* bar : window.findChildren<QToolBar*>()) bar->hide();
+    viewport->setFixedSize(1280, 800);
+    window.adjustSize();
+    whenReady(window, timeoutMs, [&window, viewport, frames] {
+        if (window.logDock().errorCount() > 0 || viewport->fragments().empty()) {
+            std::fprintf(stderr, "stylos: nothing to orbit: the file did not open\n");
+            QApplication::exit(1);
+            return;
+        }
+        widgets::OrbitBenchmark::Options options;
+        options.frames = frames;
+        auto* benchmark = new widgets::OrbitBenchmark(*viewport, options, &window);
+        QObject::connect(benchmark, &widgets::OrbitBenchmark::finished, &window, [](const QJsonObject& result) {
+            std::fputs(QJsonDocument(result).toJson(QJsonDocument::Indented).constData(), stdout);
+            std::fflush(stdout);
+            QApplication::exit(result.contains(QStringLiteral("error")) ? 1 : 0);
+        });
+        benchmark->start();
+    });
+}
+
+} // namespace stylos::app

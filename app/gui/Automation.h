@@ -1,0 +1,30 @@
+#pragma once
+/** @file
+ * @brief The automation behind `stylos --grab` and `stylos --orbit-benchmark`: wait until the window is
+ *        ready — no task running, no import or octree load pending, the demo prepared, and the 3D view
+ *        showing every opened fragment at full detail — then act and quit the application. Polls every
+ *        200 ms (the window is never blocked); gives up after @p timeoutMs with exit status 1.
+ */
+#include <QString>
+
+namespace stylos::app {
+
+class MainWindow;
+
+/** @brief True when @p window is ready as described above. */
+bool isWindowReady(const MainWindow& window);
+
+/**
+ * @brief Once ready, saves the window as a PNG to @p path and quits: status 0, or 1 when an error was
+ *        logged meanwhile (a file that did not load, a failed task) or the image could not be written.
+ */
+void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+
+/**
+ * @brief Hides the docks and toolbar, sizes the 3D view to 1280 × 800, and once ready orbits the camera
+ *        for @p frames frames (widgets::OrbitBenchmark), prints the JSON result on stdout and quits (0;
+ *        1 without a 3D view, or when the scene failed to open).
+ */
+void orbitWhenReady(MainWindow& window, int frames, int timeoutMs = 15 * 60 * 1000);
+
+} // namespace stylos::app

@@ -1,0 +1,58 @@
+#pragma once
+/** @file
+ * @brief Makes the Développée dock and the 3D view one instrument: Compute in the dock runs a
+ *        DeveloppeeJob for the dock's fragment on the TaskManager and shows its result; a click in the
+ *        développée marks the 3D point in the view (through the fragment's pose), and a pick in the 3D
+ *        view on that fragment marks it in the développée (through the inverse pose). The dock follows the
+ *        current fragment (setFragment), offering its axis guide. GUI thread only.
+ */
+#include "stylos/core/scene/Fragment.h"
+
+#include <QObject>
+#include <QPointer>
+
+#include <Eigen/Core>
+
+namespace stylos::widgets {
+class DeveloppeeDock;
+struct DeveloppeeResult;
+class SceneDocument;
+class TaskManager;
+class ViewportWidget;
+} // namespace stylos::widgets
+
+namespace stylos::app {
+
+class DeveloppeeLink : public QObject {
+    Q_OBJECT
+
+public:
+    /** None owned; @p viewport may be null (no OpenGL: no 3D markers). */
+    DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks, widgets::DeveloppeeDock& dock,
+                   widgets::ViewportWidget* viewport, QObject* parent = nullptr);
+
+    /** @brief The fragment Compute works on (the Scene dock's current one); NoFragment for none. */
+    void setFragment(core::scene::FragmentId id);
+
+    /** @brief Marks @p scenePoint in the développée when it shows fragment @p id (else clears its marker). */
+    void markInDeveloppee(const Eigen::Vector3d& scenePoint, core::scene::FragmentId id);
+
+    /** @brief Computes the développée of the dock's fragment with the dock's settings (as Compute does). */
+    void compute();
+
+Q_SIGNALS:
+    /** @brief A computation ended: @p message says what was made (or why not, @p failed). Translated. */
+    void finished(const QString& message, bool failed);
+
+private:
+    void markInView(quint64 fragmentId, const Eigen::Vector3d& octreePoint);
+    void refreshFragment();
+
+    widgets::SceneDocument& m_document;
+    widgets::TaskManager& m_tasks;
+    widgets::DeveloppeeDock& m_dock;
+    QPointer<widgets::ViewportWidget> m_viewport;
+    core::scene::FragmentId m_fragment = core::scene::NoFragment;
+};
+
+} // namespace stylos::app

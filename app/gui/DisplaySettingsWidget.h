@@ -1,0 +1,57 @@
+#pragma once
+/** @file
+ * @brief The display settings of the 3D view, shown in the Properties dock: shading (headlight, skydome,
+ *        scan colour), splat size, point budget (millions of points while the view refines), and level of
+ *        detail — view-dependent under the budget, or the paper's global level slider. Applied to the view
+ *        at once and kept in QSettings (group "view"). GUI thread only.
+ */
+#include <QWidget>
+
+class QComboBox;
+class QDoubleSpinBox;
+class QFormLayout;
+class QLabel;
+class QSlider;
+
+namespace stylos::widgets {
+class ViewportWidget;
+}
+
+namespace stylos::app {
+
+class DisplaySettingsWidget : public QWidget {
+    Q_OBJECT
+
+public:
+    /** Drives @p viewport (not owned; it must outlive the widget). Restores the saved settings into it. */
+    explicit DisplaySettingsWidget(widgets::ViewportWidget& viewport, QWidget* parent = nullptr);
+
+    QComboBox* shadingBox() const { return m_shading; }
+    QDoubleSpinBox* splatSpin() const { return m_splat; }
+    QDoubleSpinBox* budgetSpin() const { return m_budget; }
+    QComboBox* detailBox() const { return m_detail; }
+    QSlider* levelSlider() const { return m_level; }
+
+    /** @brief Shows the view's current shading (after a menu changed it). */
+    void syncFromViewport();
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void retranslateUi();
+    void apply();
+    void save() const;
+
+    widgets::ViewportWidget& m_viewport;
+    QFormLayout* m_form;
+    QComboBox* m_shading;
+    QDoubleSpinBox* m_splat;
+    QDoubleSpinBox* m_budget;
+    QComboBox* m_detail;
+    QSlider* m_level;
+    QLabel* m_levelValue;
+    bool m_updating = false;
+};
+
+} // namespace stylos::app

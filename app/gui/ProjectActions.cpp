@@ -1,0 +1,216 @@
+#include "ProjectActions.h"
+
+#include "stylos/widgets/ScanImporter.h"
+#include "stylos/widgets/SceneDocument.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QMenu>
+#include <QMessageBox>
+#include <QSettings>
+
+namespace stylos::app {
+
+namespace {
+const auto RecentKey = QStringLiteral("files/recentProjects");
+const auto LastDirKey = QStringLiteral("files/lastDirectory");
+const auto ProjectSuffix = QStringLiteral("stylos");
+
+bool isProject(const QString& path)
+{
+    return QFileInfo(path).suffix().compare(ProjectSuffix, Qt::CaseInsensitive) == 0;
+}
+} // namespace
+
+ProjectActions::ProjectActions(widgets::SceneDocument& document, widgets::ScanImporter& importer, QWidget& window)
+    : QObject(&window), m_document(document), m_importer(importer), m_window(window), m_new(new QAction(this)),
+      m_open(new QAction(this)), m_save(new QAction(this)), m_saveAs(new QAction(this)), m_import(new QAction(this)),
+      m_quit(new QAction(this)), m_recent(new QMenu(&window))
+{
+    const std::pair<QAction*, const char*> names[] = {{m_new, "actionNew"},     {m_open, "actionOpen"},
+                                                      {m_save, "actionSave"},   {m_saveAs, "actionSaveAs"},
+                                                      {m_import, "actionImport"}, {m_quit, "actionQuit"}};
+    for (const auto& [action, name] : names) action->setObjectName(QString::fromLatin1(name));
+    m_recent->setObjectName(QStringLiteral("menuRecent"));
+    m_new->setShortcut(QKeySequence::New);
+    m_open->setShortcut(QKeySequence::Open);
+    m_save->setShortcut(QKeySequence::Save);
+    m_saveAs->setShortcut(QKeySequence::SaveAs);
+    m_import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
+    m_quit->setShortcut(QKeySequence::Quit);
+    m_quit->setMenuRole(QAction::QuitRole);
+    m_new->setIcon(QIcon::fromTheme(QStringLiteral("document-new")));
+    m_open->setIcon(QIcon::fromTheme(QStringLiteral("document-open")));
+    m_save->setIcon(QIcon::fromTheme(QStringLiteral("document-save")));
+    m_import->setIcon(QIcon::fromTheme(QStringLiteral("document-import")));
+
+    connect(m_new, &QAction::triggered, this, &ProjectActions::newProject);
+    connect(m_open, &QAction::triggered, this, &ProjectActions::chooseProject);
+    connect(m_save, &QAction::triggered, this, &ProjectActions::save);
+    connect(m_saveAs, &QAction::triggered, this, &ProjectActions::saveAs);
+    connect(m_import, &QAction::triggered, this, &ProjectActions::importScans);
+    connect(m_quit, &QAction::triggered, &m_window, &QWidget::close);
+    connect(m_recent, &QMenu::aboutToShow, this, &ProjectActions::rebuildRecentMenu);
+    retranslateUi();
+}
+
+void ProjectActions::populate(QMenu& menu)
+{
+    menu.addAction(m_new);
+    menu.addAction(m_open);
+    menu.addMenu(m_recent);
+    menu.addSeparator();
+    menu.addAction(m_save);
+    menu.addAction(m_saveAs);
+    menu.addSeparator();
+    menu.addAction(m_import);
+    menu.addSeparator();
+    menu.addAction(m_quit);
+}
+
+void ProjectActions::retranslateUi()
+{
+    m_new->setText(tr("&New project"));
+    m_open->setText(tr("&Open project…"));
+    m_open->setStatusTip(tr("Open a Stylos project (.stylos)"));
+    m_recent->setTitle(tr("Open &recent"));
+    m_save->setText(tr("&Save project"));
+    m_saveAs->setText(tr("Save project &as…"));
+    m_import->setText(tr("&Import scans…"));
+    m_import->setStatusTip(tr("Build a packed octree of each scan in the background and add it to the scene"));
+    m_quit->setText(tr("&Quit"));
+}
+
+void ProjectActions::openPaths(const QStringList& paths)
+{
+    QStringList scans;
+    for (const QString& path : paths) {
+        if (isProject(path)) {
+            if (paths.size() > 1) {
+                Q_EMIT reported(tr("%1: a project opens alone, not with other files").arg(path), true);
+                return;
+            }
+            openProject(path);
+            return;
+        }
+        scans << path;
+    }
+    if (!scans.isEmpty()) m_importer.importFiles(scans);
+}
+
+bool ProjectActions::openProject(const QString& path)
+{
+    if (!maybeSave()) return false;
+    QString error;
+    if (!m_document.open(path, &error)) {
+        Q_EMIT reported(error, true);
+        return false;
+    }
+    addRecent(m_document.projectPath());
+    Q_EMIT reported(tr("Opened %1").arg(QDir::toNativeSeparators(m_document.projectPath())), false);
+    return true;
+}
+
+bool ProjectActions::save()
+{
+    if (m_document.projectPath().isEmpty()) return saveAs();
+    QString error;
+    if (!m_document.save(&error)) {
+        Q_EMIT reported(error, true);
+        return false;
+    }
+    addRecent(m_document.projectPath());
+    Q_EMIT reported(tr("Saved %1").arg(QDir::toNativeSeparators(m_document.projectPath())), false);
+    return true;
+}
+
+bool ProjectActions::saveAs()
+{
+    if (!m_prompts) return false;
+    QSettings settings;
+    QString path = QFileDialog::getSaveFileName(&m_window, tr("Save project"),
+                                                settings.value(LastDirKey).toString(),
+                                                tr("Stylos projects (*.stylos)"));
+    if (path.isEmpty()) return false;
+    if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".stylos");
+    settings.setValue(LastDirKey, QFileInfo(path).absolutePath());
+    QString error;
+    if (!m_document.saveAs(path, &error)) {
+        Q_EMIT reported(error, true);
+        return false;
+    }
+    addRecent(m_document.projectPath());
+    Q_EMIT reported(tr("Saved %1").arg(QDir::toNativeSeparators(m_document.projectPath())), false);
+    return true;
+}
+
+bool ProjectActions::maybeSave()
+{
+    if (!m_document.isModified() || !m_prompts) return true;
+    const auto answer = QMessageBox::warning(
+        &m_window, tr("Stylos"), tr("The project %1 has unsaved changes.").arg(m_document.displayName()),
+        QMessageBox::Save | QMessageBox::Discard | QMessageBox::Cancel, QMessageBox::Save);
+    if (answer == QMessageBox::Cancel) return false;
+    return answer == QMessageBox::Discard || save();
+}
+
+QStringList ProjectActions::recentProjects()
+{
+    return QSettings().value(RecentKey).toStringList();
+}
+
+void ProjectActions::newProject()
+{
+    if (maybeSave()) m_document.newProject();
+}
+
+void ProjectActions::chooseProject()
+{
+    if (!maybeSave()) return;
+    QSettings settings;
+    const QString path = QFileDialog::getOpenFileName(&m_window, tr("Open project"),
+                                                      settings.value(LastDirKey).toString(),
+                                                      tr("Stylos projects (*.stylos)"));
+    if (path.isEmpty()) return;
+    settings.setValue(LastDirKey, QFileInfo(path).absolutePath());
+    openProject(path);
+}
+
+void ProjectActions::importScans()
+{
+    QSettings settings;
+    const QStringList files = QFileDialog::getOpenFileNames(&m_window, tr("Import scans"),
+                                                            settings.value(LastDirKey).toString(),
+                                                            widgets::ScanImporter::fileFilter());
+    if (files.isEmpty()) return;
+    settings.setValue(LastDirKey, QFileInfo(files.first()).absolutePath());
+    m_importer.importFiles(files);
+}
+
+void ProjectActions::addRecent(const QString& path)
+{
+    QStringList recent = recentProjects();
+    recent.removeAll(path);
+    recent.prepend(path);
+    while (recent.size() > MaxRecent) recent.removeLast();
+    QSettings().setValue(RecentKey, recent);
+}
+
+void ProjectActions::rebuildRecentMenu()
+{
+    m_recent->clear();
+    const QStringList recent = recentProjects();
+    for (const QString& path : recent) {
+        QAction* action = m_recent->addAction(QDir::toNativeSeparators(path));
+        action->setEnabled(QFileInfo::exists(path));
+        connect(action, &QAction::triggered, this, [this, path] { openProject(path); });
+    }
+    if (recent.isEmpty()) m_recent->addAction(tr("No recent project"))->setEnabled(false);
+    m_recent->addSeparator();
+    connect(m_recent->addAction(tr("Clear the list")), &QAction::triggered, this,
+            [] { QSettings().remove(RecentKey); });
+}
+
+} // namespace stylos::app

@@ -1,0 +1,88 @@
+#pragma once
+/** @file
+ * @brief The File menu: New, Open project…, Open recent, Save, Save as…, Import scans…, Quit — the actions
+ *        and their handlers (file dialogs, "save changes?" before the project is replaced or the window
+ *        closes, the recent projects kept in QSettings). Outcomes go out as messages (reported()) for the
+ *        window to log and show. GUI thread only.
+ */
+#include <QObject>
+#include <QStringList>
+
+class QAction;
+class QMenu;
+class QWidget;
+
+namespace stylos::widgets {
+class ScanImporter;
+class SceneDocument;
+} // namespace stylos::widgets
+
+namespace stylos::app {
+
+class ProjectActions : public QObject {
+    Q_OBJECT
+
+public:
+    static constexpr int MaxRecent = 8;
+
+    /** None owned; @p window parents the dialogs. */
+    ProjectActions(widgets::SceneDocument& document, widgets::ScanImporter& importer, QWidget& window);
+
+    /** @brief Adds the actions to @p menu (File). */
+    void populate(QMenu& menu);
+    void retranslateUi();
+
+    /**
+     * @brief Opens what the command line or a drop names: one `.stylos` project (replacing the current
+     *        one), or point files and `.poct` octrees, imported into the current project.
+     */
+    void openPaths(const QStringList& paths);
+    /** @brief Opens the project @p path (after asking to save changes); false when it failed or was declined. */
+    bool openProject(const QString& path);
+    /** @brief Saves (asking for a file when never saved); false when it failed or was cancelled. */
+    bool save();
+    bool saveAs();
+    /**
+     * @brief When the project has unsaved changes, asks to save them: true to go on (saved or discarded),
+     *        false to stop. Without prompts (automation), changes are discarded.
+     */
+    bool maybeSave();
+    /** @brief Whether dialogs may be shown (false for automation and tests). */
+    void setPromptsEnabled(bool enabled) { m_prompts = enabled; }
+
+    /** @brief Recent projects, most recent first (existing or not). */
+    static QStringList recentProjects();
+
+    QAction* newAction() const { return m_new; }
+    QAction* openAction() const { return m_open; }
+    QAction* saveAction() const { return m_save; }
+    QAction* saveAsAction() const { return m_saveAs; }
+    QAction* importAction() const { return m_import; }
+    QAction* quitAction() const { return m_quit; }
+    QMenu* recentMenu() const { return m_recent; }
+
+Q_SIGNALS:
+    /** @brief Something to tell the user (translated); @p failed: an error naming the file and the reason. */
+    void reported(const QString& message, bool failed);
+
+private:
+    void newProject();
+    void chooseProject();
+    void importScans();
+    void addRecent(const QString& path);
+    void rebuildRecentMenu();
+
+    widgets::SceneDocument& m_document;
+    widgets::ScanImporter& m_importer;
+    QWidget& m_window;
+    QAction* m_new;
+    QAction* m_open;
+    QAction* m_save;
+    QAction* m_saveAs;
+    QAction* m_import;
+    QAction* m_quit;
+    QMenu* m_recent;
+    bool m_prompts = true;
+};
+
+} // namespace stylos::app

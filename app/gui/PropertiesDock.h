@@ -1,0 +1,47 @@
+#pragma once
+/** @file
+ * @brief The Properties dock: the selected fragment (FragmentPropertiesWidget: name, visibility, colour,
+ *        pose, point and cell counts) above the 3D view's display settings (DisplaySettingsWidget), in a
+ *        scroll area. GUI thread only.
+ */
+#include "stylos/core/scene/Fragment.h"
+
+#include <QDockWidget>
+
+class QGroupBox;
+
+namespace stylos::widgets {
+class FragmentPropertiesWidget;
+class SceneDocument;
+class ViewportWidget;
+} // namespace stylos::widgets
+
+namespace stylos::app {
+
+class DisplaySettingsWidget;
+
+class PropertiesDock : public QDockWidget {
+    Q_OBJECT
+
+public:
+    /** @p viewport may be null (no OpenGL): then there are no display settings. */
+    PropertiesDock(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget* parent = nullptr);
+
+    void setFragment(core::scene::FragmentId id);
+    widgets::FragmentPropertiesWidget* fragmentWidget() const { return m_fragment; }
+    /** @brief Null without a 3D view. */
+    DisplaySettingsWidget* displaySettings() const { return m_display; }
+
+protected:
+    void changeEvent(QEvent* event) override;
+
+private:
+    void retranslateUi();
+
+    QGroupBox* m_fragmentBox;
+    QGroupBox* m_displayBox = nullptr;
+    widgets::FragmentPropertiesWidget* m_fragment;
+    DisplaySettingsWidget* m_display = nullptr;
+};
+
+} // namespace stylos::app

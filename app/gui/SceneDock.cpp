@@ -1,0 +1,76 @@
+#include "SceneDock.h"
+
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/SceneTreeModel.h"
+
+#include <QEvent>
+#include <QHeaderView>
+#include <QItemSelectionModel>
+#include <QTreeView>
+
+#include <algorithm>
+
+namespace stylos::app {
+
+SceneDock::SceneDock(widgets::SceneDocument& document, QWidget* parent)
+    : QDockWidget(parent), m_document(document), m_model(new widgets::SceneTreeModel(document, this)),
+      m_view(new QTreeView(this))
+{
+    setObjectName(QStringLiteral("sceneDock"));
+    m_view->setObjectName(QStringLiteral("sceneTree"));
+    m_view->setModel(m_model);
+    m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
+    m_view->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
+    m_view->setHeaderHidden(true);
+    m_view->setUniformRowHeights(true);
+    m_view->header()->setStretchLastSection(true);
+    setWidget(m_view);
+
+    connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &SceneDock::selectionChanged);
+    connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this, &SceneDock::selectionChanged);
+    // A freshly added fragment becomes the selection: what the user just imported is what they act on.
+    connect(&document, &widgets::SceneDocument::fragmentAdded, this,
+            [this](quint64 id) { selectFragment(static_cast<core::scene::FragmentId>(id)); });
+    retranslateUi();
+}
+
+QList<core::scene::FragmentId> SceneDock::selectedFragments() const
+{
+    QList<core::scene::FragmentId> ids;
+    for (const QModelIndex& index : m_view->selectionModel()->selectedIndexes()) {
+        const core::scene::FragmentId id = m_model->fragmentAt(index);
+        if (id != core::scene::NoFragment && !ids.contains(id)) ids << id;
+    }
+    const auto& fragments = m_document.scene().fragments();
+    const auto position = [&fragments](core::scene::FragmentId id) {
+        return std::find_if(fragments.begin(), fragments.end(), [id](const auto& f) { return f.id == id; }) -
+               fragments.begin();
+    };
+    std::sort(ids.begin(), ids.end(), [&](auto a, auto b) { return position(a) < position(b); });
+    return ids;
+}
+
+core::scene::FragmentId SceneDock::currentFragment() const
+{
+    return m_model->fragmentAt(m_view->selectionModel()->currentIndex());
+}
+
+void SceneDock::selectFragment(core::scene::FragmentId id)
+{
+    const QModelIndex index = m_model->indexOf(id);
+    if (!index.isValid()) return;
+    m_view->selectionModel()->setCurrentIndex(index, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+}
+
+void SceneDock::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslateUi();
+    QDockWidget::changeEvent(event);
+}
+
+void SceneDock::retranslateUi()
+{
+    setWindowTitle(tr("Scene"));
+}
+
+} // namespace stylos::app

@@ -1,0 +1,67 @@
+#include "Translations.h"
+
+#include <QCoreApplication>
+#include <QLibraryInfo>
+#include <QLocale>
+#include <QSettings>
+#include <QTranslator>
+
+namespace stylos::app {
+
+namespace {
+const auto LanguageKey = QStringLiteral("ui/language");
+}
+
+Translations::Translations(QObject* parent) : QObject(parent) {}
+
+QStringList Translations::languages()
+{
+    return {QStringLiteral("en"), QStringLiteral("fr"), QStringLiteral("el")};
+}
+
+QString Translations::nativeName(const QString& code)
+{
+    if (code == QLatin1String("fr")) return QStringLiteral("Français");
+    if (code == QLatin1String("el")) return QStringLiteral("Ελληνικά");
+    return QStringLiteral("English");
+}
+
+QString Translations::savedLanguage()
+{
+    const QString code = QSettings().value(LanguageKey).toString();
+    return languages().contains(code) ? code : QString();
+}
+
+bool Translations::setLanguage(const QString& code)
+{
+    const QLocale locale = code.isEmpty() ? QLocale() : QLocale(code);
+    QString loaded = locale.language() == QLocale::French ? QStringLiteral("fr")
+                     : locale.language() == QLocale::Greek ? QStringLiteral("el")
+                                                           : QStringLiteral("en");
+    auto* stylos = new QTranslator(this);
+    if (!stylos->load(QStringLiteral(":/i18n/stylos_") + loaded)) {
+        delete stylos;
+        return false;
+    }
+    auto* qt = new QTranslator(this);
+    if (!qt->load(locale, QStringLiteral("qtbase"), QStringLiteral("_"),
+                  QLibraryInfo::path(QLibraryInfo::TranslationsPath))) {
+        delete qt;
+        qt = nullptr;
+    }
+    for (QTranslator* old : {m_stylos, m_qt}) {
+        if (!old) continue;
+        QCoreApplication::removeTranslator(old);
+        old->deleteLater();
+    }
+    m_stylos = stylos;
+    m_qt = qt;
+    QCoreApplication::installTranslator(m_stylos);
+    if (m_qt) QCoreApplication::installTranslator(m_qt);
+    m_language = code;
+    m_loaded = loaded;
+    QSettings().setValue(LanguageKey, code);
+    return true;
+}
+
+} // namespace stylos::app

@@ -1,0 +1,58 @@
+#include "ViewportSync.h"
+
+#include "stylos/widgets/RenderFragment.h"
+#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/ViewportWidget.h"
+
+#include <QTimer>
+
+namespace stylos::app {
+
+ViewportSync::ViewportSync(widgets::SceneDocument& document, widgets::ViewportWidget& viewport, QObject* parent)
+    : QObject(parent), m_document(document), m_viewport(&viewport)
+{
+    using widgets::SceneDocument;
+    connect(&document, &SceneDocument::fragmentAdded, this, &ViewportSync::schedule);
+    connect(&document, &SceneDocument::fragmentRemoved, this, &ViewportSync::schedule);
+    connect(&document, &SceneDocument::fragmentChanged, this, &ViewportSync::schedule);
+    connect(&document, &SceneDocument::octreeChanged, this, &ViewportSync::schedule);
+    connect(&document, &SceneDocument::sceneReset, this, &ViewportSync::schedule);
+    schedule();
+}
+
+void ViewportSync::setSelection(const QList<core::scene::FragmentId>& ids)
+{
+    if (ids == m_selection) return;
+    m_selection = ids;
+    schedule();
+}
+
+void ViewportSync::schedule()
+{
+    if (m_scheduled) return;
+    m_scheduled = true;
+    QTimer::singleShot(0, this, &ViewportSync::pushNow);
+}
+
+void ViewportSync::pushNow()
+{
+    m_scheduled = false;
+    if (!m_viewport) return;
+    std::vector<widgets::RenderFragment> fragments;
+    for (const core::scene::Fragment& f : m_document.scene().fragments()) {
+        auto octree = m_document.octree(f.id);
+        if (!octree) continue;
+        widgets::RenderFragment r;
+        r.id = f.id;
+        r.octree = std::move(octree);
+        for (int row = 0; row < 4; ++row)
+            for (int col = 0; col < 4; ++col) r.pose(row, col) = f.pose(row, col);
+        r.colour = QColor(f.colour.r, f.colour.g, f.colour.b);
+        r.visible = f.visible;
+        r.selected = m_selection.contains(f.id);
+        fragments.push_back(std::move(r));
+    }
+    m_viewport->setFragments(std::move(fragments));
+}
+
+} // namespace stylos::app

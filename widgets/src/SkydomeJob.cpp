@@ -1,0 +1,131 @@
+#include "stylos/widgets/SkydomeJob.h"
+
+#include "stylos/core/ao/AoCells.h"
+#include "stylos/core/ao/AoExport.h"
+#include "stylos/widgets/ErrorText.h"
+
+#include <QFileInfo>
+
+#include <algorithm>
+#include <chrono>
+#include <utility>
+
+namespace stylos::widgets {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+namespace ao = core::ao;
+namespace oct = core::octree;
+
+/** One step of the job: maps the step's [0, 1] onto [from, to] of the whole job (or reports nothing). */
+class StepProgress final : public core::ProgressSink {
+public:
+    StepProgress(core::ProgressSink* whole, double from, double to) : m_whole(whole), m_from(from), m_to(to) {}
+    void update(double fraction) override
+    {
+        if (m_whole) m_whole->update(m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0));
+    }
+    bool isCancelRequested() const override { return m_whole && m_whole->isCancelRequested(); }
+
+private:
+    core::ProgressSink* m_whole;
+    double m_from;
+    double m_to;
+};
+
+} // namespace
+
+core::ao::AoOptions SkydomeOptions::aoOptions() const
+{
+    core::ao::AoOptions options;
+    options.directions = directions;
+    options.method = method;
+    options.threads = threads;
+    return options;
+}
+
+SkydomeJob::SkydomeJob(QString octreePath, quint64 fragmentId, SkydomeOptions options, QString name)
+    : m_path(std::move(octreePath)), m_fragmentId(fragmentId), m_options(options), m_name(std::move(name))
+{
+}
+
+QString SkydomeJob::label() const
+{
+    return tr("Skydome of %1").arg(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name);
+}
+
+QString SkydomeJob::errorText(const QString& path, const core::Error& error)
+{
+    return tr("Could not compute the skydome of %1: %2.").arg(QFileInfo(path).fileName(), ErrorText::reason(error.code)) +
+           QLatin1Char('\n') + QString::fromStdString(error.message);
+}
+
+core::Result<SkydomeResult> SkydomeJob::run(core::ProgressSink* progress) const
+{
+    const auto start = Clock::now();
+    const std::filesystem::path path = m_path.toStdString();
+    SkydomeResult result;
+    result.fragmentId = m_fragmentId;
+    result.octreePath = m_path;
+    result.directions = m_options.directions;
+
+    // Reading: the octree (mapped, checksums verified) and the cells of the level.
+    auto opened = oct::PackedOctree::open(path);
+    if (!opened) return opened.error();
+    const oct::PackedOctree& octree = *opened;
+    result.level = m_options.level.value_or(ao::closedSurfaceLevel(octree));
+    ao::AoCells cells;
+    {
+        StepProgress step(progress, 0.0, 0.1);
+        auto read = ao::cellsAtLevel(octree, result.level, &step);
+        if (!read) return read.error();
+        cells = std::move(read).value();
+    }
+    result.cells = cells.size();
+
+    // Computing: per cell, then per leaf.
+    std::vector<float> perLeaf;
+    {
+        StepProgress step(progress, 0.1, 0.9);
+        auto values = ao::computeAmbientOcclusion(cells, m_options.aoOptions(), &step);
+        if (!values) return values.error();
+        perLeaf = ao::valuesPerLeaf(cells, *values);
+    }
+    cells = {};
+    result.leaves = perLeaf.size();
+
+    // Writing, in place and atomically: the last moment a cancel leaves the file as it was.
+    if (progress && progress->isCancelRequested())
+        return core::Error::at(core::ErrorCode::Cancelled, m_path.toStdString(), "", "cancelled");
+    if (auto written = ao::writeAmbientPoct(octree, perLeaf, path); !written) return written.error();
+    if (progress) progress->update(0.97);
+
+    // The updated file, for the document (the old mapping stays valid for whoever still holds it).
+    auto reopened = oct::PackedOctree::open(path);
+    if (!reopened) return reopened.error();
+    result.octree = std::make_shared<const oct::PackedOctree>(std::move(reopened).value());
+    result.seconds = std::chrono::duration<double>(Clock::now() - start).count();
+    if (progress) progress->update(1.0);
+    return result;
+}
+
+void SkydomeJob::operator()(QPromise<SkydomeResult>& promise, core::ProgressSink& progress) const
+{
+    auto computed = run(&progress);
+    if (!computed && computed.error().code == core::ErrorCode::Cancelled) return; // no result
+    if (progress.isCancelRequested()) return;
+    if (computed) {
+        promise.addResult(std::move(computed).value());
+        return;
+    }
+    SkydomeResult failed;
+    failed.fragmentId = m_fragmentId;
+    failed.octreePath = m_path;
+    failed.directions = m_options.directions;
+    failed.error = errorText(m_path, computed.error());
+    failed.errorCode = computed.error().code;
+    promise.addResult(std::move(failed));
+}
+
+} // namespace stylos::widgets
