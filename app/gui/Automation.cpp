@@ -16,6 +16,7 @@
 
 #include <cstdio>
 #include <functional>
+#include <memory>
 
 namespace stylos::app {
 
@@ -79,11 +80,18 @@ void orbitWhenReady(MainWindow& window, int frames, int timeoutMs)
         QTimer::singleShot(0, qApp, [] { QApplication::exit(1); });
         return;
     }
+    // From here (just before the file is opened) to the first frame that drew points.
+    auto sinceOpen = std::make_shared<QElapsedTimer>();
+    sinceOpen->start();
+    auto openToFirstFrame = std::make_shared<double>(-1.0);
+    QObject::connect(viewport, &widgets::ViewportWidget::pointsDrawn, &window, [sinceOpen, openToFirstFrame](quint64 n) {
+        if (*openToFirstFrame < 0 && n > 0) *openToFirstFrame = double(sinceOpen->nsecsElapsed()) / 1e6;
+    });
     for (QDockWidget* dock : window.findChildren<QDockWidget*>()) dock->hide();
     for (QToolBar* bar : window.findChildren<QToolBar*>()) bar->hide();
     viewport->setFixedSize(1280, 800);
     window.adjustSize();
-    whenReady(window, timeoutMs, [&window, viewport, frames] {
+    whenReady(window, timeoutMs, [&window, viewport, frames, openToFirstFrame] {
         if (window.logDock().errorCount() > 0 || viewport->fragments().empty()) {
             std::fprintf(stderr, "stylos: nothing to orbit: the file did not open\n");
             QApplication::exit(1);
@@ -92,7 +100,9 @@ void orbitWhenReady(MainWindow& window, int frames, int timeoutMs)
         widgets::OrbitBenchmark::Options options;
         options.frames = frames;
         auto* benchmark = new widgets::OrbitBenchmark(*viewport, options, &window);
-        QObject::connect(benchmark, &widgets::OrbitBenchmark::finished, &window, [](const QJsonObject& result) {
+        QObject::connect(benchmark, &widgets::OrbitBenchmark::finished, &window,
+                         [openToFirstFrame](QJsonObject result) {
+            result.insert(QStringLiteral("openToFirstFrameMs"), *openToFirstFrame);
             std::fputs(QJsonDocument(result).toJson(QJsonDocument::Indented).constData(), stdout);
             std::fflush(stdout);
             QApplication::exit(result.contains(QStringLiteral("error")) ? 1 : 0);

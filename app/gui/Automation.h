@@ -23,7 +23,8 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 *
 /**
  * @brief Hides the docks and toolbar, sizes the 3D view to 1280 × 800, and once ready orbits the camera
  *        for @p frames frames (widgets::OrbitBenchmark), prints the JSON result on stdout and quits (0;
- *        1 without a 3D view, or when the scene failed to open).
+ *        1 without a 3D view, or when the scene failed to open). The result adds "openToFirstFrameMs":
+ *        from this call (made just before the file is opened) to the first frame that drew points.
  */
 void orbitWhenReady(MainWindow& window, int frames, int timeoutMs = 15 * 60 * 1000);
 

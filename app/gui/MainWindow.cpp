@@ -107,20 +107,21 @@ void MainWindow::createDocks()
     m_developpeeDock = new QDockWidget(this);
     m_developpeeDock->setObjectName(QStringLiteral("developpeeDock"));
     m_developpeeDock->setWidget(m_developpee);
-    addDockWidget(Qt::RightDockWidgetArea, m_developpeeDock);
+    // A développée is wide (a drum's circumference by its height): it gets the bottom, under the 3D view.
+    addDockWidget(Qt::BottomDockWidgetArea, m_developpeeDock);
     m_developpeeLink = new DeveloppeeLink(*m_document, *m_tasks, *m_developpee, m_viewport, this);
     connect(m_developpeeLink, &DeveloppeeLink::finished, this, &MainWindow::report);
 
     m_tasksDock = new QDockWidget(this);
     m_tasksDock->setObjectName(QStringLiteral("tasksDock"));
     m_tasksDock->setWidget(new widgets::TaskListWidget(*m_tasks));
-    addDockWidget(Qt::BottomDockWidgetArea, m_tasksDock);
+    splitDockWidget(m_developpeeDock, m_tasksDock, Qt::Horizontal);
     m_logDock = new LogDock(this);
-    addDockWidget(Qt::BottomDockWidgetArea, m_logDock);
     tabifyDockWidget(m_tasksDock, m_logDock);
     m_tasksDock->raise();
-    resizeDocks({m_sceneDock, m_developpeeDock}, {280, 420}, Qt::Horizontal);
-    resizeDocks({m_tasksDock}, {140}, Qt::Vertical);
+    resizeDocks({m_sceneDock}, {280}, Qt::Horizontal);
+    resizeDocks({m_developpeeDock, m_tasksDock}, {900, 300}, Qt::Horizontal);
+    resizeDocks({m_developpeeDock}, {330}, Qt::Vertical);
 
     connect(m_sceneDock, &SceneDock::selectionChanged, this, &MainWindow::selectionChanged);
 }

@@ -66,7 +66,8 @@ QString prepareAndWait(DemoScene& demo, int timeoutMs = 120000)
 QMap<QString, QDateTime> modificationTimes(const QString& directory)
 {
     QMap<QString, QDateTime> times;
-    for (const QFileInfo& info : QDir(directory).entryInfoList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot))
+    for (const QFileInfo& info :
+         QDir(directory).entryInfoList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot))
         times.insert(info.fileName(), info.lastModified());
     return times;
 }
@@ -76,7 +77,7 @@ QMap<QString, QDateTime> modificationTimes(const QString& directory)
 class DemoSceneTest : public QObject {
     Q_OBJECT
 
-private Q_SLOTS:
+  private Q_SLOTS:
     void defaultDirectoryAndItems();
     void generatesTheProject();
     void secondPrepareReusesTheCache();
@@ -85,7 +86,7 @@ private Q_SLOTS:
     void unwritableFolderFails();
     void firstRunAtTheDefaultSpacing();
 
-private:
+  private:
     QString generatedDirectory();
 
     QTemporaryDir m_dir;
@@ -132,8 +133,8 @@ void DemoSceneTest::generatesTheProject()
     QVERIFY(!demo.isPreparing());
     // Only the project, its stamp and the four octrees: the scans and the scratch folder are gone.
     QCOMPARE(QDir(dir).entryList(QDir::Files | QDir::Hidden | QDir::AllDirs | QDir::NoDotAndDotDot, QDir::Name),
-             QStringList({"demo.stylos", "demo.version", "drum.poct", "fragment-a.poct", "fragment-b.poct",
-                          "omphalos.poct"}));
+             QStringList(
+                 {"demo.stylos", "demo.version", "drum.poct", "fragment-a.poct", "fragment-b.poct", "omphalos.poct"}));
 
     auto project = core::scene::ProjectFile::load(demo.projectPath().toStdString());
     QVERIFY(project.ok());
@@ -172,6 +173,9 @@ void DemoSceneTest::generatesTheProject()
         QVERIFY(sum / double(leaves) > 0.3); // mostly open sky...
         QVERIFY(lowest < 0.8);               // ...with shadowed places (flutes, the net, fractures)
         bounds.push_back(sceneBounds(*octree, f.pose));
+        const Bounds& b = bounds.back();
+        qInfo("  scene bounds x [%.3f, %.3f] y [%.3f, %.3f] z [%.3f, %.3f]", b.lo[0], b.hi[0], b.lo[1], b.hi[1],
+              b.lo[2], b.hi[2]);
         QVERIFY2(std::abs(bounds.back().lo[2]) < 0.02, qPrintable(names[int(i)])); // standing on the ground
     }
 
@@ -209,8 +213,8 @@ void DemoSceneTest::secondPrepareReusesTheCache()
     QSignalSpy ready(&demo, &DemoScene::ready);
     QVERIFY(demo.prepare());
     QVERIFY(!demo.isPreparing());
-    QVERIFY(m_tasks.isIdle());  // nothing to generate
-    QVERIFY(ready.isEmpty());   // queued, not emitted inside prepare()
+    QVERIFY(m_tasks.isIdle()); // nothing to generate
+    QVERIFY(ready.isEmpty());  // queued, not emitted inside prepare()
     QVERIFY(ready.wait(5000));
     QCOMPARE(ready.first().at(0).toString(), demo.projectPath());
     QCOMPARE(modificationTimes(dir), before);
@@ -221,7 +225,8 @@ void DemoSceneTest::incompleteOrOutdatedCacheIsRegenerated()
     // The old PLY-only demo: no project, so it is regenerated, and its scans are removed.
     const QString dir = m_dir.filePath("stale");
     QDir().mkpath(dir);
-    for (const char* name : {"drum.ply", "drum.truth.json", "omphalos.ply"}) stylos::test::writeFile(dir, name, "old");
+    for (const char* name : {"drum.ply", "drum.truth.json", "omphalos.ply"})
+        stylos::test::writeFile(dir, name, "old");
     DemoScene demo(m_tasks, dir);
     demo.setSpacing(kTestSpacing);
     QVERIFY(!demo.isGenerated());
@@ -286,11 +291,13 @@ void DemoSceneTest::unwritableFolderFails()
 
 void DemoSceneTest::firstRunAtTheDefaultSpacing()
 {
-    // A measurement, not a check: STYLOS_DEMO_TIMING=1 [STYLOS_DEMO_SPACING=metres] DemoSceneTest firstRunAtTheDefaultSpacing
+    // A measurement, not a check: STYLOS_DEMO_TIMING=1 [STYLOS_DEMO_SPACING=metres] DemoSceneTest
+    // firstRunAtTheDefaultSpacing
     if (qEnvironmentVariableIsEmpty("STYLOS_DEMO_TIMING")) QSKIP("set STYLOS_DEMO_TIMING=1 to time the first run");
     QTemporaryDir dir;
     DemoScene demo(m_tasks, dir.filePath("demo"));
-    if (const double spacing = qEnvironmentVariable("STYLOS_DEMO_SPACING").toDouble(); spacing > 0) demo.setSpacing(spacing);
+    if (const double spacing = qEnvironmentVariable("STYLOS_DEMO_SPACING").toDouble(); spacing > 0)
+        demo.setSpacing(spacing);
     QElapsedTimer timer;
     timer.start();
     QCOMPARE(prepareAndWait(demo, 600000), demo.projectPath());
@@ -302,6 +309,15 @@ void DemoSceneTest::firstRunAtTheDefaultSpacing()
         qInfo("%s: depth %d, %llu leaves, %llu cells, %.1f MB", qPrintable(QFileInfo(path).fileName()), octree->depth(),
               static_cast<unsigned long long>(octree->cellCount(octree->depth())),
               static_cast<unsigned long long>(octree->totalCells()), octree->fileBytes() / 1e6);
+    }
+    // The point counts: the same scans through the public generator (same object and sampling, another pose).
+    for (const DemoScene::Item& item : DemoScene::items()) {
+        core::synth::SyntheticOptions options;
+        options.spacing = demo.spacing();
+        options.seed = item.seed;
+        auto report = core::synth::generateScan(item.kind, options, dir.filePath("count.ply").toStdString());
+        QVERIFY(report.ok());
+        qInfo("%s: %llu points", qPrintable(item.name), static_cast<unsigned long long>(report->points));
     }
 }
 

@@ -141,6 +141,7 @@ void GrabTest::orbitBenchmarkPrintsFrameTimes()
     QVERIFY(result.value("medianMs").toDouble() > 0);
     QVERIFY(result.value("p95Ms").toDouble() >= result.value("medianMs").toDouble());
     QVERIFY(result.value("maxPointsDrawn").toDouble() > 0);
+    QVERIFY(result.value("openToFirstFrameMs").toDouble() > 0);
 }
 
 void GrabTest::rejectsBadOptions()

@@ -191,25 +191,33 @@ void ViewportTest::markerIsDrawn()
 
 void ViewportTest::ambientShading()
 {
-    // The same drum with an ambient layer of 0.25 everywhere: the Ambient shading is grey 64 exactly.
+    // The same drum with an ambient layer of a everywhere: the Ambient shading is grey 0.95 · a² times the
+    // headlight's 0.7 + 0.3 · lambert, so at one pixel, a = 0.5 gives a quarter of a = 1.
     const auto& octree = *m_drum.octree;
-    const std::vector<float> ambient(octree.cellCount(octree.depth()), 0.25f);
-    const std::filesystem::path path = m_dir.filePath("ambient.poct").toStdString();
-    QVERIFY(stylos::core::ao::writeAmbientPoct(octree, ambient, path).ok());
-    auto opened = stylos::core::octree::PackedOctree::open(path);
-    QVERIFY(opened.ok());
-    RenderFragment f;
-    f.id = 42;
-    f.octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened.value()));
-    m_view->setFragments({f});
-    m_view->setShading(stylos::widgets::PointRenderer::Shading::Ambient);
-    waitRefined();
-    const QImage image = m_view->grabFramebuffer();
-    QCOMPARE(image.pixel(200, 150), qRgb(64, 64, 64));
-    // Colour shading without a colour layer falls back to the headlight: not grey 64.
+    const auto greyAt = [&](float a) {
+        const std::vector<float> ambient(octree.cellCount(octree.depth()), a);
+        const std::filesystem::path path = m_dir.filePath(QStringLiteral("ambient-%1.poct").arg(a)).toStdString();
+        if (!stylos::core::ao::writeAmbientPoct(octree, ambient, path).ok()) return -1;
+        auto opened = stylos::core::octree::PackedOctree::open(path);
+        if (!opened.ok()) return -1;
+        RenderFragment f;
+        f.id = 42;
+        f.octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened.value()));
+        m_view->setFragments({f});
+        m_view->setShading(stylos::widgets::PointRenderer::Shading::Ambient);
+        waitRefined();
+        const QRgb c = m_view->grabFramebuffer().pixel(200, 150);
+        return qRed(c) == qGreen(c) && qGreen(c) == qBlue(c) ? qRed(c) : -2; // grey
+    };
+    const int full = greyAt(1.0f);
+    const int half = greyAt(0.5f);
+    QVERIFY2(full >= int(0.95 * 0.7 * 255) - 1 && full <= int(0.95 * 255) + 1, qPrintable(QString::number(full)));
+    QVERIFY2(std::abs(4 * half - full) <= 4, qPrintable(QStringLiteral("%1 %2").arg(half).arg(full)));
+    // Colour shading without a colour layer falls back to the headlight: not grey.
     m_view->setShading(stylos::widgets::PointRenderer::Shading::Colour);
     waitRefined();
-    QVERIFY(m_view->grabFramebuffer().pixel(200, 150) != qRgb(64, 64, 64));
+    const QRgb colour = m_view->grabFramebuffer().pixel(200, 150);
+    QVERIFY(qRed(colour) != qBlue(colour)); // the fragment's warm default colour, lit
     m_view->setShading(stylos::widgets::PointRenderer::Shading::Headlight);
     waitRefined();
 }

@@ -48,12 +48,15 @@ struct Outcome {
 
 /** Maps a step's progress onto its share [from, to] of the whole task. */
 class StepProgress final : public core::ProgressSink {
-public:
+  public:
     StepProgress(core::ProgressSink& parent, double from, double to) : m_parent(parent), m_from(from), m_to(to) {}
-    void update(double fraction) override { m_parent.update(m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0)); }
+    void update(double fraction) override
+    {
+        m_parent.update(m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0));
+    }
     bool isCancelRequested() const override { return m_parent.isCancelRequested(); }
 
-private:
+  private:
     core::ProgressSink& m_parent;
     double m_from;
     double m_to;
@@ -85,7 +88,9 @@ DemoObject makeObject(SyntheticKind kind, const core::synth::SyntheticOptions& o
         made.object = std::make_unique<FragmentShape>(drum, fragment);
         break;
     }
-    case SyntheticKind::Omphalos: made.object = std::make_unique<OmphalosShape>(OmphalosParameters::random(random)); break;
+    case SyntheticKind::Omphalos:
+        made.object = std::make_unique<OmphalosShape>(OmphalosParameters::random(random));
+        break;
     }
     return made;
 }
@@ -110,11 +115,12 @@ core::Result<std::uint64_t> simulateScan(const core::synth::SyntheticObject& obj
     return points;
 }
 
-/** Leaf level whose cells are about @p spacing: the leaves then hold a point or two each. */
+/** Leaf level whose cells are about @p spacing (the root box is about the object's size): a leaf then
+ *  holds a point or two, and the skydome's closed-surface level is the leaf level or the one above. */
 int depthFor(const core::synth::SyntheticObject& object, double spacing)
 {
     const double size = std::max(2.0 * object.extent(), object.height());
-    return std::clamp(static_cast<int>(std::ceil(std::log2(size / spacing))), 4, 14);
+    return std::clamp(static_cast<int>(std::lround(std::log2(size / spacing))), 4, 14);
 }
 
 Pose rotation(double x, double y, double z)
@@ -149,14 +155,17 @@ Pose placeOnGround(const core::octree::PackedOctree& octree, const Pose& rotatio
 Pose layout(std::size_t index, const DemoObject& made, const core::octree::PackedOctree& octree)
 {
     switch (index) {
-    case 0: return rotation(0, 0, -100 * kDegree - made.azimuth);
-    case 1: return placeOnGround(octree, rotation(0, 0, -65 * kDegree - made.azimuth), 1.15, -0.3);
+    case 0:
+        return rotation(0, 0, -100 * kDegree - made.azimuth);
+    case 1:
+        return placeOnGround(octree, rotation(0, 0, -65 * kDegree - made.azimuth), 1.15, -0.3);
     case 2: {
         // Sector centre to +x, then outward (+x) up (+z), then a turn about the vertical.
         const Pose lying = rotation(0, 0, 25 * kDegree) * rotation(0, -kPi / 2, 0) * rotation(0, 0, -made.azimuth);
         return placeOnGround(octree, lying, 1.2, 0.55);
     }
-    default: return Pose::translation({-1.4, 0.1, 0.0});
+    default:
+        return Pose::translation({-1.4, 0.1, 0.0});
     }
 }
 
@@ -169,13 +178,16 @@ struct Job {
     std::string axisName;
 };
 
-/** Relative cost of each item (its expected points), to share the progress bar. */
+/** Relative time each item takes (measured), to share the progress bar. */
 double itemWeight(SyntheticKind kind)
 {
     switch (kind) {
-    case SyntheticKind::Drum: return 4.2;
-    case SyntheticKind::Omphalos: return 3.9;
-    case SyntheticKind::Fragment: return 0.6;
+    case SyntheticKind::Drum:
+        return 10.0;
+    case SyntheticKind::Omphalos:
+        return 8.4;
+    case SyntheticKind::Fragment:
+        return 1.6;
     }
     return 1.0;
 }
@@ -183,7 +195,8 @@ double itemWeight(SyntheticKind kind)
 void removeFiles(const std::vector<fs::path>& files)
 {
     std::error_code ignored;
-    for (const fs::path& file : files) fs::remove(file, ignored);
+    for (const fs::path& file : files)
+        fs::remove(file, ignored);
 }
 
 /** The whole generation, on a worker thread. Adds nothing to @p promise when cancelled. */
@@ -197,21 +210,25 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
         if (error.code != core::ErrorCode::Cancelled) promise.addResult(Outcome{error, file});
     };
     if (!scratch.isValid()) {
-        fail(core::Error::at(core::ErrorCode::WriteFailed, job.directory.toStdString(),
-                             {}, scratch.errorString().toStdString()), job.directory);
+        fail(core::Error::at(core::ErrorCode::WriteFailed, job.directory.toStdString(), {},
+                             scratch.errorString().toStdString()),
+             job.directory);
         return;
     }
     const fs::path temp = scratch.path().toStdString();
 
     double total = 0.0;
-    for (const auto& item : job.items) total += itemWeight(item.kind);
+    for (const auto& item : job.items)
+        total += itemWeight(item.kind);
     double done = 0.0;
     core::scene::Scene scene;
     for (std::size_t i = 0; i < job.items.size(); ++i) {
         const DemoScene::Item& item = job.items[i];
         const double from = done / total, share = itemWeight(item.kind) / total;
         done += itemWeight(item.kind);
-        const auto step = [&](double a, double b) { return StepProgress(progress, from + a * share, from + b * share); };
+        const auto step = [&](double a, double b) {
+            return StepProgress(progress, from + a * share, from + b * share);
+        };
         const fs::path ply = temp / (item.fileName.toStdString() + ".ply");
         const fs::path built = temp / item.fileName.toStdString();
         const fs::path output = folder / item.fileName.toStdString();
@@ -222,14 +239,14 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
         options.writeNormals = true;
         const DemoObject made = makeObject(item.kind, options);
         {
-            StepProgress sink = step(0.0, 0.3);
+            StepProgress sink = step(0.0, 0.5);
             if (auto scanned = simulateScan(*made.object, options, ply, sink); !scanned)
                 return fail(scanned.error(), item.fileName);
         }
         core::octree::BuildOptions build;
         build.depth = depthFor(*made.object, job.spacing);
         {
-            StepProgress sink = step(0.3, 0.55);
+            StepProgress sink = step(0.5, 0.8);
             auto report = core::octree::buildOctreeFile(ply, built, build, &sink);
             std::error_code ignored;
             fs::remove(ply, ignored);
@@ -242,7 +259,7 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
         // The 3D skydome at the level where the cells still close the surface, spread to the leaves.
         std::vector<float> perLeaf;
         {
-            StepProgress sink = step(0.55, 0.9);
+            StepProgress sink = step(0.8, 0.97);
             auto cells = core::ao::cellsAtLevel(octree, core::ao::closedSurfaceLevel(octree));
             if (!cells) return fail(cells.error(), item.fileName);
             core::ao::AoOptions ao;
@@ -252,7 +269,7 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
             perLeaf = core::ao::valuesPerLeaf(*cells, *values);
         }
         {
-            StepProgress sink = step(0.9, 1.0);
+            StepProgress sink = step(0.97, 1.0);
             written.push_back(output);
             if (auto stored = core::ao::writeAmbientPoct(octree, perLeaf, output, &sink); !stored)
                 return fail(stored.error(), item.fileName);
@@ -285,7 +302,8 @@ QStringList legacyFiles()
 {
     QStringList names;
     for (const char* stem : {"drum", "fragment-a", "fragment-b", "omphalos"})
-        names << QStringLiteral("%1.ply").arg(QLatin1String(stem)) << QStringLiteral("%1.truth.json").arg(QLatin1String(stem));
+        names << QStringLiteral("%1.ply").arg(QLatin1String(stem))
+              << QStringLiteral("%1.truth.json").arg(QLatin1String(stem));
     return names;
 }
 
@@ -322,7 +340,8 @@ QString DemoScene::projectPath() const
 QStringList DemoScene::paths() const
 {
     QStringList result;
-    for (const Item& item : items()) result << QDir(m_directory).absoluteFilePath(item.fileName);
+    for (const Item& item : items())
+        result << QDir(m_directory).absoluteFilePath(item.fileName);
     return result;
 }
 
@@ -358,7 +377,8 @@ bool DemoScene::prepare()
     }
     // An incomplete or outdated cache goes first: until the new project is written, there is none.
     QDir dir(m_directory);
-    for (const QString& name : QStringList{QStringLiteral("demo.stylos"), QStringLiteral("demo.version")} + legacyFiles())
+    for (const QString& name :
+         QStringList{QStringLiteral("demo.stylos"), QStringLiteral("demo.version")} + legacyFiles())
         if (dir.exists(name)) dir.remove(name);
 
     Job job;
@@ -367,10 +387,11 @@ bool DemoScene::prepare()
     job.spacing = m_spacing;
     job.stamp = stamp().toStdString();
     job.axisName = tr("Axis").toStdString();
-    auto* watcher = m_tasks.start<Outcome>(tr("Preparing the demo scene"),
-                                           [job = std::move(job)](QPromise<Outcome>& promise, core::ProgressSink& progress) {
-                                               generate(job, promise, progress);
-                                           });
+    auto* watcher =
+        m_tasks.start<Outcome>(tr("Preparing the demo scene"),
+                               [job = std::move(job)](QPromise<Outcome>& promise, core::ProgressSink& progress) {
+                                   generate(job, promise, progress);
+                               });
     m_watcher = watcher;
     connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher] { generationEnded(watcher); });
     return true;

@@ -50,7 +50,7 @@ void main()
         colour = aColour.rgb * (0.3 + 0.7 * lambert);
     else
         colour = uBaseColour * (0.12 + 0.88 * lambert);
-    vColour = uSelected ? mix(colour, vec3(1.0, 0.72, 0.2), 0.2) : colour;
+    vColour = uSelected ? mix(colour, vec3(0.45, 0.7, 1.0), 0.18) : colour;
 }
 )";
 

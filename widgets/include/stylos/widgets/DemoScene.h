@@ -35,17 +35,17 @@ class TaskManager;
 class DemoScene : public QObject {
     Q_OBJECT
 
-public:
+  public:
     /** @brief One fragment of the demo. */
     struct Item {
-        QString name;                       ///< translated ("Drum", "Fragment A"...)
-        QString fileName;                   ///< its octree, in directory(): "drum.poct"...
+        QString name;     ///< translated ("Drum", "Fragment A"...)
+        QString fileName; ///< its octree, in directory(): "drum.poct"...
         core::synth::SyntheticKind kind;
-        std::uint64_t seed;                 ///< the generator's seed (fixed: the demo is always the same)
+        std::uint64_t seed; ///< the generator's seed (fixed: the demo is always the same)
     };
 
-    /** @brief Sampling of the scans, metres: about 2.3 M points in all, generated in well under 30 s. */
-    static constexpr double DefaultSpacing = 0.0025;
+    /** @brief Sampling of the scans, metres (about 2.3 M points in all; ~10 s on 2 busy cores). */
+    static constexpr double DefaultSpacing = 0.002;
     /** @brief Bumped whenever the generated files change; an older cache is regenerated. */
     static constexpr int Version = 2;
     /** @brief Skydome directions (a Fibonacci sphere). */
@@ -85,18 +85,18 @@ public:
      */
     bool prepare();
 
-public Q_SLOTS:
+  public Q_SLOTS:
     /** @brief Cancels the running generation (cancelled() follows); nothing when none runs. */
     void cancel();
 
-Q_SIGNALS:
+  Q_SIGNALS:
     /** @brief The project is complete at @p projectPath: open it with SceneDocument::open(). */
     void ready(const QString& projectPath);
     /** @brief @p message is translated and names the file and the reason. */
     void failed(const QString& message);
     void cancelled();
 
-private:
+  private:
     QString stamp() const;
     void generationEnded(QFutureWatcherBase* watcher);
 
