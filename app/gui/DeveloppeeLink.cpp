@@ -38,15 +38,20 @@ DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskMa
     connect(&document, &widgets::SceneDocument::fragmentChanged, this, &DeveloppeeLink::refreshFragment);
     connect(&document, &widgets::SceneDocument::fragmentRemoved, this, &DeveloppeeLink::refreshFragment);
     connect(&document, &widgets::SceneDocument::sceneReset, this, [this] {
-        m_dock.view()->clear();
+        m_dock.clearResult();
         refreshFragment();
     });
 }
 
 void DeveloppeeLink::setFragment(core::scene::FragmentId id)
 {
+    const bool changed = id != m_fragment;
     m_fragment = id;
     refreshFragment();
+    if (!changed) return;
+    if (const auto stored = m_document.developpee(id)) m_dock.showResult(*stored);
+    else m_dock.clearResult();
+    m_dock.setBusy(m_computing.count(id) != 0);
 }
 
 void DeveloppeeLink::refreshFragment()
@@ -54,6 +59,7 @@ void DeveloppeeLink::refreshFragment()
     const core::scene::Fragment* f = m_document.fragment(m_fragment);
     if (!f) {
         m_dock.setFragment(0, QString());
+        if (m_dock.view()->hasDeveloppee()) m_dock.clearResult(); // its fragment is gone
         return;
     }
     m_dock.setFragment(f->id, QString::fromStdString(f->name), axisGuide(*f));
@@ -62,19 +68,24 @@ void DeveloppeeLink::refreshFragment()
 void DeveloppeeLink::compute()
 {
     const core::scene::Fragment* f = m_document.fragment(m_dock.fragmentId());
-    if (!f) return;
-    const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), f->id, m_dock.settings());
+    if (!f || m_computing.count(f->id) != 0) return;
+    const core::scene::FragmentId id = f->id;
+    const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), id, m_dock.settings());
+    m_computing.insert(id);
     m_dock.setBusy(true);
     auto* watcher = m_tasks.start<widgets::DeveloppeeResult>(job.label(), job);
     const QString name = QString::fromStdString(f->name);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, name] {
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, name, id] {
+        m_computing.erase(id);
+        const bool shown = m_dock.fragmentId() == id;
         if (watcher->future().resultCount() == 0) { // cancelled
-            m_dock.setBusy(false);
+            if (shown) m_dock.setBusy(false);
             Q_EMIT finished(tr("Développée of %1 cancelled").arg(name), false);
             return;
         }
         const widgets::DeveloppeeResult result = watcher->future().result();
-        m_dock.showResult(result);
+        if (result.ok()) m_document.setDeveloppee(id, std::make_shared<const widgets::DeveloppeeResult>(result));
+        if (shown) m_dock.showResult(result);
         if (result.ok()) Q_EMIT finished(widgets::DeveloppeeDock::fitSummary(result), false);
         else Q_EMIT finished(result.error, true);
     });

@@ -4,7 +4,9 @@
  *        DeveloppeeJob for the dock's fragment on the TaskManager and shows its result; a click in the
  *        développée marks the 3D point in the view (through the fragment's pose), and a pick in the 3D
  *        view on that fragment marks it in the développée (through the inverse pose). The dock follows the
- *        current fragment (setFragment), offering its axis guide. GUI thread only.
+ *        current fragment (setFragment), offering its axis guide and showing the développée last
+ *        computed for it (kept by the document, listed in the Scene dock). Several fragments may be
+ *        computing at once; each result goes to its fragment. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
 
@@ -12,6 +14,8 @@
 #include <QPointer>
 
 #include <Eigen/Core>
+
+#include <set>
 
 namespace stylos::widgets {
 class DeveloppeeDock;
@@ -53,6 +57,7 @@ private:
     widgets::DeveloppeeDock& m_dock;
     QPointer<widgets::ViewportWidget> m_viewport;
     core::scene::FragmentId m_fragment = core::scene::NoFragment;
+    std::set<core::scene::FragmentId> m_computing;
 };
 
 } // namespace stylos::app

@@ -15,6 +15,7 @@
 #include "stylos/widgets/DeveloppeeSettings.h"
 #include "stylos/widgets/ScanImporter.h"
 #include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/SceneTreeModel.h"
 #include "stylos/widgets/SkydomeRunner.h"
 #include "stylos/widgets/TaskListWidget.h"
 #include "stylos/widgets/TaskManager.h"
@@ -29,6 +30,7 @@
 #include <QSettings>
 #include <QStatusBar>
 #include <QToolBar>
+#include <QTreeView>
 #include <QUndoStack>
 
 #include <memory>
@@ -226,6 +228,10 @@ void MainWindow::selectionChanged()
     m_propertiesDock->setFragment(current);
     m_developpeeLink->setFragment(ids.size() == 1 ? ids.first() : current);
     m_actions->setSelectionCount(static_cast<int>(ids.size()));
+    if (m_sceneDock->model()->isDeveloppee(m_sceneDock->view()->currentIndex())) {
+        m_developpeeDock->show();
+        m_developpeeDock->raise();
+    }
 }
 
 void MainWindow::openDemo()

@@ -234,9 +234,11 @@ void MainWindowTest::savesAndReopensTheProject()
 void MainWindowTest::developpeeClickMarksThe3dPointAndBack()
 {
     auto window = makeWindow();
-    importAndWait(*window, {QString::fromStdString(m_drum.poct.string())});
+    const QString poct = QString::fromStdString(m_drum.poct.string());
+    importAndWait(*window, {poct, poct});
     widgets::SceneDocument& doc = window->document();
     const auto id = doc.scene().fragments()[0].id;
+    const auto other = doc.scene().fragments()[1].id;
     const core::scene::Pose pose = core::scene::Pose().withTranslation({2.0, 0.5, -1.0}).withAngles({0, 0, 90});
     QVERIFY(doc.setFragmentPose(id, pose));
     window->sceneDock().selectFragment(id);
@@ -272,14 +274,29 @@ void MainWindowTest::developpeeClickMarksThe3dPointAndBack()
         QVERIFY(viewport->marker().has_value());
         QVERIFY((*viewport->marker() - Eigen::Vector3d(scene[0], scene[1], scene[2])).norm() < 1e-9);
     }
+    // The développée is listed under its fragment, and comes back when the fragment is selected again.
+    const QModelIndex row = window->sceneDock().model()->developpeeIndexOf(id);
+    QVERIFY(row.isValid());
+    QVERIFY(row.data().toString().startsWith(QStringLiteral("Développée (Cylinder, ")));
+    QCOMPARE(row.data(widgets::SceneTreeModel::FragmentIdRole).value<quint64>(), quint64(id));
+    QVERIFY(doc.developpee(id) != nullptr);
+    window->sceneDock().selectFragment(other);
+    QVERIFY(!view->hasDeveloppee());
+    window->sceneDock().selectFragment(id);
+    QVERIFY(view->hasDeveloppee());
+    QCOMPARE(view->fragmentId(), quint64(id));
     // A pick in 3D comes back into the développée through the inverse pose.
     view->setMarker(std::nullopt);
     window->developpeeLink().markInDeveloppee(Eigen::Vector3d(scene[0], scene[1], scene[2]), id);
     QVERIFY(view->marker().has_value());
     QVERIFY((*view->marker() - local).norm() < 1e-9);
     // A pick on another fragment clears it.
-    window->developpeeLink().markInDeveloppee(Eigen::Vector3d::Zero(), id + 100);
+    window->developpeeLink().markInDeveloppee(Eigen::Vector3d::Zero(), other);
     QVERIFY(!view->marker().has_value());
+    // Removing the fragment drops its développée, from the tree and from the dock.
+    QVERIFY(doc.removeFragment(id));
+    QVERIFY(!view->hasDeveloppee());
+    QCOMPARE(window->sceneDock().model()->rowCount(), 1);
 }
 
 void MainWindowTest::computesTheSkydomeOfTheSelection()

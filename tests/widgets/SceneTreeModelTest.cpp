@@ -4,6 +4,7 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/FragmentPropertiesWidget.h"
 #include "stylos/widgets/SceneDocument.h"
 #include "stylos/widgets/SceneTreeModel.h"
@@ -37,6 +38,7 @@ private Q_SLOTS:
     void initTestCase();
     void rowsFollowTheDocument();
     void editsInTheTreeAreUndoable();
+    void developpeeRowFollowsTheDocument();
     void propertiesShowAndEditTheFragment();
 
 private:
@@ -90,7 +92,8 @@ void SceneTreeModelTest::rowsFollowTheDocument()
     QCOMPARE(model.data(groove, SceneTreeModel::GuideIndexRole).toInt(), 2);
     QCOMPARE(model.parent(groove), drumRow);
     QCOMPARE(model.fragmentAt(groove), drum);
-    QVERIFY(SceneTreeModel::isGuide(groove));
+    QVERIFY(model.isGuide(groove));
+    QVERIFY(!model.isDeveloppee(groove));
     QVERIFY(!(model.flags(groove) & Qt::ItemIsEditable));
 
     QSignalSpy removed(&model, &QAbstractItemModel::rowsRemoved);
@@ -190,6 +193,50 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     doc.removeFragment(id);
     QCOMPARE(properties.fragment(), stylos::core::scene::NoFragment);
     QVERIFY(!properties.nameEdit()->isEnabled());
+}
+
+void SceneTreeModelTest::developpeeRowFollowsTheDocument()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    SceneTreeModel model(doc);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    const FragmentId drum = doc.addFragment(fragment("drum", 2), m_octree);
+    const QModelIndex drumRow = model.indexOf(drum);
+    QCOMPARE(model.rowCount(drumRow), 2);
+    QVERIFY(!model.developpeeIndexOf(drum).isValid());
+
+    auto result = std::make_shared<stylos::widgets::DeveloppeeResult>();
+    result->fragmentId = drum;
+    result->image = QImage(532, 79, QImage::Format_ARGB32_Premultiplied);
+    QSignalSpy inserted(&model, &QAbstractItemModel::rowsInserted);
+    QVERIFY(doc.setDeveloppee(drum, result));
+    QCOMPARE(inserted.size(), 1);
+    QCOMPARE(model.rowCount(drumRow), 3);
+    const QModelIndex row = model.developpeeIndexOf(drum);
+    QCOMPARE(row, model.index(2, 0, drumRow)); // after the guides
+    QVERIFY(model.isDeveloppee(row));
+    QVERIFY(!model.isGuide(row));
+    QVERIFY(model.isGuide(model.index(1, 0, drumRow)));
+    QCOMPARE(row.data().toString(), QString("Développée (Cylinder, 532 × 79)"));
+    QCOMPARE(row.data(SceneTreeModel::DeveloppeeRole).toBool(), true);
+    QCOMPARE(row.data(SceneTreeModel::GuideIndexRole).toInt(), -1);
+    QCOMPARE(model.fragmentAt(row), drum);
+    QCOMPARE(model.parent(row), drumRow);
+    QVERIFY(!(model.flags(row) & Qt::ItemIsEditable));
+    // Replacing it keeps one row; forgetting it removes the row; not an undo step.
+    QVERIFY(doc.setDeveloppee(drum, result));
+    QCOMPARE(model.rowCount(drumRow), 3);
+    QVERIFY(!doc.undoStack()->canUndo() || doc.undoStack()->count() == 1); // only the addition
+    QVERIFY(doc.setDeveloppee(drum, nullptr));
+    QCOMPARE(model.rowCount(drumRow), 2);
+    QVERIFY(!doc.setDeveloppee(drum + 100, result));
+    // Dropped with its fragment.
+    QVERIFY(doc.setDeveloppee(drum, result));
+    QVERIFY(doc.removeFragment(drum));
+    doc.undoStack()->undo();
+    QCOMPARE(doc.developpee(drum), nullptr);
+    QCOMPARE(model.rowCount(model.indexOf(drum)), 2);
 }
 
 STYLOS_WIDGET_TEST_MAIN(SceneTreeModelTest)

@@ -139,6 +139,14 @@ void DeveloppeeDock::showResult(const DeveloppeeResult& result)
     refreshStatus();
 }
 
+void DeveloppeeDock::clearResult()
+{
+    m_last.reset();
+    m_view->clear();
+    updateEnabled();
+    refreshStatus();
+}
+
 QString DeveloppeeDock::statusText() const { return m_status->text(); }
 
 QString DeveloppeeDock::fitSummary(const DeveloppeeResult& result)

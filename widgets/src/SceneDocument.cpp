@@ -64,6 +64,21 @@ bool SceneDocument::replaceOctree(FragmentId id, OctreePtr octree)
     return true;
 }
 
+SceneDocument::DeveloppeePtr SceneDocument::developpee(FragmentId id) const
+{
+    const auto it = m_developpees.find(id);
+    return it == m_developpees.end() ? nullptr : it->second;
+}
+
+bool SceneDocument::setDeveloppee(FragmentId id, DeveloppeePtr result)
+{
+    if (!m_scene.find(id)) return false;
+    if (result) m_developpees[id] = std::move(result);
+    else if (m_developpees.erase(id) == 0) return true;
+    Q_EMIT developpeeChanged(id);
+    return true;
+}
+
 QString SceneDocument::projectFolder() const
 {
     return m_path.isEmpty() ? QString() : QFileInfo(m_path).absolutePath();
@@ -198,6 +213,7 @@ std::pair<Fragment, SceneDocument::OctreePtr> SceneDocument::takeFragment(Fragme
     if (!m_scene.find(id)) return {};
     Q_EMIT fragmentAboutToBeRemoved(id);
     Fragment fragment = m_scene.take(id).value();
+    m_developpees.erase(id);
     OctreePtr octree;
     if (const auto it = m_octrees.find(id); it != m_octrees.end()) {
         octree = std::move(it->second);
@@ -221,6 +237,7 @@ void SceneDocument::resetScene(core::scene::Scene scene)
     m_undo->clear();
     m_scene = std::move(scene);
     m_octrees.clear();
+    m_developpees.clear();
     Q_EMIT sceneReset();
 }
 

@@ -1,5 +1,7 @@
 #include "stylos/widgets/SceneTreeModel.h"
 
+#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/SceneDocument.h"
 
 #include <QColor>
@@ -27,9 +29,11 @@ SceneTreeModel::SceneTreeModel(SceneDocument& document, QObject* parent)
     });
     connect(&document, &SceneDocument::fragmentRemoved, this, [this](quint64 id) {
         m_guideCounts.erase(id);
+        m_developpeeRows.erase(id);
         endRemoveRows();
     });
     connect(&document, &SceneDocument::fragmentChanged, this, &SceneTreeModel::onFragmentChanged);
+    connect(&document, &SceneDocument::developpeeChanged, this, &SceneTreeModel::onDeveloppeeChanged);
     connect(&document, &SceneDocument::sceneAboutToBeReset, this, [this] { beginResetModel(); });
     connect(&document, &SceneDocument::sceneReset, this, [this] {
         rebuildGuideCounts();
@@ -53,32 +57,52 @@ FragmentId SceneTreeModel::fragmentAt(const QModelIndex& index) const
                                                             : core::scene::NoFragment;
 }
 
-bool SceneTreeModel::isGuide(const QModelIndex& index)
+bool SceneTreeModel::isGuide(const QModelIndex& index) const
 {
-    return index.isValid() && index.internalId() != 0;
+    return index.isValid() && index.internalId() != 0 && !isDeveloppee(index);
+}
+
+bool SceneTreeModel::isDeveloppee(const QModelIndex& index) const
+{
+    if (!index.isValid() || index.internalId() == 0) return false;
+    const auto id = static_cast<FragmentId>(index.internalId());
+    const auto guides = m_guideCounts.find(id);
+    return m_developpeeRows.count(id) != 0 && guides != m_guideCounts.end() && index.row() == guides->second;
+}
+
+QModelIndex SceneTreeModel::developpeeIndexOf(FragmentId id) const
+{
+    const QModelIndex parent = indexOf(id);
+    if (!parent.isValid() || m_developpeeRows.count(id) == 0) return {};
+    return index(m_guideCounts.at(id), 0, parent);
+}
+
+int SceneTreeModel::childCount(FragmentId id) const
+{
+    const auto it = m_guideCounts.find(id);
+    return (it == m_guideCounts.end() ? 0 : it->second) + static_cast<int>(m_developpeeRows.count(id));
 }
 
 QModelIndex SceneTreeModel::index(int row, int column, const QModelIndex& parent) const
 {
     if (!hasIndex(row, column, parent)) return {};
     if (!parent.isValid()) return createIndex(row, column, quintptr(0));
-    if (isGuide(parent)) return {};
+    if (parent.internalId() != 0) return {};
     // A guide row carries its fragment's id (ids start at 1, so 0 marks fragment rows).
     return createIndex(row, column, quintptr(fragmentAt(parent)));
 }
 
 QModelIndex SceneTreeModel::parent(const QModelIndex& child) const
 {
-    if (!isGuide(child)) return {};
+    if (!child.isValid() || child.internalId() == 0) return {};
     return indexOf(static_cast<FragmentId>(child.internalId()));
 }
 
 int SceneTreeModel::rowCount(const QModelIndex& parent) const
 {
     if (!parent.isValid()) return static_cast<int>(m_document.scene().size());
-    if (parent.column() != 0 || isGuide(parent)) return 0;
-    const auto it = m_guideCounts.find(fragmentAt(parent));
-    return it == m_guideCounts.end() ? 0 : it->second;
+    if (parent.column() != 0 || parent.internalId() != 0) return 0;
+    return childCount(fragmentAt(parent));
 }
 
 int SceneTreeModel::columnCount(const QModelIndex&) const
@@ -91,6 +115,7 @@ QVariant SceneTreeModel::data(const QModelIndex& index, int role) const
     if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
     const Fragment* f = m_document.fragment(fragmentAt(index));
     if (!f) return {};
+    if (isDeveloppee(index)) return developpeeData(*f, role);
     if (isGuide(index)) return guideData(*f, index.row(), role);
     return fragmentData(*f, role);
 }
@@ -111,6 +136,25 @@ QVariant SceneTreeModel::fragmentData(const Fragment& f, int role) const
         return {};
     case FragmentIdRole: return QVariant::fromValue<quint64>(f.id);
     case GuideIndexRole: return -1;
+    case DeveloppeeRole: return false;
+    default: return {};
+    }
+}
+
+QVariant SceneTreeModel::developpeeData(const Fragment& f, int role) const
+{
+    const auto result = m_document.developpee(f.id);
+    if (!result) return {};
+    switch (role) {
+    case Qt::DisplayRole:
+        return tr("Développée (%1, %2 × %3)")
+            .arg(DeveloppeeSettings::surfaceName(result->fit.surface.kind()))
+            .arg(result->image.width())
+            .arg(result->image.height());
+    case Qt::ToolTipRole: return DeveloppeeDock::fitSummary(*result);
+    case FragmentIdRole: return QVariant::fromValue<quint64>(f.id);
+    case GuideIndexRole: return -1;
+    case DeveloppeeRole: return true;
     default: return {};
     }
 }
@@ -124,13 +168,14 @@ QVariant SceneTreeModel::guideData(const Fragment& f, int guide, int role) const
     case Qt::ToolTipRole: return g.kind == core::scene::GuideKind::Axis ? tr("Axis") : tr("Groove");
     case FragmentIdRole: return QVariant::fromValue<quint64>(f.id);
     case GuideIndexRole: return guide;
+    case DeveloppeeRole: return false;
     default: return {};
     }
 }
 
 bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, int role)
 {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid) || isGuide(index)) return false;
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid) || index.internalId() != 0) return false;
     const FragmentId id = fragmentAt(index);
     if (role == Qt::EditRole) {
         const QString name = value.toString().trimmed();
@@ -148,7 +193,7 @@ bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, in
 Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const
 {
     if (!index.isValid()) return Qt::NoItemFlags;
-    if (isGuide(index)) return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemNeverHasChildren;
+    if (index.internalId() != 0) return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemNeverHasChildren;
     return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable | Qt::ItemIsUserCheckable;
 }
 
@@ -182,11 +227,35 @@ void SceneTreeModel::onFragmentChanged(quint64 id)
     Q_EMIT dataChanged(row, row);
 }
 
+void SceneTreeModel::onDeveloppeeChanged(quint64 id)
+{
+    const QModelIndex row = indexOf(id);
+    if (!row.isValid()) return;
+    const bool had = m_developpeeRows.count(id) != 0;
+    const bool has = m_document.developpee(id) != nullptr;
+    const int at = m_guideCounts[id];
+    if (had && !has) {
+        beginRemoveRows(row, at, at);
+        m_developpeeRows.erase(id);
+        endRemoveRows();
+    } else if (!had && has) {
+        beginInsertRows(row, at, at);
+        m_developpeeRows.insert(id);
+        endInsertRows();
+    } else if (has) {
+        const QModelIndex child = index(at, 0, row);
+        Q_EMIT dataChanged(child, child);
+    }
+}
+
 void SceneTreeModel::rebuildGuideCounts()
 {
     m_guideCounts.clear();
-    for (const Fragment& f : m_document.scene().fragments())
+    m_developpeeRows.clear();
+    for (const Fragment& f : m_document.scene().fragments()) {
         m_guideCounts[f.id] = static_cast<int>(f.guides.size());
+        if (m_document.developpee(f.id)) m_developpeeRows.insert(f.id);
+    }
 }
 
 } // namespace stylos::widgets

@@ -56,6 +56,8 @@ public:
 
     /** @brief Ends the busy state; a success goes to the view and the status, a failure to the status only. */
     void showResult(const DeveloppeeResult& result);
+    /** @brief Shows no développée (the view's placeholder, the status for the current fragment). */
+    void clearResult();
     /** @brief The status line's text. */
     QString statusText() const;
     /** @brief "NAME: Cylinder, radius 550.0 mm, RMS 0.42 mm, 98 % inliers; 3456 × 512 pixels of 1.00 mm; 2.3 s". */

@@ -29,6 +29,7 @@ class PackedOctree;
 namespace stylos::widgets {
 
 class TaskManager;
+struct DeveloppeeResult;
 
 class SceneDocument : public QObject {
     Q_OBJECT
@@ -56,6 +57,16 @@ public:
      *        valid for whoever still holds it (a view's buffers, a running job).
      */
     bool replaceOctree(FragmentId id, OctreePtr octree);
+
+    using DeveloppeePtr = std::shared_ptr<const DeveloppeeResult>;
+    /** @brief The développée last computed for @p id in this session; null when none. Not saved. */
+    DeveloppeePtr developpee(FragmentId id) const;
+    /**
+     * @brief Keeps @p result (a successful one) as the développée of fragment @p id, replacing the
+     *        previous one; null forgets it. Not an undo step; dropped with the fragment. Emits
+     *        developpeeChanged(). False (nothing changed) when there is no such fragment.
+     */
+    bool setDeveloppee(FragmentId id, DeveloppeePtr result);
 
     QUndoStack* undoStack() const { return m_undo; }
     TaskManager& tasks() const { return m_tasks; }
@@ -108,6 +119,8 @@ Q_SIGNALS:
     void sceneReset();
     /** @brief The octree of @p id became available (or failed: octree() stays null, the fragment is missing). */
     void octreeChanged(quint64 id);
+    /** @brief The fragment's développée was kept, replaced or forgotten (setDeveloppee()). */
+    void developpeeChanged(quint64 id);
     /**
      * @brief The octrees being opened are all done. @p errors: a translated message per failure (a
      *        missing or unreadable octree), naming the file; empty when all opened.
@@ -143,6 +156,7 @@ private:
     QUndoStack* m_undo;
     core::scene::Scene m_scene;
     std::map<FragmentId, OctreePtr> m_octrees;
+    std::map<FragmentId, DeveloppeePtr> m_developpees;
     std::map<FragmentId, QPointer<QFutureWatcherBase>> m_loads;  ///< octrees being opened
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
     QString m_path;
