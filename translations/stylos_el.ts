@@ -1,245 +1,925 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="el">
-    <context>
-        <name>stylos::app::CommandLine</name>
-        <message>
-            <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
-            <translation>Stylos, ένα εργαλείο για πολύ μεγάλες τρισδιάστατες σαρώσεις μνημείων. Χωρίς αρχείο, ανοίγει τη σκηνή επίδειξης.</translation>
-        </message>
-        <message>
-            <source>Wait until loading ends, save the window as a PNG image to &lt;file&gt; and exit (status 1 if a file could not be loaded).</source>
-            <translation>Αναμονή έως το τέλος της φόρτωσης, αποθήκευση του παραθύρου ως εικόνας PNG στο &lt;αρχείο&gt; και έξοδος (κωδικός 1 αν κάποιο αρχείο δεν φορτώθηκε).</translation>
-        </message>
-        <message>
-            <source>file</source>
-            <translation>αρχείο</translation>
-        </message>
-        <message>
-            <source>Point files to load (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ).</source>
-            <translation>Αρχεία σημείων προς φόρτωση (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ).</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::app::MainActions</name>
-        <message>
-            <source>&amp;File</source>
-            <translation>&amp;Αρχείο</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>&amp;Βοήθεια</translation>
-        </message>
-        <message>
-            <source>&amp;Open scans…</source>
-            <translation>Ά&amp;νοιγμα σαρώσεων…</translation>
-        </message>
-        <message>
-            <source>Load point files (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ) into the scene</source>
-            <translation>Φόρτωση αρχείων σημείων (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ) στη σκηνή</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>Έ&amp;ξοδος</translation>
-        </message>
-        <message>
-            <source>Open &amp;demo</source>
-            <translation>Άνοιγμα &amp;επίδειξης</translation>
-        </message>
-        <message>
-            <source>Replace the scene by the demo scene: a fluted drum, two fragments and an omphalos</source>
-            <translation>Αντικατάσταση της σκηνής από τη σκηνή επίδειξης: ένας ραβδωτός σπόνδυλος, δύο θραύσματα και ένας ομφαλός</translation>
-        </message>
-        <message>
-            <source>&amp;About Stylos</source>
-            <translation>&amp;Σχετικά με το Stylos</translation>
-        </message>
-        <message>
-            <source>Point files (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj)</source>
-            <translation>Αρχεία σημείων (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj)</translation>
-        </message>
-        <message>
-            <source>All files (*)</source>
-            <translation>Όλα τα αρχεία (*)</translation>
-        </message>
-        <message>
-            <source>Open scans</source>
-            <translation>Άνοιγμα σαρώσεων</translation>
-        </message>
-        <message>
-            <source>About Stylos</source>
-            <translation>Σχετικά με το Stylos</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;A workbench for very large 3D scans of monuments: column drums, capitals, fragments.&lt;/p&gt;&lt;p&gt;Point-based, after Duguet, Drettakis, Girardeau-Montaut, Martinez and Schneider (VAST 2004).&lt;/p&gt;</source>
-            <translation>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;Ένα εργαλείο για πολύ μεγάλες τρισδιάστατες σαρώσεις μνημείων: σπόνδυλοι κιόνων, κιονόκρανα, θραύσματα.&lt;/p&gt;&lt;p&gt;Βασισμένο σε σημεία, κατά τους Duguet, Drettakis, Girardeau-Montaut, Martinez και Schneider (VAST 2004).&lt;/p&gt;</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::app::MainWindow</name>
-        <message>
-            <source>Stylos</source>
-            <translation>Stylos</translation>
-        </message>
-        <message>
-            <source>Cancelled</source>
-            <translation>Ακυρώθηκε</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n file(s) in the scene</source>
-            <translation>
-                <numerusform>%n αρχείο στη σκηνή</numerusform>
-                <numerusform>%n αρχεία στη σκηνή</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n problem(s) while loading:</source>
-            <translation>
-                <numerusform>%n πρόβλημα κατά τη φόρτωση:</numerusform>
-                <numerusform>%n προβλήματα κατά τη φόρτωση:</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::DemoScene</name>
-        <message>
-            <source>Could not create the demo folder %1.</source>
-            <translation>Δεν ήταν δυνατή η δημιουργία του φακέλου επίδειξης %1.</translation>
-        </message>
-        <message>
-            <source>Generating the demo scene</source>
-            <translation>Δημιουργία της σκηνής επίδειξης</translation>
-        </message>
-        <message>
-            <source>Could not generate the demo scene: %1.</source>
-            <translation>Δεν ήταν δυνατή η δημιουργία της σκηνής επίδειξης: %1.</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::ErrorText</name>
-        <message>
-            <source>Could not load %1: %2.</source>
-            <translation>Δεν ήταν δυνατή η φόρτωση του %1: %2.</translation>
-        </message>
-        <message>
-            <source>the file does not exist</source>
-            <translation>το αρχείο δεν υπάρχει</translation>
-        </message>
-        <message>
-            <source>the file cannot be read</source>
-            <translation>το αρχείο δεν μπορεί να διαβαστεί</translation>
-        </message>
-        <message>
-            <source>the file format is not recognised</source>
-            <translation>η μορφή του αρχείου δεν αναγνωρίζεται</translation>
-        </message>
-        <message>
-            <source>this format is not supported</source>
-            <translation>αυτή η μορφή δεν υποστηρίζεται</translation>
-        </message>
-        <message>
-            <source>the file is malformed</source>
-            <translation>το αρχείο είναι κακοσχηματισμένο</translation>
-        </message>
-        <message>
-            <source>the file is truncated</source>
-            <translation>το αρχείο είναι περικομμένο</translation>
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation>το αρχείο είναι κενό</translation>
-        </message>
-        <message>
-            <source>the output could not be written</source>
-            <translation>η έξοδος δεν μπόρεσε να γραφτεί</translation>
-        </message>
-        <message>
-            <source>a parameter is out of range</source>
-            <translation>μια παράμετρος είναι εκτός ορίων</translation>
-        </message>
-        <message>
-            <source>not enough memory for this operation</source>
-            <translation>ανεπαρκής μνήμη για αυτή τη λειτουργία</translation>
-        </message>
-        <message>
-            <source>cancelled</source>
-            <translation>ακυρώθηκε</translation>
-        </message>
-        <message>
-            <source>unknown error</source>
-            <translation>άγνωστο σφάλμα</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneLoader</name>
-        <message numerus="yes">
-            <source>Loading %n file(s)</source>
-            <translation>
-                <numerusform>Φόρτωση %n αρχείου</numerusform>
-                <numerusform>Φόρτωση %n αρχείων</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneSummaryModel</name>
-        <message>
-            <source>min (%1, %2, %3)
-max (%4, %5, %6)</source>
-            <translation>ελάχ. (%1, %2, %3)
-μέγ. (%4, %5, %6)</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>κανένα</translation>
-        </message>
-        <message>
-            <source>File</source>
-            <translation>Αρχείο</translation>
-        </message>
-        <message>
-            <source>Format</source>
-            <translation>Μορφή</translation>
-        </message>
-        <message>
-            <source>Points</source>
-            <translation>Σημεία</translation>
-        </message>
-        <message>
-            <source>Skipped</source>
-            <translation>Παραλείφθηκαν</translation>
-        </message>
-        <message>
-            <source>Size (x × y × z)</source>
-            <translation>Διαστάσεις (x × y × z)</translation>
-        </message>
-        <message>
-            <source>Attributes</source>
-            <translation>Ιδιότητες</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneSummaryWidget</name>
-        <message>
-            <source>No scan loaded</source>
-            <translation>Δεν έχει φορτωθεί σάρωση</translation>
-        </message>
-        <message numerus="yes">
-            <source>Total: %1 points in %n file(s)</source>
-            <translation>
-                <numerusform>Σύνολο: %1 σημεία σε %n αρχείο</numerusform>
-                <numerusform>Σύνολο: %1 σημεία σε %n αρχεία</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::TaskStatusWidget</name>
-        <message>
-            <source>Cancel</source>
-            <translation>Ακύρωση</translation>
-        </message>
-        <message>
-            <source>Stop the running task</source>
-            <translation>Διακοπή της τρέχουσας εργασίας</translation>
-        </message>
-    </context>
+<context>
+    <name>stylos::app::CommandLine</name>
+    <message>
+        <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
+        <translation>Stylos, ένα εργαλείο για πολύ μεγάλες τρισδιάστατες σαρώσεις μνημείων. Χωρίς αρχείο, ανοίγει τη σκηνή επίδειξης.</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>αρχείο</translation>
+    </message>
+    <message>
+        <source>Wait until the scene and its tasks are ready and the view is refined, save the window as a PNG image to &lt;file&gt; and exit (status 1 if something failed).</source>
+        <translation>Αναμονή μέχρι να είναι έτοιμες η σκηνή και οι εργασίες της και να εκλεπτυνθεί η προβολή, αποθήκευση του παραθύρου ως εικόνας PNG στο &lt;αρχείο&gt; και έξοδος (κατάσταση εξόδου 1 αν κάτι απέτυχε).</translation>
+    </message>
+    <message>
+        <source>Orbit the camera for &lt;frames&gt; frames at 1280 × 800 once the scene is ready, print the frame times as JSON and exit.</source>
+        <translation>Περιστροφή της κάμερας σε τροχιά για &lt;καρέ&gt; καρέ σε 1280 × 800 μόλις η σκηνή είναι έτοιμη, εκτύπωση των χρόνων καρέ ως JSON και έξοδος.</translation>
+    </message>
+    <message>
+        <source>frames</source>
+        <translation>καρέ</translation>
+    </message>
+    <message>
+        <source>A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</source>
+        <translation>Ένα έργο (.stylos) ή σαρώσεις για εισαγωγή (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</translation>
+    </message>
+    <message>
+        <source>--orbit-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
+        <translation>--orbit-benchmark: το «%1» δεν είναι πλήθος καρέ (1 έως 100000)</translation>
+    </message>
+    <message>
+        <source>--orbit-benchmark needs exactly one file</source>
+        <translation>το --orbit-benchmark απαιτεί ακριβώς ένα αρχείο</translation>
+    </message>
+    <message>
+        <source>--grab and --orbit-benchmark do not go together</source>
+        <translation>τα --grab και --orbit-benchmark δεν μπορούν να συνδυαστούν</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DeveloppeeLink</name>
+    <message>
+        <source>Développée of %1 cancelled</source>
+        <translation>Το ανάπτυγμα του %1 ακυρώθηκε</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DisplaySettingsWidget</name>
+    <message>
+        <source>Headlight</source>
+        <translation>Φως κάμερας</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation>Θόλος ουρανού</translation>
+    </message>
+    <message>
+        <source>Scan colour</source>
+        <translation>Χρώμα σάρωσης</translation>
+    </message>
+    <message>
+        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight</source>
+        <translation>Ο θόλος ουρανού απαιτεί Εργαλεία › Υπολογισμός θόλου ουρανού· χωρίς αυτόν, το θραύσμα φωτίζεται από το φως της κάμερας</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> ×</translation>
+    </message>
+    <message>
+        <source> M points</source>
+        <translation> εκ. σημεία</translation>
+    </message>
+    <message>
+        <source>Points drawn at most; the view refines up to it when the camera stops</source>
+        <translation>Μέγιστο πλήθος σημείων που σχεδιάζονται· η προβολή εκλεπτύνεται έως αυτό όταν η κάμερα σταματά</translation>
+    </message>
+    <message>
+        <source>View-dependent</source>
+        <translation>Ανάλογα με την προβολή</translation>
+    </message>
+    <message>
+        <source>Global level</source>
+        <translation>Καθολικό επίπεδο</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Σκίαση</translation>
+    </message>
+    <message>
+        <source>Splat size</source>
+        <translation>Μέγεθος κηλίδων</translation>
+    </message>
+    <message>
+        <source>Point budget</source>
+        <translation>Όριο σημείων</translation>
+    </message>
+    <message>
+        <source>Level of detail</source>
+        <translation>Επίπεδο λεπτομέρειας</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Επίπεδο</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::LogDock</name>
+    <message>
+        <source>Log</source>
+        <translation>Καταγραφή</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::MainActions</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Βοήθεια</translation>
+    </message>
+    <message>
+        <source>Open &amp;demo</source>
+        <translation>Άνοιγμα &amp;επίδειξης</translation>
+    </message>
+    <message>
+        <source>&amp;About Stylos</source>
+        <translation>&amp;Σχετικά με το Stylos</translation>
+    </message>
+    <message>
+        <source>About Stylos</source>
+        <translation>Σχετικά με το Stylos</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;A workbench for very large 3D scans of monuments: column drums, capitals, fragments.&lt;/p&gt;&lt;p&gt;Point-based, after Duguet, Drettakis, Girardeau-Montaut, Martinez and Schneider (VAST 2004).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;Ένα εργαλείο για πολύ μεγάλες τρισδιάστατες σαρώσεις μνημείων: σπόνδυλοι κιόνων, κιονόκρανα, θραύσματα.&lt;/p&gt;&lt;p&gt;Βασισμένο σε σημεία, κατά τους Duguet, Drettakis, Girardeau-Montaut, Martinez και Schneider (VAST 2004).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Επεξεργασία</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>&amp;Προβολή</translation>
+    </message>
+    <message>
+        <source>Standard &amp;views</source>
+        <translation>&amp;Τυπικές όψεις</translation>
+    </message>
+    <message>
+        <source>&amp;Shading</source>
+        <translation>&amp;Σκίαση</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>Ε&amp;ργαλεία</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Γλώσσα</translation>
+    </message>
+    <message>
+        <source>Undo the last change to the scene</source>
+        <translation>Αναίρεση της τελευταίας αλλαγής στη σκηνή</translation>
+    </message>
+    <message>
+        <source>Redo the change undone last</source>
+        <translation>Επανάληψη της αλλαγής που αναιρέθηκε τελευταία</translation>
+    </message>
+    <message>
+        <source>&amp;Remove from the scene</source>
+        <translation>&amp;Αφαίρεση από τη σκηνή</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to the scene</source>
+        <translation>&amp;Προσαρμογή στη σκηνή</translation>
+    </message>
+    <message>
+        <source>Fit to the &amp;selection</source>
+        <translation>Προσαρμογή στην &amp;επιλογή</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Εμπρόσθια</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Οπίσθια</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Αριστερή</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Δεξιά</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Άνω</translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation>Κάτω</translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation>Ισομετρική</translation>
+    </message>
+    <message>
+        <source>&amp;Orthographic</source>
+        <translation>&amp;Ορθογραφική προβολή</translation>
+    </message>
+    <message>
+        <source>&amp;Headlight</source>
+        <translation>&amp;Φως κάμερας</translation>
+    </message>
+    <message>
+        <source>S&amp;kydome</source>
+        <translation>&amp;Θόλος ουρανού</translation>
+    </message>
+    <message>
+        <source>Scan &amp;colour</source>
+        <translation>&amp;Χρώμα σάρωσης</translation>
+    </message>
+    <message>
+        <source>Compute &amp;skydome</source>
+        <translation>&amp;Υπολογισμός θόλου ουρανού</translation>
+    </message>
+    <message>
+        <source>Compute the 3D skydome (ambient occlusion) of the selected fragments in the background; the view then shades them by it</source>
+        <translation>Υπολογισμός στο παρασκήνιο του τρισδιάστατου θόλου ουρανού (απόκρυψη περιβάλλοντος) των επιλεγμένων θραυσμάτων· η προβολή τα σκιάζει στη συνέχεια με βάση αυτόν</translation>
+    </message>
+    <message>
+        <source>&amp;Développée</source>
+        <translation>&amp;Ανάπτυγμα</translation>
+    </message>
+    <message>
+        <source>Unroll the selected fragment in the Développée dock</source>
+        <translation>Ξετύλιγμα του επιλεγμένου θραύσματος στο πλαίσιο Ανάπτυγμα</translation>
+    </message>
+    <message>
+        <source>Open the demo scene: a fluted drum, two of its fragments and an omphalos</source>
+        <translation>Άνοιγμα της σκηνής επίδειξης: ένας ραβδωτός σπόνδυλος, δύο θραύσματά του και ένας ομφαλός</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Γλώσσα συστήματος</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::MainWindow</name>
+    <message>
+        <source>Stylos</source>
+        <translation>Stylos</translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1 (%2)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n fragment(s)</source>
+        <translation>
+            <numerusform>Αφαίρεση %n θραύσματος</numerusform>
+            <numerusform>Αφαίρεση %n θραυσμάτων</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>Εισήχθη: %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n scan(s) could not be imported:</source>
+        <translation>
+            <numerusform>Δεν ήταν δυνατή η εισαγωγή %n σάρωσης:</numerusform>
+            <numerusform>Δεν ήταν δυνατή η εισαγωγή %n σαρώσεων:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Skydome of %1: %2 cells at level %3, %4 directions, %5 s</source>
+        <translation>Θόλος ουρανού του %1: %2 κελιά στο επίπεδο %3, %4 διευθύνσεις, %5 s</translation>
+    </message>
+    <message>
+        <source>The skydome of the selection is being computed already, or its octrees are not open yet</source>
+        <translation>Ο θόλος ουρανού της επιλογής υπολογίζεται ήδη ή τα οκταδικά δέντρα της δεν έχουν ανοίξει ακόμη</translation>
+    </message>
+    <message>
+        <source>%1[*] — Stylos</source>
+        <translation>%1[*] — Stylos</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Αρχείο</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Κύρια γραμμή εργαλείων</translation>
+    </message>
+    <message>
+        <source>Tasks</source>
+        <translation>Εργασίες</translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <translation>Ανάπτυγμα</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
+        <translation>Η τρισδιάστατη προβολή απαιτεί OpenGL 3.3 (core profile), το οποίο δεν παρέχει αυτή η οθόνη.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::ProjectActions</name>
+    <message>
+        <source>&amp;New project</source>
+        <translation>&amp;Νέο έργο</translation>
+    </message>
+    <message>
+        <source>&amp;Open project…</source>
+        <translation>&amp;Άνοιγμα έργου…</translation>
+    </message>
+    <message>
+        <source>Open a Stylos project (.stylos)</source>
+        <translation>Άνοιγμα έργου Stylos (.stylos)</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Άνοιγμα &amp;πρόσφατου</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>Απο&amp;θήκευση έργου</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation>Αποθήκευση έργου &amp;ως…</translation>
+    </message>
+    <message>
+        <source>&amp;Import scans…</source>
+        <translation>&amp;Εισαγωγή σαρώσεων…</translation>
+    </message>
+    <message>
+        <source>Build a packed octree of each scan in the background and add it to the scene</source>
+        <translation>Δημιουργία στο παρασκήνιο ενός συμπαγούς οκταδικού δέντρου για κάθε σάρωση και προσθήκη του στη σκηνή</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>Έ&amp;ξοδος</translation>
+    </message>
+    <message>
+        <source>%1: a project opens alone, not with other files</source>
+        <translation>%1: ένα έργο ανοίγει μόνο του, όχι μαζί με άλλα αρχεία</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Άνοιξε το έργο %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Αποθηκεύτηκε το έργο %1</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Αποθήκευση έργου</translation>
+    </message>
+    <message>
+        <source>Stylos projects (*.stylos)</source>
+        <translation>Έργα Stylos (*.stylos)</translation>
+    </message>
+    <message>
+        <source>Stylos</source>
+        <translation>Stylos</translation>
+    </message>
+    <message>
+        <source>The project %1 has unsaved changes.</source>
+        <translation>Το έργο %1 έχει μη αποθηκευμένες αλλαγές.</translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>Άνοιγμα έργου</translation>
+    </message>
+    <message>
+        <source>Import scans</source>
+        <translation>Εισαγωγή σαρώσεων</translation>
+    </message>
+    <message>
+        <source>No recent project</source>
+        <translation>Κανένα πρόσφατο έργο</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Εκκαθάριση λίστας</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::PropertiesDock</name>
+    <message>
+        <source>Properties</source>
+        <translation>Ιδιότητες</translation>
+    </message>
+    <message>
+        <source>Fragment</source>
+        <translation>Θραύσμα</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Εμφάνιση</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::SceneDock</name>
+    <message>
+        <source>Scene</source>
+        <translation>Σκηνή</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::StatusReadout</name>
+    <message>
+        <source>x %1  y %2  z %3 m</source>
+        <translation>x %1  y %2  z %3 m</translation>
+    </message>
+    <message>
+        <source>%1 fps · %2 ms · %3 M points</source>
+        <translation>%1 fps · %2 ms · %3 εκ. σημεία</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AddFragmentCommand</name>
+    <message>
+        <source>Add %1</source>
+        <translation>Προσθήκη %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DemoScene</name>
+    <message>
+        <source>Could not create the demo folder %1.</source>
+        <translation>Δεν ήταν δυνατή η δημιουργία του φακέλου επίδειξης %1.</translation>
+    </message>
+    <message>
+        <source>Drum</source>
+        <translation>Σπόνδυλος</translation>
+    </message>
+    <message>
+        <source>Fragment A</source>
+        <translation>Θραύσμα Α</translation>
+    </message>
+    <message>
+        <source>Fragment B</source>
+        <translation>Θραύσμα Β</translation>
+    </message>
+    <message>
+        <source>Omphalos</source>
+        <translation>Ομφαλός</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Άξονας</translation>
+    </message>
+    <message>
+        <source>Preparing the demo scene</source>
+        <translation>Προετοιμασία της σκηνής επίδειξης</translation>
+    </message>
+    <message>
+        <source>Could not prepare the demo scene: %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η προετοιμασία της σκηνής επίδειξης: %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeDock</name>
+    <message>
+        <source>%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s</source>
+        <translation>%1: %2, ακτίνα %3 mm, RMS %4 mm, %5 % σημεία εντός ανοχής· %6 × %7 εικονοστοιχεία των %8 mm· %9 s</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>Επιφάνεια</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Σκίαση</translation>
+    </message>
+    <message>
+        <source>Directions</source>
+        <translation>Διευθύνσεις</translation>
+    </message>
+    <message>
+        <source>Pixel</source>
+        <translation>Εικονοστοιχείο</translation>
+    </message>
+    <message>
+        <source>The surface the développée is unrolled from</source>
+        <translation>Η επιφάνεια από την οποία ξετυλίγεται το ανάπτυγμα</translation>
+    </message>
+    <message>
+        <source>How the heights become grey: the sky each point sees, one light, or height</source>
+        <translation>Πώς τα ύψη γίνονται τόνοι του γκρι: ο ουρανός που βλέπει κάθε σημείο, ένα φως ή το ύψος</translation>
+    </message>
+    <message>
+        <source>Skydome: azimuths of the horizon search (more is smoother and slower)</source>
+        <translation>Θόλος ουρανού: αζιμούθια της αναζήτησης ορίζοντα (περισσότερα δίνουν ομαλότερο αλλά πιο αργό αποτέλεσμα)</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Αυτόματο</translation>
+    </message>
+    <message>
+        <source>Side of a pixel; Automatic uses the octree&apos;s leaf size</source>
+        <translation>Πλευρά ενός εικονοστοιχείου· το Αυτόματο χρησιμοποιεί το μέγεθος φύλλου του οκταδικού δέντρου</translation>
+    </message>
+    <message>
+        <source>Use the axis guide</source>
+        <translation>Χρήση του οδηγού άξονα</translation>
+    </message>
+    <message>
+        <source>Fit only the radius about the fragment&apos;s axis guide (needed for a fragment)</source>
+        <translation>Προσαρμογή μόνο της ακτίνας γύρω από τον οδηγό άξονα του θραύσματος (απαραίτητο για θραύσμα)</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Προσαρμογή</translation>
+    </message>
+    <message>
+        <source>Fit the développée to the view (F)</source>
+        <translation>Προσαρμογή του αναπτύγματος στην προβολή (F)</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>Υπολογισμός</translation>
+    </message>
+    <message>
+        <source>Compute the développée of the selected fragment in the background</source>
+        <translation>Υπολογισμός στο παρασκήνιο του αναπτύγματος του επιλεγμένου θραύσματος</translation>
+    </message>
+    <message>
+        <source>No développée yet: select a fragment and press Compute.</source>
+        <translation>Δεν υπάρχει ακόμη ανάπτυγμα: επιλέξτε ένα θραύσμα και πατήστε Υπολογισμός.</translation>
+    </message>
+    <message>
+        <source>Computing the développée of %1…</source>
+        <translation>Υπολογισμός του αναπτύγματος του %1…</translation>
+    </message>
+    <message>
+        <source>Select a fragment to compute its développée.</source>
+        <translation>Επιλέξτε ένα θραύσμα για να υπολογίσετε το ανάπτυγμά του.</translation>
+    </message>
+    <message>
+        <source>Press Compute for the développée of %1.</source>
+        <translation>Πατήστε Υπολογισμός για το ανάπτυγμα του %1.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation>Ανάπτυγμα του %1</translation>
+    </message>
+    <message>
+        <source>Could not compute the développée of %1: %2.</source>
+        <translation>Δεν ήταν δυνατός ο υπολογισμός του αναπτύγματος του %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeSettings</name>
+    <message>
+        <source>the number of directions must be between %1 and %2</source>
+        <translation>το πλήθος των διευθύνσεων πρέπει να είναι μεταξύ %1 και %2</translation>
+    </message>
+    <message>
+        <source>the pixel size must be a positive length, or 0 for automatic</source>
+        <translation>το μέγεθος εικονοστοιχείου πρέπει να είναι θετικό μήκος ή 0 για αυτόματο</translation>
+    </message>
+    <message>
+        <source>the light elevation must be between 0° and 90°</source>
+        <translation>η γωνία ύψους του φωτός πρέπει να είναι μεταξύ 0° και 90°</translation>
+    </message>
+    <message>
+        <source>the axis needs a finite point and a non-zero direction</source>
+        <translation>ο άξονας χρειάζεται ένα πεπερασμένο σημείο και μια μη μηδενική διεύθυνση</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Κύλινδρος</translation>
+    </message>
+    <message>
+        <source>Cone</source>
+        <translation>Κώνος</translation>
+    </message>
+    <message>
+        <source>Surface of revolution</source>
+        <translation>Επιφάνεια εκ περιστροφής</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Ύψος</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Φως</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation>Θόλος ουρανού</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeView</name>
+    <message>
+        <source>No développée yet: select a fragment and press Compute.</source>
+        <translation>Δεν υπάρχει ακόμη ανάπτυγμα: επιλέξτε ένα θραύσμα και πατήστε Υπολογισμός.</translation>
+    </message>
+    <message>
+        <source>u %1 mm   v %2 mm   (no data)</source>
+        <translation>u %1 mm   v %2 mm   (χωρίς δεδομένα)</translation>
+    </message>
+    <message>
+        <source>u %1 mm   v %2 mm   h %3 mm</source>
+        <translation>u %1 mm   v %2 mm   h %3 mm</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ErrorText</name>
+    <message>
+        <source>Could not load %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η φόρτωση του %1: %2.</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>το αρχείο δεν υπάρχει</translation>
+    </message>
+    <message>
+        <source>the file cannot be read</source>
+        <translation>το αρχείο δεν μπορεί να διαβαστεί</translation>
+    </message>
+    <message>
+        <source>the file format is not recognised</source>
+        <translation>η μορφή του αρχείου δεν αναγνωρίζεται</translation>
+    </message>
+    <message>
+        <source>this format is not supported</source>
+        <translation>αυτή η μορφή δεν υποστηρίζεται</translation>
+    </message>
+    <message>
+        <source>the file is malformed</source>
+        <translation>το αρχείο είναι κακοσχηματισμένο</translation>
+    </message>
+    <message>
+        <source>the file is truncated</source>
+        <translation>το αρχείο είναι περικομμένο</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>το αρχείο είναι κενό</translation>
+    </message>
+    <message>
+        <source>the output could not be written</source>
+        <translation>η έξοδος δεν μπόρεσε να γραφτεί</translation>
+    </message>
+    <message>
+        <source>a parameter is out of range</source>
+        <translation>μια παράμετρος είναι εκτός ορίων</translation>
+    </message>
+    <message>
+        <source>not enough memory for this operation</source>
+        <translation>ανεπαρκής μνήμη για αυτή τη λειτουργία</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>ακυρώθηκε</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>άγνωστο σφάλμα</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::FragmentPropertiesWidget</name>
+    <message>
+        <source>Name</source>
+        <translation>Όνομα</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Ορατό</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Χρώμα</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>Rotation X</source>
+        <translation>Περιστροφή X</translation>
+    </message>
+    <message>
+        <source>Rotation Y</source>
+        <translation>Περιστροφή Y</translation>
+    </message>
+    <message>
+        <source>Rotation Z</source>
+        <translation>Περιστροφή Z</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Σημεία</translation>
+    </message>
+    <message>
+        <source>Leaf cells</source>
+        <translation>Κελιά-φύλλα</translation>
+    </message>
+    <message>
+        <source>Total cells</source>
+        <translation>Σύνολο κελιών</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Βάθος</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Αρχείο</translation>
+    </message>
+    <message>
+        <source>Shown in the 3D view</source>
+        <translation>Εμφανίζεται στην τρισδιάστατη προβολή</translation>
+    </message>
+    <message>
+        <source>Choose the fragment&apos;s display colour</source>
+        <translation>Επιλογή του χρώματος εμφάνισης του θραύσματος</translation>
+    </message>
+    <message>
+        <source>Translation along the scene&apos;s x axis, in metres</source>
+        <translation>Μετατόπιση κατά μήκος του άξονα x της σκηνής, σε μέτρα</translation>
+    </message>
+    <message>
+        <source>Rotation about the x axis, applied first, in degrees</source>
+        <translation>Περιστροφή γύρω από τον άξονα x, εφαρμόζεται πρώτη, σε μοίρες</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>δεν βρέθηκε</translation>
+    </message>
+    <message>
+        <source>opening…</source>
+        <translation>άνοιγμα…</translation>
+    </message>
+    <message>
+        <source>Fragment colour</source>
+        <translation>Χρώμα θραύσματος</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::RemoveFragmentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Αφαίρεση %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::RenameFragmentCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>Μετονομασία %1 σε %2</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ScanImporter</name>
+    <message>
+        <source>Scans and octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</source>
+        <translation>Σαρώσεις και οκταδικά δέντρα (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</translation>
+    </message>
+    <message>
+        <source>Packed octrees (*.poct)</source>
+        <translation>Συμπαγή οκταδικά δέντρα (*.poct)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Όλα τα αρχεία (*)</translation>
+    </message>
+    <message>
+        <source>Could not import %1: the folder %2 cannot be created.</source>
+        <translation>Δεν ήταν δυνατή η εισαγωγή του %1: ο φάκελος %2 δεν μπορεί να δημιουργηθεί.</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Εισαγωγή του %1</translation>
+    </message>
+    <message>
+        <source>Could not import %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η εισαγωγή του %1: %2.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Εισαγωγή %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SceneDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Χωρίς τίτλο</translation>
+    </message>
+    <message>
+        <source>The project has no file yet: choose one with Save as.</source>
+        <translation>Το έργο δεν έχει ακόμη αρχείο: επιλέξτε ένα με την Αποθήκευση ως.</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η αποθήκευση του %1: %2.</translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation>Άνοιγμα του %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SceneTreeModel</name>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (δεν βρέθηκε)</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Άξονας</translation>
+    </message>
+    <message>
+        <source>Groove</source>
+        <translation>Ράβδωση</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Σκηνή</translation>
+    </message>
+    <message>
+        <source>Développée (%1, %2 × %3)</source>
+        <translation>Ανάπτυγμα (%1, %2 × %3)</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentColourCommand</name>
+    <message>
+        <source>Change the colour of %1</source>
+        <translation>Αλλαγή χρώματος %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentPoseCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation>Μετακίνηση %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentVisibleCommand</name>
+    <message>
+        <source>Show %1</source>
+        <translation>Εμφάνιση %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Απόκρυψη %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SkydomeJob</name>
+    <message>
+        <source>Skydome of %1</source>
+        <translation>Θόλος ουρανού του %1</translation>
+    </message>
+    <message>
+        <source>Could not compute the skydome of %1: %2.</source>
+        <translation>Δεν ήταν δυνατός ο υπολογισμός του θόλου ουρανού του %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::TaskListWidget</name>
+    <message>
+        <source>No background tasks</source>
+        <translation>Καμία εργασία στο παρασκήνιο</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Ακύρωση</translation>
+    </message>
+    <message>
+        <source>Stop this task</source>
+        <translation>Διακοπή αυτής της εργασίας</translation>
+    </message>
+    <message>
+        <source>Waiting…</source>
+        <translation>Σε αναμονή…</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ViewportWidget</name>
+    <message>
+        <source>The 3D view needs OpenGL 3.3: %1</source>
+        <translation>Η τρισδιάστατη προβολή απαιτεί OpenGL 3.3: %1</translation>
+    </message>
+</context>
 </TS>

@@ -1,244 +1,925 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
-    <context>
-        <name>stylos::app::CommandLine</name>
-        <message>
-            <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Wait until loading ends, save the window as a PNG image to &lt;file&gt; and exit (status 1 if a file could not be loaded).</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>file</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Point files to load (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ).</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>stylos::app::MainActions</name>
-        <message>
-            <source>&amp;File</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>&amp;Open scans…</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Load point files (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ) into the scene</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Open &amp;demo</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Replace the scene by the demo scene: a fluted drum, two fragments and an omphalos</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>&amp;About Stylos</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Point files (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>All files (*)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Open scans</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>About Stylos</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;A workbench for very large 3D scans of monuments: column drums, capitals, fragments.&lt;/p&gt;&lt;p&gt;Point-based, after Duguet, Drettakis, Girardeau-Montaut, Martinez and Schneider (VAST 2004).&lt;/p&gt;</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>stylos::app::MainWindow</name>
-        <message>
-            <source>Stylos</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Cancelled</source>
-            <translation type="unfinished" />
-        </message>
-        <message numerus="yes">
-            <source>%n file(s) in the scene</source>
-            <translation>
-                <numerusform>%n file in the scene</numerusform>
-                <numerusform>%n files in the scene</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n problem(s) while loading:</source>
-            <translation>
-                <numerusform>%n problem while loading:</numerusform>
-                <numerusform>%n problems while loading:</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::DemoScene</name>
-        <message>
-            <source>Could not create the demo folder %1.</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Generating the demo scene</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Could not generate the demo scene: %1.</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::ErrorText</name>
-        <message>
-            <source>Could not load %1: %2.</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the file does not exist</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the file cannot be read</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the file format is not recognised</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>this format is not supported</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the file is malformed</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the file is truncated</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>the output could not be written</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>a parameter is out of range</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>not enough memory for this operation</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>cancelled</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>unknown error</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneLoader</name>
-        <message numerus="yes">
-            <source>Loading %n file(s)</source>
-            <translation>
-                <numerusform>Loading %n file</numerusform>
-                <numerusform>Loading %n files</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneSummaryModel</name>
-        <message>
-            <source>min (%1, %2, %3)
-max (%4, %5, %6)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>none</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>File</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Format</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Points</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Skipped</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Size (x × y × z)</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Attributes</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneSummaryWidget</name>
-        <message>
-            <source>No scan loaded</source>
-            <translation type="unfinished" />
-        </message>
-        <message numerus="yes">
-            <source>Total: %1 points in %n file(s)</source>
-            <translation>
-                <numerusform>Total: %1 points in %n file</numerusform>
-                <numerusform>Total: %1 points in %n files</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::TaskStatusWidget</name>
-        <message>
-            <source>Cancel</source>
-            <translation type="unfinished" />
-        </message>
-        <message>
-            <source>Stop the running task</source>
-            <translation type="unfinished" />
-        </message>
-    </context>
+<context>
+    <name>stylos::app::CommandLine</name>
+    <message>
+        <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wait until the scene and its tasks are ready and the view is refined, save the window as a PNG image to &lt;file&gt; and exit (status 1 if something failed).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Orbit the camera for &lt;frames&gt; frames at 1280 × 800 once the scene is ready, print the frame times as JSON and exit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>frames</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--orbit-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--orbit-benchmark needs exactly one file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--grab and --orbit-benchmark do not go together</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DeveloppeeLink</name>
+    <message>
+        <source>Développée of %1 cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DisplaySettingsWidget</name>
+    <message>
+        <source>Headlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scan colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> M points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Points drawn at most; the view refines up to it when the camera stops</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>View-dependent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Global level</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Splat size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point budget</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Level of detail</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::LogDock</name>
+    <message>
+        <source>Log</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::MainActions</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;demo</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;About Stylos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About Stylos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;A workbench for very large 3D scans of monuments: column drums, capitals, fragments.&lt;/p&gt;&lt;p&gt;Point-based, after Duguet, Drettakis, Girardeau-Montaut, Martinez and Schneider (VAST 2004).&lt;/p&gt;</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Standard &amp;views</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Shading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Undo the last change to the scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo the change undone last</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove from the scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Fit to the scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit to the &amp;selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Orthographic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Headlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>S&amp;kydome</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scan &amp;colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute &amp;skydome</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute the 3D skydome (ambient occlusion) of the selected fragments in the background; the view then shades them by it</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Développée</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unroll the selected fragment in the Développée dock</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open the demo scene: a fluted drum, two of its fragments and an omphalos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::MainWindow</name>
+    <message>
+        <source>Stylos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n fragment(s)</source>
+        <translation>
+            <numerusform>Remove %n fragment</numerusform>
+            <numerusform>Remove %n fragments</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%n scan(s) could not be imported:</source>
+        <translation>
+            <numerusform>%n scan could not be imported:</numerusform>
+            <numerusform>%n scans could not be imported:</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Skydome of %1: %2 cells at level %3, %4 directions, %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The skydome of the selection is being computed already, or its octrees are not open yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1[*] — Stylos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tasks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::ProjectActions</name>
+    <message>
+        <source>&amp;New project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Open project…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open a Stylos project (.stylos)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Import scans…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Build a packed octree of each scan in the background and add it to the scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1: a project opens alone, not with other files</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stylos projects (*.stylos)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stylos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project %1 has unsaved changes.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import scans</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No recent project</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::PropertiesDock</name>
+    <message>
+        <source>Properties</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fragment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::SceneDock</name>
+    <message>
+        <source>Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::StatusReadout</name>
+    <message>
+        <source>x %1  y %2  z %3 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 fps · %2 ms · %3 M points</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AddFragmentCommand</name>
+    <message>
+        <source>Add %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DemoScene</name>
+    <message>
+        <source>Could not create the demo folder %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Drum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fragment A</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fragment B</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Omphalos</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Preparing the demo scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not prepare the demo scene: %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeDock</name>
+    <message>
+        <source>%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Directions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Pixel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The surface the développée is unrolled from</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the heights become grey: the sky each point sees, one light, or height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome: azimuths of the horizon search (more is smoother and slower)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Side of a pixel; Automatic uses the octree&apos;s leaf size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use the axis guide</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit only the radius about the fragment&apos;s axis guide (needed for a fragment)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit the développée to the view (F)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Compute the développée of the selected fragment in the background</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No développée yet: select a fragment and press Compute.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Computing the développée of %1…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Select a fragment to compute its développée.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Press Compute for the développée of %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not compute the développée of %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeSettings</name>
+    <message>
+        <source>the number of directions must be between %1 and %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the pixel size must be a positive length, or 0 for automatic</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the light elevation must be between 0° and 90°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the axis needs a finite point and a non-zero direction</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Surface of revolution</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeView</name>
+    <message>
+        <source>No développée yet: select a fragment and press Compute.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>u %1 mm   v %2 mm   (no data)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>u %1 mm   v %2 mm   h %3 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ErrorText</name>
+    <message>
+        <source>Could not load %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file cannot be read</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file format is not recognised</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>this format is not supported</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is malformed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is truncated</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the output could not be written</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a parameter is out of range</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not enough memory for this operation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::FragmentPropertiesWidget</name>
+    <message>
+        <source>Name</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotation X</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotation Y</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotation Z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leaf cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Total cells</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Shown in the 3D view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Choose the fragment&apos;s display colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Translation along the scene&apos;s x axis, in metres</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rotation about the x axis, applied first, in degrees</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>opening…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fragment colour</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::RemoveFragmentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::RenameFragmentCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ScanImporter</name>
+    <message>
+        <source>Scans and octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Packed octrees (*.poct)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not import %1: the folder %2 cannot be created.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not import %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SceneDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The project has no file yet: choose one with Save as.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SceneTreeModel</name>
+    <message>
+        <source>%1 (missing)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Groove</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Développée (%1, %2 × %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentColourCommand</name>
+    <message>
+        <source>Change the colour of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentPoseCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentVisibleCommand</name>
+    <message>
+        <source>Show %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SkydomeJob</name>
+    <message>
+        <source>Skydome of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not compute the skydome of %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::TaskListWidget</name>
+    <message>
+        <source>No background tasks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stop this task</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Waiting…</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ViewportWidget</name>
+    <message>
+        <source>The 3D view needs OpenGL 3.3: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
 </TS>

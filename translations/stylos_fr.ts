@@ -1,245 +1,925 @@
 <?xml version="1.0" encoding="utf-8"?>
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
-    <context>
-        <name>stylos::app::CommandLine</name>
-        <message>
-            <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
-            <translation>Stylos, un atelier pour les très grands relevés 3D de monuments. Sans fichier, ouvre la scène de démonstration.</translation>
-        </message>
-        <message>
-            <source>Wait until loading ends, save the window as a PNG image to &lt;file&gt; and exit (status 1 if a file could not be loaded).</source>
-            <translation>Attendre la fin du chargement, enregistrer la fenêtre en image PNG dans &lt;fichier&gt; et quitter (code 1 si un fichier n’a pas pu être chargé).</translation>
-        </message>
-        <message>
-            <source>file</source>
-            <translation>fichier</translation>
-        </message>
-        <message>
-            <source>Point files to load (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ).</source>
-            <translation>Fichiers de points à charger (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ).</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::app::MainActions</name>
-        <message>
-            <source>&amp;File</source>
-            <translation>&amp;Fichier</translation>
-        </message>
-        <message>
-            <source>&amp;Help</source>
-            <translation>&amp;Aide</translation>
-        </message>
-        <message>
-            <source>&amp;Open scans…</source>
-            <translation>&amp;Ouvrir des relevés…</translation>
-        </message>
-        <message>
-            <source>Load point files (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ) into the scene</source>
-            <translation>Charger des fichiers de points (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ) dans la scène</translation>
-        </message>
-        <message>
-            <source>&amp;Quit</source>
-            <translation>&amp;Quitter</translation>
-        </message>
-        <message>
-            <source>Open &amp;demo</source>
-            <translation>Ouvrir la &amp;démonstration</translation>
-        </message>
-        <message>
-            <source>Replace the scene by the demo scene: a fluted drum, two fragments and an omphalos</source>
-            <translation>Remplacer la scène par la scène de démonstration : un tambour cannelé, deux fragments et un omphalos</translation>
-        </message>
-        <message>
-            <source>&amp;About Stylos</source>
-            <translation>À &amp;propos de Stylos</translation>
-        </message>
-        <message>
-            <source>Point files (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj)</source>
-            <translation>Fichiers de points (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj)</translation>
-        </message>
-        <message>
-            <source>All files (*)</source>
-            <translation>Tous les fichiers (*)</translation>
-        </message>
-        <message>
-            <source>Open scans</source>
-            <translation>Ouvrir des relevés</translation>
-        </message>
-        <message>
-            <source>About Stylos</source>
-            <translation>À propos de Stylos</translation>
-        </message>
-        <message>
-            <source>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;A workbench for very large 3D scans of monuments: column drums, capitals, fragments.&lt;/p&gt;&lt;p&gt;Point-based, after Duguet, Drettakis, Girardeau-Montaut, Martinez and Schneider (VAST 2004).&lt;/p&gt;</source>
-            <translation>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;Un atelier pour les très grands relevés 3D de monuments : tambours de colonne, chapiteaux, fragments.&lt;/p&gt;&lt;p&gt;Fondé sur les points, d’après Duguet, Drettakis, Girardeau-Montaut, Martinez et Schneider (VAST 2004).&lt;/p&gt;</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::app::MainWindow</name>
-        <message>
-            <source>Stylos</source>
-            <translation>Stylos</translation>
-        </message>
-        <message>
-            <source>Cancelled</source>
-            <translation>Annulé</translation>
-        </message>
-        <message numerus="yes">
-            <source>%n file(s) in the scene</source>
-            <translation>
-                <numerusform>%n fichier dans la scène</numerusform>
-                <numerusform>%n fichiers dans la scène</numerusform>
-            </translation>
-        </message>
-        <message numerus="yes">
-            <source>%n problem(s) while loading:</source>
-            <translation>
-                <numerusform>%n problème lors du chargement :</numerusform>
-                <numerusform>%n problèmes lors du chargement :</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::DemoScene</name>
-        <message>
-            <source>Could not create the demo folder %1.</source>
-            <translation>Impossible de créer le dossier de démonstration %1.</translation>
-        </message>
-        <message>
-            <source>Generating the demo scene</source>
-            <translation>Génération de la scène de démonstration</translation>
-        </message>
-        <message>
-            <source>Could not generate the demo scene: %1.</source>
-            <translation>Impossible de générer la scène de démonstration : %1.</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::ErrorText</name>
-        <message>
-            <source>Could not load %1: %2.</source>
-            <translation>Impossible de charger %1 : %2.</translation>
-        </message>
-        <message>
-            <source>the file does not exist</source>
-            <translation>le fichier n’existe pas</translation>
-        </message>
-        <message>
-            <source>the file cannot be read</source>
-            <translation>le fichier ne peut pas être lu</translation>
-        </message>
-        <message>
-            <source>the file format is not recognised</source>
-            <translation>le format du fichier n’est pas reconnu</translation>
-        </message>
-        <message>
-            <source>this format is not supported</source>
-            <translation>ce format n’est pas pris en charge</translation>
-        </message>
-        <message>
-            <source>the file is malformed</source>
-            <translation>le fichier est mal formé</translation>
-        </message>
-        <message>
-            <source>the file is truncated</source>
-            <translation>le fichier est tronqué</translation>
-        </message>
-        <message>
-            <source>the file is empty</source>
-            <translation>le fichier est vide</translation>
-        </message>
-        <message>
-            <source>the output could not be written</source>
-            <translation>la sortie n’a pas pu être écrite</translation>
-        </message>
-        <message>
-            <source>a parameter is out of range</source>
-            <translation>un paramètre est hors limites</translation>
-        </message>
-        <message>
-            <source>not enough memory for this operation</source>
-            <translation>mémoire insuffisante pour cette opération</translation>
-        </message>
-        <message>
-            <source>cancelled</source>
-            <translation>annulé</translation>
-        </message>
-        <message>
-            <source>unknown error</source>
-            <translation>erreur inconnue</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneLoader</name>
-        <message numerus="yes">
-            <source>Loading %n file(s)</source>
-            <translation>
-                <numerusform>Chargement de %n fichier</numerusform>
-                <numerusform>Chargement de %n fichiers</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneSummaryModel</name>
-        <message>
-            <source>min (%1, %2, %3)
-max (%4, %5, %6)</source>
-            <translation>min (%1 ; %2 ; %3)
-max (%4 ; %5 ; %6)</translation>
-        </message>
-        <message>
-            <source>none</source>
-            <translation>aucun</translation>
-        </message>
-        <message>
-            <source>File</source>
-            <translation>Fichier</translation>
-        </message>
-        <message>
-            <source>Format</source>
-            <translation>Format</translation>
-        </message>
-        <message>
-            <source>Points</source>
-            <translation>Points</translation>
-        </message>
-        <message>
-            <source>Skipped</source>
-            <translation>Ignorés</translation>
-        </message>
-        <message>
-            <source>Size (x × y × z)</source>
-            <translation>Dimensions (x × y × z)</translation>
-        </message>
-        <message>
-            <source>Attributes</source>
-            <translation>Attributs</translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::SceneSummaryWidget</name>
-        <message>
-            <source>No scan loaded</source>
-            <translation>Aucun relevé chargé</translation>
-        </message>
-        <message numerus="yes">
-            <source>Total: %1 points in %n file(s)</source>
-            <translation>
-                <numerusform>Total : %1 points dans %n fichier</numerusform>
-                <numerusform>Total : %1 points dans %n fichiers</numerusform>
-            </translation>
-        </message>
-    </context>
-    <context>
-        <name>stylos::widgets::TaskStatusWidget</name>
-        <message>
-            <source>Cancel</source>
-            <translation>Annuler</translation>
-        </message>
-        <message>
-            <source>Stop the running task</source>
-            <translation>Arrêter la tâche en cours</translation>
-        </message>
-    </context>
+<context>
+    <name>stylos::app::CommandLine</name>
+    <message>
+        <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
+        <translation>Stylos, un atelier pour les très grands relevés 3D de monuments. Sans fichier, ouvre la scène de démonstration.</translation>
+    </message>
+    <message>
+        <source>file</source>
+        <translation>fichier</translation>
+    </message>
+    <message>
+        <source>Wait until the scene and its tasks are ready and the view is refined, save the window as a PNG image to &lt;file&gt; and exit (status 1 if something failed).</source>
+        <translation>Attendre que la scène et ses tâches soient prêtes et que la vue soit affinée, enregistrer la fenêtre en image PNG dans &lt;fichier&gt; et quitter (code de sortie 1 en cas d’échec).</translation>
+    </message>
+    <message>
+        <source>Orbit the camera for &lt;frames&gt; frames at 1280 × 800 once the scene is ready, print the frame times as JSON and exit.</source>
+        <translation>Faire orbiter la caméra pendant &lt;images&gt; images en 1280 × 800 une fois la scène prête, afficher les temps d’image en JSON et quitter.</translation>
+    </message>
+    <message>
+        <source>frames</source>
+        <translation>images</translation>
+    </message>
+    <message>
+        <source>A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</source>
+        <translation>Un projet (.stylos), ou des relevés à importer (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</translation>
+    </message>
+    <message>
+        <source>--orbit-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
+        <translation>--orbit-benchmark : « %1 » n’est pas un nombre d’images (de 1 à 100000)</translation>
+    </message>
+    <message>
+        <source>--orbit-benchmark needs exactly one file</source>
+        <translation>--orbit-benchmark demande exactement un fichier</translation>
+    </message>
+    <message>
+        <source>--grab and --orbit-benchmark do not go together</source>
+        <translation>--grab et --orbit-benchmark ne peuvent pas être combinés</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DeveloppeeLink</name>
+    <message>
+        <source>Développée of %1 cancelled</source>
+        <translation>Développée de %1 annulée</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DisplaySettingsWidget</name>
+    <message>
+        <source>Headlight</source>
+        <translation>Éclairage frontal</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation>Skydome</translation>
+    </message>
+    <message>
+        <source>Scan colour</source>
+        <translation>Couleur du relevé</translation>
+    </message>
+    <message>
+        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight</source>
+        <translation>Le skydome nécessite Outils › Calculer le skydome ; sans lui, le fragment reçoit l’éclairage frontal</translation>
+    </message>
+    <message>
+        <source> ×</source>
+        <translation> ×</translation>
+    </message>
+    <message>
+        <source> M points</source>
+        <translation> M points</translation>
+    </message>
+    <message>
+        <source>Points drawn at most; the view refines up to it when the camera stops</source>
+        <translation>Nombre maximal de points dessinés ; la vue s’affine jusqu’à ce nombre quand la caméra s’arrête</translation>
+    </message>
+    <message>
+        <source>View-dependent</source>
+        <translation>Selon la vue</translation>
+    </message>
+    <message>
+        <source>Global level</source>
+        <translation>Niveau global</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Ombrage</translation>
+    </message>
+    <message>
+        <source>Splat size</source>
+        <translation>Taille des splats</translation>
+    </message>
+    <message>
+        <source>Point budget</source>
+        <translation>Budget de points</translation>
+    </message>
+    <message>
+        <source>Level of detail</source>
+        <translation>Niveau de détail</translation>
+    </message>
+    <message>
+        <source>Level</source>
+        <translation>Niveau</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::LogDock</name>
+    <message>
+        <source>Log</source>
+        <translation>Journal</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::MainActions</name>
+    <message>
+        <source>&amp;Help</source>
+        <translation>&amp;Aide</translation>
+    </message>
+    <message>
+        <source>Open &amp;demo</source>
+        <translation>Ouvrir la &amp;démonstration</translation>
+    </message>
+    <message>
+        <source>&amp;About Stylos</source>
+        <translation>À &amp;propos de Stylos</translation>
+    </message>
+    <message>
+        <source>About Stylos</source>
+        <translation>À propos de Stylos</translation>
+    </message>
+    <message>
+        <source>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;A workbench for very large 3D scans of monuments: column drums, capitals, fragments.&lt;/p&gt;&lt;p&gt;Point-based, after Duguet, Drettakis, Girardeau-Montaut, Martinez and Schneider (VAST 2004).&lt;/p&gt;</source>
+        <translation>&lt;h3&gt;Stylos %1&lt;/h3&gt;&lt;p&gt;Un atelier pour les très grands relevés 3D de monuments : tambours de colonne, chapiteaux, fragments.&lt;/p&gt;&lt;p&gt;Fondé sur les points, d’après Duguet, Drettakis, Girardeau-Montaut, Martinez et Schneider (VAST 2004).&lt;/p&gt;</translation>
+    </message>
+    <message>
+        <source>&amp;Edit</source>
+        <translation>&amp;Édition</translation>
+    </message>
+    <message>
+        <source>&amp;View</source>
+        <translation>Affic&amp;hage</translation>
+    </message>
+    <message>
+        <source>Standard &amp;views</source>
+        <translation>&amp;Vues standard</translation>
+    </message>
+    <message>
+        <source>&amp;Shading</source>
+        <translation>O&amp;mbrage</translation>
+    </message>
+    <message>
+        <source>&amp;Tools</source>
+        <translation>&amp;Outils</translation>
+    </message>
+    <message>
+        <source>&amp;Language</source>
+        <translation>&amp;Langue</translation>
+    </message>
+    <message>
+        <source>Undo the last change to the scene</source>
+        <translation>Annuler la dernière modification de la scène</translation>
+    </message>
+    <message>
+        <source>Redo the change undone last</source>
+        <translation>Rétablir la dernière modification annulée</translation>
+    </message>
+    <message>
+        <source>&amp;Remove from the scene</source>
+        <translation>Re&amp;tirer de la scène</translation>
+    </message>
+    <message>
+        <source>&amp;Fit to the scene</source>
+        <translation>&amp;Cadrer la scène</translation>
+    </message>
+    <message>
+        <source>Fit to the &amp;selection</source>
+        <translation>Cadrer la &amp;sélection</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Avant</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Arrière</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Gauche</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Droite</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Dessus</translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation>Dessous</translation>
+    </message>
+    <message>
+        <source>Isometric</source>
+        <translation>Isométrique</translation>
+    </message>
+    <message>
+        <source>&amp;Orthographic</source>
+        <translation>Projection &amp;orthographique</translation>
+    </message>
+    <message>
+        <source>&amp;Headlight</source>
+        <translation>Éclairage &amp;frontal</translation>
+    </message>
+    <message>
+        <source>S&amp;kydome</source>
+        <translation>S&amp;kydome</translation>
+    </message>
+    <message>
+        <source>Scan &amp;colour</source>
+        <translation>&amp;Couleur du relevé</translation>
+    </message>
+    <message>
+        <source>Compute &amp;skydome</source>
+        <translation>Calculer le &amp;skydome</translation>
+    </message>
+    <message>
+        <source>Compute the 3D skydome (ambient occlusion) of the selected fragments in the background; the view then shades them by it</source>
+        <translation>Calculer en arrière-plan le skydome 3D (occlusion ambiante) des fragments sélectionnés ; la vue les ombre ensuite d’après lui</translation>
+    </message>
+    <message>
+        <source>&amp;Développée</source>
+        <translation>&amp;Développée</translation>
+    </message>
+    <message>
+        <source>Unroll the selected fragment in the Développée dock</source>
+        <translation>Dérouler le fragment sélectionné dans le panneau Développée</translation>
+    </message>
+    <message>
+        <source>Open the demo scene: a fluted drum, two of its fragments and an omphalos</source>
+        <translation>Ouvrir la scène de démonstration : un tambour cannelé, deux de ses fragments et un omphalos</translation>
+    </message>
+    <message>
+        <source>System language</source>
+        <translation>Langue du système</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::MainWindow</name>
+    <message>
+        <source>Stylos</source>
+        <translation>Stylos</translation>
+    </message>
+    <message>
+        <source>%1 on %2</source>
+        <translation>%1 sur %2</translation>
+    </message>
+    <message numerus="yes">
+        <source>Remove %n fragment(s)</source>
+        <translation>
+            <numerusform>Retirer %n fragment</numerusform>
+            <numerusform>Retirer %n fragments</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Imported %1</source>
+        <translation>Importé : %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n scan(s) could not be imported:</source>
+        <translation>
+            <numerusform>%n relevé n’a pas pu être importé :</numerusform>
+            <numerusform>%n relevés n’ont pas pu être importés :</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Skydome of %1: %2 cells at level %3, %4 directions, %5 s</source>
+        <translation>Skydome de %1 : %2 cellules au niveau %3, %4 directions, %5 s</translation>
+    </message>
+    <message>
+        <source>The skydome of the selection is being computed already, or its octrees are not open yet</source>
+        <translation>Le skydome de la sélection est déjà en cours de calcul, ou ses octrees ne sont pas encore ouverts</translation>
+    </message>
+    <message>
+        <source>%1[*] — Stylos</source>
+        <translation>%1[*] — Stylos</translation>
+    </message>
+    <message>
+        <source>&amp;File</source>
+        <translation>&amp;Fichier</translation>
+    </message>
+    <message>
+        <source>Main toolbar</source>
+        <translation>Barre d’outils principale</translation>
+    </message>
+    <message>
+        <source>Tasks</source>
+        <translation>Tâches</translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <translation>Développée</translation>
+    </message>
+    <message>
+        <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
+        <translation>La vue 3D nécessite OpenGL 3.3 (profil core), que cet affichage ne fournit pas.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::ProjectActions</name>
+    <message>
+        <source>&amp;New project</source>
+        <translation>&amp;Nouveau projet</translation>
+    </message>
+    <message>
+        <source>&amp;Open project…</source>
+        <translation>&amp;Ouvrir un projet…</translation>
+    </message>
+    <message>
+        <source>Open a Stylos project (.stylos)</source>
+        <translation>Ouvrir un projet Stylos (.stylos)</translation>
+    </message>
+    <message>
+        <source>Open &amp;recent</source>
+        <translation>Ouvrir un projet &amp;récent</translation>
+    </message>
+    <message>
+        <source>&amp;Save project</source>
+        <translation>&amp;Enregistrer le projet</translation>
+    </message>
+    <message>
+        <source>Save project &amp;as…</source>
+        <translation>Enregistrer le projet &amp;sous…</translation>
+    </message>
+    <message>
+        <source>&amp;Import scans…</source>
+        <translation>&amp;Importer des relevés…</translation>
+    </message>
+    <message>
+        <source>Build a packed octree of each scan in the background and add it to the scene</source>
+        <translation>Construire en arrière-plan un octree compact de chaque relevé et l’ajouter à la scène</translation>
+    </message>
+    <message>
+        <source>&amp;Quit</source>
+        <translation>&amp;Quitter</translation>
+    </message>
+    <message>
+        <source>%1: a project opens alone, not with other files</source>
+        <translation>%1 : un projet s’ouvre seul, pas avec d’autres fichiers</translation>
+    </message>
+    <message>
+        <source>Opened %1</source>
+        <translation>Projet ouvert : %1</translation>
+    </message>
+    <message>
+        <source>Saved %1</source>
+        <translation>Projet enregistré : %1</translation>
+    </message>
+    <message>
+        <source>Save project</source>
+        <translation>Enregistrer le projet</translation>
+    </message>
+    <message>
+        <source>Stylos projects (*.stylos)</source>
+        <translation>Projets Stylos (*.stylos)</translation>
+    </message>
+    <message>
+        <source>Stylos</source>
+        <translation>Stylos</translation>
+    </message>
+    <message>
+        <source>The project %1 has unsaved changes.</source>
+        <translation>Le projet %1 contient des modifications non enregistrées.</translation>
+    </message>
+    <message>
+        <source>Open project</source>
+        <translation>Ouvrir un projet</translation>
+    </message>
+    <message>
+        <source>Import scans</source>
+        <translation>Importer des relevés</translation>
+    </message>
+    <message>
+        <source>No recent project</source>
+        <translation>Aucun projet récent</translation>
+    </message>
+    <message>
+        <source>Clear the list</source>
+        <translation>Effacer la liste</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::PropertiesDock</name>
+    <message>
+        <source>Properties</source>
+        <translation>Propriétés</translation>
+    </message>
+    <message>
+        <source>Fragment</source>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <source>Display</source>
+        <translation>Affichage</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::SceneDock</name>
+    <message>
+        <source>Scene</source>
+        <translation>Scène</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::StatusReadout</name>
+    <message>
+        <source>x %1  y %2  z %3 m</source>
+        <translation>x %1  y %2  z %3 m</translation>
+    </message>
+    <message>
+        <source>%1 fps · %2 ms · %3 M points</source>
+        <translation>%1 fps · %2 ms · %3 M points</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AddFragmentCommand</name>
+    <message>
+        <source>Add %1</source>
+        <translation>Ajouter %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DemoScene</name>
+    <message>
+        <source>Could not create the demo folder %1.</source>
+        <translation>Impossible de créer le dossier de démonstration %1.</translation>
+    </message>
+    <message>
+        <source>Drum</source>
+        <translation>Tambour</translation>
+    </message>
+    <message>
+        <source>Fragment A</source>
+        <translation>Fragment A</translation>
+    </message>
+    <message>
+        <source>Fragment B</source>
+        <translation>Fragment B</translation>
+    </message>
+    <message>
+        <source>Omphalos</source>
+        <translation>Omphalos</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axe</translation>
+    </message>
+    <message>
+        <source>Preparing the demo scene</source>
+        <translation>Préparation de la scène de démonstration</translation>
+    </message>
+    <message>
+        <source>Could not prepare the demo scene: %1: %2.</source>
+        <translation>Impossible de préparer la scène de démonstration : %1 : %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeDock</name>
+    <message>
+        <source>%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s</source>
+        <translation>%1 : %2, rayon %3 mm, RMS %4 mm, %5 % de points retenus ; %6 × %7 pixels de %8 mm ; %9 s</translation>
+    </message>
+    <message>
+        <source>Surface</source>
+        <translation>Surface</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Ombrage</translation>
+    </message>
+    <message>
+        <source>Directions</source>
+        <translation>Directions</translation>
+    </message>
+    <message>
+        <source>Pixel</source>
+        <translation>Pixel</translation>
+    </message>
+    <message>
+        <source>The surface the développée is unrolled from</source>
+        <translation>La surface à partir de laquelle la développée est déroulée</translation>
+    </message>
+    <message>
+        <source>How the heights become grey: the sky each point sees, one light, or height</source>
+        <translation>Comment les hauteurs deviennent des niveaux de gris : le ciel vu par chaque point, une lumière unique, ou la hauteur</translation>
+    </message>
+    <message>
+        <source>Skydome: azimuths of the horizon search (more is smoother and slower)</source>
+        <translation>Skydome : azimuts de la recherche d’horizon (davantage donne un rendu plus lisse mais plus lent)</translation>
+    </message>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source>Automatic</source>
+        <translation>Automatique</translation>
+    </message>
+    <message>
+        <source>Side of a pixel; Automatic uses the octree&apos;s leaf size</source>
+        <translation>Côté d’un pixel ; Automatique utilise la taille des feuilles de l’octree</translation>
+    </message>
+    <message>
+        <source>Use the axis guide</source>
+        <translation>Utiliser le guide d’axe</translation>
+    </message>
+    <message>
+        <source>Fit only the radius about the fragment&apos;s axis guide (needed for a fragment)</source>
+        <translation>N’ajuster que le rayon autour du guide d’axe du fragment (nécessaire pour un fragment)</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <translation>Cadrer</translation>
+    </message>
+    <message>
+        <source>Fit the développée to the view (F)</source>
+        <translation>Cadrer la développée dans la vue (F)</translation>
+    </message>
+    <message>
+        <source>Compute</source>
+        <translation>Calculer</translation>
+    </message>
+    <message>
+        <source>Compute the développée of the selected fragment in the background</source>
+        <translation>Calculer en arrière-plan la développée du fragment sélectionné</translation>
+    </message>
+    <message>
+        <source>No développée yet: select a fragment and press Compute.</source>
+        <translation>Pas encore de développée : sélectionnez un fragment et cliquez sur Calculer.</translation>
+    </message>
+    <message>
+        <source>Computing the développée of %1…</source>
+        <translation>Calcul de la développée de %1…</translation>
+    </message>
+    <message>
+        <source>Select a fragment to compute its développée.</source>
+        <translation>Sélectionnez un fragment pour calculer sa développée.</translation>
+    </message>
+    <message>
+        <source>Press Compute for the développée of %1.</source>
+        <translation>Cliquez sur Calculer pour obtenir la développée de %1.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation>Développée de %1</translation>
+    </message>
+    <message>
+        <source>Could not compute the développée of %1: %2.</source>
+        <translation>Impossible de calculer la développée de %1 : %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeSettings</name>
+    <message>
+        <source>the number of directions must be between %1 and %2</source>
+        <translation>le nombre de directions doit être compris entre %1 et %2</translation>
+    </message>
+    <message>
+        <source>the pixel size must be a positive length, or 0 for automatic</source>
+        <translation>la taille de pixel doit être une longueur positive, ou 0 pour automatique</translation>
+    </message>
+    <message>
+        <source>the light elevation must be between 0° and 90°</source>
+        <translation>la hauteur angulaire de la lumière doit être comprise entre 0° et 90°</translation>
+    </message>
+    <message>
+        <source>the axis needs a finite point and a non-zero direction</source>
+        <translation>l’axe nécessite un point fini et une direction non nulle</translation>
+    </message>
+    <message>
+        <source>Cylinder</source>
+        <translation>Cylindre</translation>
+    </message>
+    <message>
+        <source>Cone</source>
+        <translation>Cône</translation>
+    </message>
+    <message>
+        <source>Surface of revolution</source>
+        <translation>Surface de révolution</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Hauteur</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation>Skydome</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeView</name>
+    <message>
+        <source>No développée yet: select a fragment and press Compute.</source>
+        <translation>Pas encore de développée : sélectionnez un fragment et cliquez sur Calculer.</translation>
+    </message>
+    <message>
+        <source>u %1 mm   v %2 mm   (no data)</source>
+        <translation>u %1 mm   v %2 mm   (pas de données)</translation>
+    </message>
+    <message>
+        <source>u %1 mm   v %2 mm   h %3 mm</source>
+        <translation>u %1 mm   v %2 mm   h %3 mm</translation>
+    </message>
+    <message>
+        <source>%1 m</source>
+        <translation>%1 m</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ErrorText</name>
+    <message>
+        <source>Could not load %1: %2.</source>
+        <translation>Impossible de charger %1 : %2.</translation>
+    </message>
+    <message>
+        <source>the file does not exist</source>
+        <translation>le fichier n’existe pas</translation>
+    </message>
+    <message>
+        <source>the file cannot be read</source>
+        <translation>le fichier ne peut pas être lu</translation>
+    </message>
+    <message>
+        <source>the file format is not recognised</source>
+        <translation>le format du fichier n’est pas reconnu</translation>
+    </message>
+    <message>
+        <source>this format is not supported</source>
+        <translation>ce format n’est pas pris en charge</translation>
+    </message>
+    <message>
+        <source>the file is malformed</source>
+        <translation>le fichier est mal formé</translation>
+    </message>
+    <message>
+        <source>the file is truncated</source>
+        <translation>le fichier est tronqué</translation>
+    </message>
+    <message>
+        <source>the file is empty</source>
+        <translation>le fichier est vide</translation>
+    </message>
+    <message>
+        <source>the output could not be written</source>
+        <translation>la sortie n’a pas pu être écrite</translation>
+    </message>
+    <message>
+        <source>a parameter is out of range</source>
+        <translation>un paramètre est hors limites</translation>
+    </message>
+    <message>
+        <source>not enough memory for this operation</source>
+        <translation>mémoire insuffisante pour cette opération</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>annulé</translation>
+    </message>
+    <message>
+        <source>unknown error</source>
+        <translation>erreur inconnue</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::FragmentPropertiesWidget</name>
+    <message>
+        <source>Name</source>
+        <translation>Nom</translation>
+    </message>
+    <message>
+        <source>Visible</source>
+        <translation>Visible</translation>
+    </message>
+    <message>
+        <source>Colour</source>
+        <translation>Couleur</translation>
+    </message>
+    <message>
+        <source>X</source>
+        <translation>X</translation>
+    </message>
+    <message>
+        <source>Y</source>
+        <translation>Y</translation>
+    </message>
+    <message>
+        <source>Z</source>
+        <translation>Z</translation>
+    </message>
+    <message>
+        <source>Rotation X</source>
+        <translation>Rotation X</translation>
+    </message>
+    <message>
+        <source>Rotation Y</source>
+        <translation>Rotation Y</translation>
+    </message>
+    <message>
+        <source>Rotation Z</source>
+        <translation>Rotation Z</translation>
+    </message>
+    <message>
+        <source>Points</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>Leaf cells</source>
+        <translation>Cellules feuilles</translation>
+    </message>
+    <message>
+        <source>Total cells</source>
+        <translation>Cellules au total</translation>
+    </message>
+    <message>
+        <source>Depth</source>
+        <translation>Profondeur</translation>
+    </message>
+    <message>
+        <source>File</source>
+        <translation>Fichier</translation>
+    </message>
+    <message>
+        <source>Shown in the 3D view</source>
+        <translation>Affiché dans la vue 3D</translation>
+    </message>
+    <message>
+        <source>Choose the fragment&apos;s display colour</source>
+        <translation>Choisir la couleur d’affichage du fragment</translation>
+    </message>
+    <message>
+        <source>Translation along the scene&apos;s x axis, in metres</source>
+        <translation>Translation le long de l’axe x de la scène, en mètres</translation>
+    </message>
+    <message>
+        <source>Rotation about the x axis, applied first, in degrees</source>
+        <translation>Rotation autour de l’axe x, appliquée en premier, en degrés</translation>
+    </message>
+    <message>
+        <source>missing</source>
+        <translation>introuvable</translation>
+    </message>
+    <message>
+        <source>opening…</source>
+        <translation>ouverture…</translation>
+    </message>
+    <message>
+        <source>Fragment colour</source>
+        <translation>Couleur du fragment</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::RemoveFragmentCommand</name>
+    <message>
+        <source>Remove %1</source>
+        <translation>Retirer %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::RenameFragmentCommand</name>
+    <message>
+        <source>Rename %1 to %2</source>
+        <translation>Renommer %1 en %2</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ScanImporter</name>
+    <message>
+        <source>Scans and octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</source>
+        <translation>Relevés et octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</translation>
+    </message>
+    <message>
+        <source>Packed octrees (*.poct)</source>
+        <translation>Octrees compacts (*.poct)</translation>
+    </message>
+    <message>
+        <source>All files (*)</source>
+        <translation>Tous les fichiers (*)</translation>
+    </message>
+    <message>
+        <source>Could not import %1: the folder %2 cannot be created.</source>
+        <translation>Impossible d’importer %1 : le dossier %2 ne peut pas être créé.</translation>
+    </message>
+    <message>
+        <source>Importing %1</source>
+        <translation>Importation de %1</translation>
+    </message>
+    <message>
+        <source>Could not import %1: %2.</source>
+        <translation>Impossible d’importer %1 : %2.</translation>
+    </message>
+    <message>
+        <source>Import %1</source>
+        <translation>Importer %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SceneDocument</name>
+    <message>
+        <source>Untitled</source>
+        <translation>Sans titre</translation>
+    </message>
+    <message>
+        <source>The project has no file yet: choose one with Save as.</source>
+        <translation>Le projet n’a pas encore de fichier : choisissez-en un avec Enregistrer sous.</translation>
+    </message>
+    <message>
+        <source>Could not save %1: %2.</source>
+        <translation>Impossible d’enregistrer %1 : %2.</translation>
+    </message>
+    <message>
+        <source>Opening %1</source>
+        <translation>Ouverture de %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SceneTreeModel</name>
+    <message>
+        <source>%1 (missing)</source>
+        <translation>%1 (introuvable)</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axe</translation>
+    </message>
+    <message>
+        <source>Groove</source>
+        <translation>Cannelure</translation>
+    </message>
+    <message>
+        <source>Scene</source>
+        <translation>Scène</translation>
+    </message>
+    <message>
+        <source>Développée (%1, %2 × %3)</source>
+        <translation>Développée (%1, %2 × %3)</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentColourCommand</name>
+    <message>
+        <source>Change the colour of %1</source>
+        <translation>Changer la couleur de %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentPoseCommand</name>
+    <message>
+        <source>Move %1</source>
+        <translation>Déplacer %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentVisibleCommand</name>
+    <message>
+        <source>Show %1</source>
+        <translation>Afficher %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Masquer %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SkydomeJob</name>
+    <message>
+        <source>Skydome of %1</source>
+        <translation>Skydome de %1</translation>
+    </message>
+    <message>
+        <source>Could not compute the skydome of %1: %2.</source>
+        <translation>Impossible de calculer le skydome de %1 : %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::TaskListWidget</name>
+    <message>
+        <source>No background tasks</source>
+        <translation>Aucune tâche en arrière-plan</translation>
+    </message>
+    <message>
+        <source>Cancel</source>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Stop this task</source>
+        <translation>Arrêter cette tâche</translation>
+    </message>
+    <message>
+        <source>Waiting…</source>
+        <translation>En attente…</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ViewportWidget</name>
+    <message>
+        <source>The 3D view needs OpenGL 3.3: %1</source>
+        <translation>La vue 3D nécessite OpenGL 3.3 : %1</translation>
+    </message>
+</context>
 </TS>
