@@ -247,6 +247,22 @@
         <source>System language</source>
         <translation>Γλώσσα συστήματος</translation>
     </message>
+    <message>
+        <source>&amp;Undo</source>
+        <translation>&amp;Αναίρεση</translation>
+    </message>
+    <message>
+        <source>&amp;Undo %1</source>
+        <translation>&amp;Αναίρεση: %1</translation>
+    </message>
+    <message>
+        <source>&amp;Redo</source>
+        <translation>Ε&amp;πανάληψη</translation>
+    </message>
+    <message>
+        <source>&amp;Redo %1</source>
+        <translation>Ε&amp;πανάληψη: %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::MainWindow</name>

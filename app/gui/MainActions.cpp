@@ -30,7 +30,7 @@ const std::array<QKeySequence, 7> ViewKeys = {QKeySequence(Qt::Key_1), QKeySeque
 MainActions::MainActions(widgets::SceneDocument& document, widgets::ViewportWidget* viewport,
                          Translations& translations, QWidget& window)
     : QObject(&window), m_document(document), m_viewport(viewport), m_translations(translations), m_window(window),
-      m_undo(document.undoStack()->createUndoAction(this)), m_redo(document.undoStack()->createRedoAction(this)),
+      m_undo(new QAction(this)), m_redo(new QAction(this)),
       m_remove(new QAction(this)), m_fitScene(new QAction(this)), m_fitSelection(new QAction(this)),
       m_orthographic(new QAction(this)), m_shading(new QActionGroup(this)), m_skydome(new QAction(this)),
       m_developpee(new QAction(this)), m_openDemo(new QAction(this)), m_languages(new QActionGroup(this)),
@@ -57,6 +57,15 @@ MainActions::MainActions(widgets::SceneDocument& document, widgets::ViewportWidg
     m_skydome->setEnabled(false);
     m_developpee->setEnabled(false);
 
+    QUndoStack* stack = document.undoStack();
+    m_undo->setEnabled(stack->canUndo());
+    m_redo->setEnabled(stack->canRedo());
+    connect(m_undo, &QAction::triggered, stack, &QUndoStack::undo);
+    connect(m_redo, &QAction::triggered, stack, &QUndoStack::redo);
+    connect(stack, &QUndoStack::canUndoChanged, m_undo, &QAction::setEnabled);
+    connect(stack, &QUndoStack::canRedoChanged, m_redo, &QAction::setEnabled);
+    connect(stack, &QUndoStack::undoTextChanged, this, &MainActions::retranslateUi);
+    connect(stack, &QUndoStack::redoTextChanged, this, &MainActions::retranslateUi);
     connect(m_remove, &QAction::triggered, this, &MainActions::removeRequested);
     connect(m_skydome, &QAction::triggered, this, &MainActions::skydomeRequested);
     connect(m_developpee, &QAction::triggered, this, &MainActions::developpeeRequested);
@@ -191,7 +200,10 @@ void MainActions::retranslateUi()
         m_help->setTitle(tr("&Help"));
         m_language->setTitle(tr("&Language"));
     }
-    // QUndoStack's actions keep their own "Undo %1" text; only their tips are ours.
+    // "Undo Import drum.ply": the step's own text (already translated when it was pushed).
+    const QUndoStack* stack = m_document.undoStack();
+    m_undo->setText(stack->undoText().isEmpty() ? tr("&Undo") : tr("&Undo %1").arg(stack->undoText()));
+    m_redo->setText(stack->redoText().isEmpty() ? tr("&Redo") : tr("&Redo %1").arg(stack->redoText()));
     m_undo->setStatusTip(tr("Undo the last change to the scene"));
     m_redo->setStatusTip(tr("Redo the change undone last"));
     m_remove->setText(tr("&Remove from the scene"));
