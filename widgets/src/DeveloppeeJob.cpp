@@ -6,6 +6,7 @@
 #include "stylos/core/shading/LightShading.h"
 #include "stylos/core/shading/SkydomeShading.h"
 #include "stylos/widgets/ErrorText.h"
+#include "stylos/widgets/JobResult.h"
 
 #include <QFileInfo>
 
@@ -160,20 +161,16 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
 
 void DeveloppeeJob::operator()(QPromise<DeveloppeeResult>& promise, core::ProgressSink& progress) const
 {
-    auto computed = run(&progress);
-    if (!computed && computed.error().code == core::ErrorCode::Cancelled) return; // no result
-    if (progress.isCancelRequested()) return;
-    if (computed) {
-        promise.addResult(std::move(computed).value());
-        return;
-    }
-    DeveloppeeResult failed;
-    failed.fragmentId = m_fragmentId;
-    failed.octreePath = m_path;
-    failed.settings = m_settings;
-    failed.error = errorText(m_path, computed.error());
-    failed.errorCode = computed.error().code;
-    promise.addResult(std::move(failed));
+    deliverJobResult(promise, progress, [this](core::ProgressSink* sink) { return run(sink); },
+                     [this](const core::Error& error) {
+        DeveloppeeResult failed;
+        failed.fragmentId = m_fragmentId;
+        failed.octreePath = m_path;
+        failed.settings = m_settings;
+        failed.error = errorText(m_path, error);
+        failed.errorCode = error.code;
+        return failed;
+    });
 }
 
 } // namespace stylos::widgets

@@ -3,6 +3,7 @@
 #include "stylos/core/ao/AoCells.h"
 #include "stylos/core/ao/AoExport.h"
 #include "stylos/widgets/ErrorText.h"
+#include "stylos/widgets/JobResult.h"
 
 #include <QFileInfo>
 
@@ -112,20 +113,16 @@ core::Result<SkydomeResult> SkydomeJob::run(core::ProgressSink* progress) const
 
 void SkydomeJob::operator()(QPromise<SkydomeResult>& promise, core::ProgressSink& progress) const
 {
-    auto computed = run(&progress);
-    if (!computed && computed.error().code == core::ErrorCode::Cancelled) return; // no result
-    if (progress.isCancelRequested()) return;
-    if (computed) {
-        promise.addResult(std::move(computed).value());
-        return;
-    }
-    SkydomeResult failed;
-    failed.fragmentId = m_fragmentId;
-    failed.octreePath = m_path;
-    failed.directions = m_options.directions;
-    failed.error = errorText(m_path, computed.error());
-    failed.errorCode = computed.error().code;
-    promise.addResult(std::move(failed));
+    deliverJobResult(promise, progress, [this](core::ProgressSink* sink) { return run(sink); },
+                     [this](const core::Error& error) {
+        SkydomeResult failed;
+        failed.fragmentId = m_fragmentId;
+        failed.octreePath = m_path;
+        failed.directions = m_options.directions;
+        failed.error = errorText(m_path, error);
+        failed.errorCode = error.code;
+        return failed;
+    });
 }
 
 } // namespace stylos::widgets
