@@ -14,6 +14,7 @@
 #include "stylos/core/util/AtomicTextFile.h"
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/TaskManager.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <QDir>
 #include <QFile>
@@ -44,22 +45,6 @@ constexpr double kDegree = kPi / 180.0;
 struct Outcome {
     std::optional<core::Error> error;
     QString file; ///< the file being made when it failed
-};
-
-/** Maps a step's progress onto its share [from, to] of the whole task. */
-class StepProgress final : public core::ProgressSink {
-  public:
-    StepProgress(core::ProgressSink& parent, double from, double to) : m_parent(parent), m_from(from), m_to(to) {}
-    void update(double fraction) override
-    {
-        m_parent.update(m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0));
-    }
-    bool isCancelRequested() const override { return m_parent.isCancelRequested(); }
-
-  private:
-    core::ProgressSink& m_parent;
-    double m_from;
-    double m_to;
 };
 
 /** An item's synthetic object, in its own frame, and the azimuths the layout needs. */
@@ -227,7 +212,7 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
         const double from = done / total, share = itemWeight(item.kind) / total;
         done += itemWeight(item.kind);
         const auto step = [&](double a, double b) {
-            return StepProgress(progress, from + a * share, from + b * share);
+            return core::SubProgress(&progress, from + a * share, from + b * share);
         };
         const fs::path ply = temp / (item.fileName.toStdString() + ".ply");
         const fs::path built = temp / item.fileName.toStdString();
@@ -239,14 +224,14 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
         options.writeNormals = true;
         const DemoObject made = makeObject(item.kind, options);
         {
-            StepProgress sink = step(0.0, 0.5);
+            core::SubProgress sink = step(0.0, 0.5);
             if (auto scanned = simulateScan(*made.object, options, ply, sink); !scanned)
                 return fail(scanned.error(), item.fileName);
         }
         core::octree::BuildOptions build;
         build.depth = depthFor(*made.object, job.spacing);
         {
-            StepProgress sink = step(0.5, 0.8);
+            core::SubProgress sink = step(0.5, 0.8);
             auto report = core::octree::buildOctreeFile(ply, built, build, &sink);
             std::error_code ignored;
             fs::remove(ply, ignored);
@@ -259,7 +244,7 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
         // The 3D skydome at the level where the cells still close the surface, spread to the leaves.
         std::vector<float> perLeaf;
         {
-            StepProgress sink = step(0.8, 0.97);
+            core::SubProgress sink = step(0.8, 0.97);
             auto cells = core::ao::cellsAtLevel(octree, core::ao::closedSurfaceLevel(octree));
             if (!cells) return fail(cells.error(), item.fileName);
             core::ao::AoOptions ao;
@@ -269,7 +254,7 @@ void generate(const Job& job, QPromise<Outcome>& promise, core::ProgressSink& pr
             perLeaf = core::ao::valuesPerLeaf(*cells, *values);
         }
         {
-            StepProgress sink = step(0.97, 1.0);
+            core::SubProgress sink = step(0.97, 1.0);
             written.push_back(output);
             if (auto stored = core::ao::writeAmbientPoct(octree, perLeaf, output, &sink); !stored)
                 return fail(stored.error(), item.fileName);

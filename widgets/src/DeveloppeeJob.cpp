@@ -7,6 +7,7 @@
 #include "stylos/core/shading/SkydomeShading.h"
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/JobResult.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <QFileInfo>
 
@@ -22,22 +23,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-/** One step of the chain: maps the step's [0, 1] onto [from, to] of the whole job (or reports nothing). */
-class StepProgress final : public core::ProgressSink {
-public:
-    StepProgress(core::ProgressSink* whole, double from, double to) : m_whole(whole), m_from(from), m_to(to) {}
-    void update(double fraction) override
-    {
-        if (m_whole) m_whole->update(m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0));
-    }
-    bool isCancelRequested() const override { return m_whole && m_whole->isCancelRequested(); }
-
-private:
-    core::ProgressSink* m_whole;
-    double m_from;
-    double m_to;
-};
 
 core::Error cancelled(const QString& path)
 {
@@ -109,7 +94,7 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
 
     core::cloud::PointCloud cloud;
     {
-        StepProgress step(progress, 0.0, 0.15);
+        core::SubProgress step(progress, 0.0, 0.15);
         auto loaded = core::cloud::loadPointCloud(source, {}, &step);
         if (!loaded) return loaded.error();
         cloud = std::move(loaded).value();
@@ -123,7 +108,7 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
         axis.direction.normalize();
         fitOptions.axis = axis;
     }
-    StepProgress fitStep(progress, 0.15, 0.4);
+    core::SubProgress fitStep(progress, 0.15, 0.4);
     auto fit = core::unroll::fitSurface(cloud, fitOptions, &fitStep);
     if (!fit) return fit.error();
     result.fit = *fit;
@@ -134,7 +119,7 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
     // Automatic on a .poct: its points are leaf centres, whose heights step by the leaf edge; at one edge
     // per pixel the shading reads those steps as relief (salt and pepper), at three the carving shows.
     else if (cloud.spacing > 0.0) unrollOptions.pixelSize = PoctPixelEdges * cloud.spacing;
-    StepProgress unrollStep(progress, 0.4, 0.7);
+    core::SubProgress unrollStep(progress, 0.4, 0.7);
     auto unrolled = core::unroll::unrollCloud(cloud, fit->surface, unrollOptions, &unrollStep);
     if (!unrolled) return unrolled.error();
     cloud = {}; // the points are no longer needed: give the memory back before shading
@@ -142,7 +127,7 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
     result.timings.unroll = unrolled->report.seconds;
 
     const auto shadingStart = Clock::now();
-    StepProgress shadeStep(progress, 0.7, 0.98);
+    core::SubProgress shadeStep(progress, 0.7, 0.98);
     auto shaded = shade(unrolled->field, m_settings, &shadeStep);
     if (!shaded) return shaded.error();
     if (progress && progress->isCancelRequested()) return cancelled(m_path);

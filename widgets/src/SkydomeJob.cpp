@@ -4,6 +4,7 @@
 #include "stylos/core/ao/AoExport.h"
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/JobResult.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <QFileInfo>
 
@@ -18,22 +19,6 @@ namespace {
 using Clock = std::chrono::steady_clock;
 namespace ao = core::ao;
 namespace oct = core::octree;
-
-/** One step of the job: maps the step's [0, 1] onto [from, to] of the whole job (or reports nothing). */
-class StepProgress final : public core::ProgressSink {
-public:
-    StepProgress(core::ProgressSink* whole, double from, double to) : m_whole(whole), m_from(from), m_to(to) {}
-    void update(double fraction) override
-    {
-        if (m_whole) m_whole->update(m_from + (m_to - m_from) * std::clamp(fraction, 0.0, 1.0));
-    }
-    bool isCancelRequested() const override { return m_whole && m_whole->isCancelRequested(); }
-
-private:
-    core::ProgressSink* m_whole;
-    double m_from;
-    double m_to;
-};
 
 } // namespace
 
@@ -78,7 +63,7 @@ core::Result<SkydomeResult> SkydomeJob::run(core::ProgressSink* progress) const
     result.level = m_options.level.value_or(ao::closedSurfaceLevel(octree));
     ao::AoCells cells;
     {
-        StepProgress step(progress, 0.0, 0.1);
+        core::SubProgress step(progress, 0.0, 0.1);
         auto read = ao::cellsAtLevel(octree, result.level, &step);
         if (!read) return read.error();
         cells = std::move(read).value();
@@ -88,7 +73,7 @@ core::Result<SkydomeResult> SkydomeJob::run(core::ProgressSink* progress) const
     // Computing: per cell, then per leaf.
     std::vector<float> perLeaf;
     {
-        StepProgress step(progress, 0.1, 0.9);
+        core::SubProgress step(progress, 0.1, 0.9);
         auto values = ao::computeAmbientOcclusion(cells, m_options.aoOptions(), &step);
         if (!values) return values.error();
         perLeaf = ao::valuesPerLeaf(cells, *values);

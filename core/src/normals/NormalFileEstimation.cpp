@@ -4,6 +4,7 @@
 #include "TilePlan.h"
 #include "TileSpool.h"
 #include "stylos/core/io/PlyWriter.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
 #include <cmath>
@@ -24,21 +25,6 @@ constexpr std::size_t kBatchPoints = 65536;
 constexpr std::size_t kSampleSize = 65536;
 constexpr double kTileFill = 0.8; ///< plan tiles to this fraction of the budget (the sample's counts vary)
 constexpr double kPass1 = 0.10, kPass2 = 0.30; ///< progress at the end of passes 1 and 2 (when tiled)
-
-/** Progress of a sub-task mapped onto [from, to] of the caller's sink. */
-class ScaledProgress final : public ProgressSink {
-public:
-    ScaledProgress(ProgressSink* outer, double from, double to) : m_outer(outer), m_from(from), m_to(to) {}
-    void update(double fraction) override
-    {
-        if (m_outer) m_outer->update(m_from + (m_to - m_from) * fraction);
-    }
-    bool isCancelRequested() const override { return m_outer && m_outer->isCancelRequested(); }
-
-private:
-    ProgressSink* m_outer;
-    double m_from, m_to;
-};
 
 Error cancelled() { return Error{ErrorCode::Cancelled, "normal estimation: cancelled"}; }
 
@@ -307,7 +293,7 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
                                              box.lo[2] - plan.margin(), box.hi[0] + plan.margin(),
                                              box.hi[1] + plan.margin(), box.hi[2] + plan.margin()};
         const double share = 1.0 - kPass2;
-        ScaledProgress tileProgress(progress, kPass2 + share * double(done) / double(cloud.points),
+        SubProgress tileProgress(progress, kPass2 + share * double(done) / double(cloud.points),
                                     kPass2 + share * double(done + own) / double(cloud.points));
         auto estimated = detail::runNormalJob(job, options.normals, &tileProgress);
         if (!estimated) return estimated.error();
@@ -366,7 +352,7 @@ Result<NormalFileReport> estimateNormalsForFile(const std::filesystem::path& inp
             job.queryCount = n;
             job.normals = normals;
             job.quality = quality;
-            ScaledProgress estimateProgress(progress, kPass1, 0.95);
+            SubProgress estimateProgress(progress, kPass1, 0.95);
             auto estimated = detail::runNormalJob(job, options.normals, &estimateProgress);
             if (!estimated) return estimated.error();
             report.normals = *estimated;

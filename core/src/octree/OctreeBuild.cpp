@@ -7,6 +7,7 @@
 #include "stylos/core/normals/NormalFileEstimation.h"
 #include "stylos/core/octree/ConstructionOctree.h"
 #include "stylos/core/octree/PoctWriter.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
 #include <chrono>
@@ -19,21 +20,6 @@ namespace stylos::core::octree {
 namespace {
 
 namespace fs = std::filesystem;
-
-/** Maps a part of the work, [begin, end] of the whole, onto another sink; forwards cancel. */
-class PartProgress final : public ProgressSink {
-public:
-    PartProgress(ProgressSink* whole, double begin, double end) : m_whole(whole), m_begin(begin), m_end(end) {}
-    void update(double fraction) override
-    {
-        if (m_whole) m_whole->update(m_begin + (m_end - m_begin) * std::clamp(fraction, 0.0, 1.0));
-    }
-    bool isCancelRequested() const override { return m_whole && m_whole->isCancelRequested(); }
-
-private:
-    ProgressSink* m_whole;
-    double m_begin, m_end;
-};
 
 /** A fresh folder ".NAME.build-XXXXXXXXXXXXXXXX" in @p parent, removed with its content on destruction. */
 class TemporaryFolder {
@@ -73,13 +59,13 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
                                 ProgressSink* progress)
 {
     const auto start = std::chrono::steady_clock::now();
-    PartProgress building(progress, 0.0, 0.95);
+    SubProgress building(progress, 0.0, 0.95);
     BuildReport report;
     auto tree = buildConstructionOctree(open, options, &building, &report);
     if (!tree.ok()) return tree.error();
     if (progress && progress->isCancelRequested())
         return Error::at(ErrorCode::Cancelled, output.string(), "", "octree build cancelled");
-    PartProgress writing(progress, 0.95, 1.0);
+    SubProgress writing(progress, 0.95, 1.0);
     auto written = writePoct(**tree, output, {}, &writing);
     if (!written.ok()) return written.error();
     report.fileBytes = *written;
@@ -117,11 +103,11 @@ Result<BuildReport> buildOctreeFile(const fs::path& input, const fs::path& outpu
     if (options.memoryLimit > 0)
         estimate.memoryBudget = std::max<std::size_t>(64u << 10, std::min<std::uint64_t>(estimate.memoryBudget,
                                                                                           options.memoryLimit));
-    PartProgress estimating(progress, 0.0, 0.4);
+    SubProgress estimating(progress, 0.0, 0.4);
     auto estimated = normals::estimateNormalsForFile(input, withNormals, estimate, &estimating);
     if (!estimated.ok()) return estimated.error();
 
-    PartProgress building(progress, 0.4, 1.0);
+    SubProgress building(progress, 0.4, 1.0);
     auto report = buildOctree([withNormals] { return io::openPointReader(withNormals); }, output, options, &building);
     if (!report.ok()) return report.error();
     report->normalsEstimated = true;

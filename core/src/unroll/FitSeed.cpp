@@ -1,6 +1,6 @@
 #include "FitSeed.h"
 
-#include "UnrollStageProgress.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include "stylos/core/normals/NormalEstimation.h"
 
@@ -31,7 +31,7 @@ Status estimateSampleNormals(FitPoints& sample, const Eigen::Vector3d& centre, u
     normals::NormalOptions options;
     options.threads = threads;
     options.orientation = normals::NormalOrientation::Unoriented;
-    UnrollStageProgress sink(stage.sink, stage.from, stage.to);
+    SubProgress sink(stage.sink, stage.from, stage.to);
     auto report = normals::estimateNormals(positions, sample.normals, options, &sink);
     if (!report) {
         sample.normals.clear();

@@ -1,7 +1,7 @@
 #include "UnrollRaster.h"
 
 #include "UnrollParallel.h"
-#include "UnrollStageProgress.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
 #include <atomic>
@@ -87,7 +87,7 @@ bool UnrollRaster::run(shading::HeightField& field, ProgressSink* progress)
 
     std::vector<Scratch> scratch(m_threads);
     std::vector<std::vector<Hit>> hits(m_threads);
-    UnrollStageProgress maxStage(progress, 0.0, 0.45);
+    SubProgress maxStage(progress, 0.0, 0.45);
     const bool maxDone = parallelPoints(m_cloud.size(), m_threads, &maxStage,
                                         [&](std::size_t begin, std::size_t end, unsigned worker) {
         forEachHit(begin, end, scratch[worker], hits[worker], [&](const Hit& hit) {
@@ -100,7 +100,7 @@ bool UnrollRaster::run(shading::HeightField& field, ProgressSink* progress)
     if (!maxDone) return false;
 
     std::atomic<std::uint64_t> averaged{0};
-    UnrollStageProgress sumStage(progress, 0.45, 0.9);
+    SubProgress sumStage(progress, 0.45, 0.9);
     const bool sumDone = parallelPoints(m_cloud.size(), m_threads, &sumStage,
                                         [&](std::size_t begin, std::size_t end, unsigned worker) {
         std::uint64_t mine = 0;

@@ -7,7 +7,7 @@
 #include "UnrollRaster.h"
 #include "UnrollSample.h"
 #include "UnrollSpacing.h"
-#include "UnrollStageProgress.h"
+#include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
 #include <chrono>
@@ -104,7 +104,7 @@ bool Unroller::gatherStats(PointStats& stats, std::uint64_t& offSurface)
     std::vector<PointStats> perWorker(m_threads);
     const detail::UnrollAzimuth azimuth(m_probe);
     const detail::UnrollSample sample(detail::kAzimuthSamples, m_cloud.size());
-    detail::UnrollStageProgress stage(m_progress, 0.0, 0.3);
+    SubProgress stage(m_progress, 0.0, 0.3);
     const bool done = detail::parallelPoints(m_cloud.size(), m_threads, &stage,
                                              [&](std::size_t begin, std::size_t end, unsigned worker) {
         PointStats& mine = perWorker[worker];
@@ -134,7 +134,7 @@ Result<double> Unroller::estimateSpacing(const PointStats& stats)
     std::vector<std::vector<std::uint32_t>> counts(m_threads);
     const detail::UnrollAzimuth azimuth(m_probe);
     const double radius = m_surface.referenceRadius();
-    detail::UnrollStageProgress stage(m_progress, 0.3, 0.35);
+    SubProgress stage(m_progress, 0.3, 0.35);
     const bool done = detail::parallelPoints(m_cloud.size(), m_threads, &stage,
                                              [&](std::size_t begin, std::size_t end, unsigned worker) {
         auto& mine = counts[worker];
@@ -202,7 +202,7 @@ Result<Unrolled> Unroller::run()
     try {
         field = shading::HeightField::create(int(width), int(height), pixel);
         if (!field) return invalid(field.error().message);
-        detail::UnrollStageProgress rasterStage(m_progress, 0.35, 0.9);
+        SubProgress rasterStage(m_progress, 0.35, 0.9);
         if (!raster.run(*field, &rasterStage)) return cancelled();
     } catch (const std::bad_alloc&) {
         return Error::at(ErrorCode::OutOfBudget, m_source, {},
@@ -212,7 +212,7 @@ Result<Unrolled> Unroller::run()
 
     UnrollReport report;
     if (m_options.fillHoles) {
-        detail::UnrollStageProgress fillStage(m_progress, 0.9, 1.0);
+        SubProgress fillStage(m_progress, 0.9, 1.0);
         auto filled = shading::fillHoles(*field, m_options.holes, &fillStage);
         if (!filled) {
             if (filled.error().code == ErrorCode::Cancelled) return cancelled();
