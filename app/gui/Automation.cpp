@@ -10,6 +10,7 @@
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QJsonDocument>
+#include <QPainter>
 #include <QPixmap>
 #include <QTimer>
 #include <QToolBar>
@@ -62,7 +63,16 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs)
 {
     window.setErrorDialogsEnabled(false);
     whenReady(window, timeoutMs, [&window, path] {
-        if (!window.grab().save(path, "PNG")) {
+        QImage image = window.grab().toImage();
+        // The 3D view is a native window, which QWidget::grab() does not capture: its own frame over it.
+        if (widgets::ViewportWidget* viewport = window.viewport(); viewport && viewport->isVisible()) {
+            const QImage frame = viewport->grabFramebuffer();
+            if (!frame.isNull()) {
+                QPainter painter(&image);
+                painter.drawImage(QRect(viewport->mapTo(&window, QPoint(0, 0)), viewport->size()), frame);
+            }
+        }
+        if (!image.save(path, "PNG")) {
             std::fprintf(stderr, "stylos: %s: could not write the image\n", qPrintable(path));
             QApplication::exit(1);
             return;

@@ -3,8 +3,6 @@
 #include "stylos/widgets/ViewportWidget.h"
 
 #include <QElapsedTimer>
-#include <QOpenGLContext>
-#include <QOpenGLFunctions>
 #include <QTimer>
 
 #include <algorithm>
@@ -36,7 +34,7 @@ void OrbitBenchmark::waitForView()
     const bool drawn = m_viewport->firstFrameMs() >= 0;
     const bool settled = !m_options.waitUntilRefined || m_viewport->isSettled();
     if (drawn && settled) {
-        m_viewport->repaint(); // the refined view, drawn once
+        m_viewport->renderNow(); // the refined view, drawn once
         m_firstFrameMs = m_viewport->firstFrameMs();
         m_refinedPoints = m_viewport->lastPointsDrawn();
         QTimer::singleShot(0, this, &OrbitBenchmark::step);
@@ -55,10 +53,7 @@ void OrbitBenchmark::step()
     Camera camera = m_viewport->camera();
     camera.orbit(m_options.degreesPerFrame * M_PI / 180.0, 0.0);
     m_viewport->setCamera(camera, true);
-    m_viewport->repaint();
-    m_viewport->makeCurrent();
-    m_viewport->context()->functions()->glFinish();
-    m_viewport->doneCurrent();
+    m_viewport->renderNow(); // drawn, swapped and finished (glFinish)
     m_ms.push_back(double(timer.nsecsElapsed()) * 1e-6);
     m_points.push_back(m_viewport->lastPointsDrawn());
     QTimer::singleShot(0, this, &OrbitBenchmark::step);

@@ -1,9 +1,13 @@
 #include "stylos/widgets/ViewportWidget.h"
 
+#include "stylos/widgets/ViewportWindow.h"
+
 #include <QGuiApplication>
 #include <QKeyEvent>
 #include <QMouseEvent>
 #include <QOpenGLContext>
+#include <QPaintEvent>
+#include <QResizeEvent>
 #include <QSurfaceFormat>
 #include <QWheelEvent>
 
@@ -20,36 +24,51 @@ constexpr int ClickTolerance = 4; ///< a press and release closer than this (Man
 
 } // namespace
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QOpenGLWidget(parent)
+ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent)
 {
     qRegisterMetaType<Eigen::Vector3d>();
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
     format.setVersion(3, 3);
     format.setProfile(QSurfaceFormat::CoreProfile);
     format.setDepthBufferSize(24);
-    setFormat(format);
+    m_window = new ViewportWindow({[this] { initializeGL(); }, [this] { resizeGL(); },
+                                   [this](unsigned framebuffer) { paintGL(framebuffer); }});
+    m_window->setFormat(format);
+    m_container = QWidget::createWindowContainer(m_window, this);
+    m_container->setObjectName(QStringLiteral("viewportContainer"));
+    // Input goes to this widget (the window is transparent for it), and so does the focus.
+    m_container->setAttribute(Qt::WA_TransparentForMouseEvents);
+    m_container->setFocusPolicy(Qt::NoFocus);
+    m_container->setGeometry(rect());
+    setAttribute(Qt::WA_OpaquePaintEvent);
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
     setMinimumSize(160, 120);
     m_camera.setStandardView(StandardView::Iso);
-    setUpdateBehavior(QOpenGLWidget::PartialUpdate); // paintGL draws everything; nothing to clear for it
     m_stepTimer.setSingleShot(true);
     m_stepTimer.setInterval(0);
     connect(&m_stepTimer, &QTimer::timeout, this, &ViewportWidget::imageStep);
     connect(&m_scheduler, &LodScheduler::cutReady, this, [this](std::shared_ptr<const LodScheduler::CutBatch> batch) {
         m_pending = std::move(batch);
-        if (m_renderer.isInitialized() && isValid()) {
-            makeCurrent();
+        if (m_renderer.isInitialized() && m_window->isValid()) {
+            m_window->makeCurrent();
             uploadPending();
-            doneCurrent();
+            m_window->doneCurrent();
         }
         invalidateImage(false); // the image on screen stays until the new one is complete
     });
     connect(&m_scheduler, &LodScheduler::motionStopped, this, [this] { invalidateImage(false); });
-    connect(this, &QOpenGLWidget::frameSwapped, this, [this] { closeFrame(true); });
+    connect(m_window, &QOpenGLWindow::frameSwapped, this, [this] { closeFrame(true); });
 }
 
-ViewportWidget::~ViewportWidget() { releaseGl(); }
+ViewportWidget::~ViewportWidget()
+{
+    releaseGl();
+    // The window (and its context) goes now, while what its callbacks reach is still alive.
+    m_window->disconnect(this);
+    if (QOpenGLContext* context = m_window->context()) context->disconnect(this);
+    delete m_container;
+}
 
 bool ViewportWidget::isSupported()
 {
@@ -66,17 +85,25 @@ bool ViewportWidget::isSupported()
 
 void ViewportWidget::releaseGl()
 {
-    if (!m_renderer.isInitialized() || !context()) return;
-    makeCurrent();
+    if (!m_renderer.isInitialized() || !m_window->context()) return;
+    m_window->makeCurrent();
     m_renderer.release();
-    doneCurrent();
+    m_window->doneCurrent();
 }
 
-QSize ViewportWidget::deviceSize() const
-{
-    const double ratio = devicePixelRatioF();
-    return QSize(std::max(1, int(std::lround(width() * ratio))), std::max(1, int(std::lround(height() * ratio))));
-}
+QSize ViewportWidget::deviceSize() const { return m_window->deviceSize(); }
+
+double ViewportWidget::glPixelRatio() const { return m_window->devicePixelRatio(); }
+
+void ViewportWidget::requestFrame() { m_window->scheduleRender(); }
+
+bool ViewportWidget::renderNow() { return m_window->renderNow(true); }
+
+QImage ViewportWidget::grabFramebuffer() { return m_window->grabFrame(); }
+
+void ViewportWidget::paintEvent(QPaintEvent*) { requestFrame(); }
+
+void ViewportWidget::resizeEvent(QResizeEvent*) { m_container->setGeometry(rect()); }
 
 bool ViewportWidget::isSettled() const
 {
@@ -98,18 +125,19 @@ void ViewportWidget::invalidateImage(bool repaint)
 {
     m_renderer.restartImage();
     if (!m_scheduler.isMoving()) m_stepTimer.start();
-    if (repaint) update();
+    if (repaint) requestFrame();
 }
 
 void ViewportWidget::imageStep()
 {
-    if (m_scheduler.isMoving() || m_renderer.isImageComplete() || !m_renderer.isInitialized() || !isValid()) return;
-    makeCurrent();
+    if (m_scheduler.isMoving() || m_renderer.isImageComplete() || !m_renderer.isInitialized() || !m_window->isValid())
+        return;
+    m_window->makeCurrent();
     uploadPending();
     QElapsedTimer timer;
     timer.start();
-    const std::uint64_t drawn = m_renderer.drawImageStep(m_camera, deviceSize(), devicePixelRatioF(), m_stepPoints);
-    doneCurrent();
+    const std::uint64_t drawn = m_renderer.drawImageStep(m_camera, deviceSize(), glPixelRatio(), m_stepPoints);
+    m_window->doneCurrent();
     // Slices of about one target frame time, so that input is handled between them (no composition here:
     // its own controller, not the scheduler's).
     const double ms = double(timer.nsecsElapsed()) * 1e-6;
@@ -121,7 +149,7 @@ void ViewportWidget::imageStep()
         m_stepTimer.start();
         return;
     }
-    update();
+    requestFrame();
     if (isSettled()) Q_EMIT refined();
 }
 
@@ -135,7 +163,7 @@ void ViewportWidget::setFragments(std::vector<RenderFragment> fragments)
     m_camera.setSceneBounds(widgets::sceneBounds(fragments));
     if (fit) m_camera.fit(m_camera.sceneBounds());
     m_scheduler.setFragments(std::move(fragments), m_camera);
-    update();
+    requestFrame();
     if (fit) Q_EMIT cameraChanged();
 }
 
@@ -206,7 +234,7 @@ void ViewportWidget::setRoundSplats(bool round)
 void ViewportWidget::setMotionResolution(double scale)
 {
     m_renderer.setMotionResolution(scale);
-    update();
+    requestFrame();
 }
 
 void ViewportWidget::setCullBackFacesWhileMoving(bool cull) { m_renderer.setCullBackFacesWhileMoving(cull); }
@@ -214,7 +242,7 @@ void ViewportWidget::setCullBackFacesWhileMoving(bool cull) { m_renderer.setCull
 void ViewportWidget::setMarker(const std::optional<Eigen::Vector3d>& point)
 {
     m_renderer.marker().setMarker(point);
-    update();
+    requestFrame();
 }
 
 std::optional<ViewportWidget::Pick> ViewportWidget::pickAt(const QPointF& pixel) const
@@ -231,18 +259,21 @@ void ViewportWidget::initializeGL()
     }
     m_fragmentsChanged = true;
     invalidateImage(false);
-    connect(context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl, Qt::UniqueConnection);
+    connect(m_window->context(), &QOpenGLContext::aboutToBeDestroyed, this, &ViewportWidget::releaseGl,
+            Qt::UniqueConnection);
 }
 
-void ViewportWidget::resizeGL(int, int)
+void ViewportWidget::resizeGL()
 {
+    // The window's size: what the GL draws (the container gives it this widget's size).
     invalidateImage(false);
-    if (width() == m_camera.width() && height() == m_camera.height()) return;
-    m_camera.setViewport(width(), height());
+    const int w = m_window->width(), h = m_window->height();
+    if (w == m_camera.width() && h == m_camera.height()) return;
+    m_camera.setViewport(w, h);
     m_scheduler.cameraSettled(m_camera);
 }
 
-void ViewportWidget::paintGL()
+void ViewportWidget::paintGL(unsigned framebuffer)
 {
     if (m_frameOpen) closeFrame(false); // the previous frame never reached the screen (a grab, a hidden view)
     m_frameTimer.start();
@@ -250,11 +281,11 @@ void ViewportWidget::paintGL()
     const QSize size = deviceSize();
     const bool moving = m_scheduler.isMoving();
     // The complete full-detail image when there is one; otherwise a quick frame (moving, or a preview).
-    const bool complete = !moving && m_renderer.isImageComplete() && m_renderer.presentImage(defaultFramebufferObject(), size);
+    const bool complete = !moving && m_renderer.isImageComplete() && m_renderer.presentImage(framebuffer, size);
     const std::uint64_t drawn = complete ? m_renderer.imagePoints()
-                                         : m_renderer.drawQuick(m_camera, defaultFramebufferObject(), size,
-                                                                devicePixelRatioF(), m_scheduler.drawLimit(), moving);
-    m_renderer.finishFrame(m_camera, devicePixelRatioF());
+                                         : m_renderer.drawQuick(m_camera, framebuffer, size, glPixelRatio(),
+                                                                m_scheduler.drawLimit(), moving);
+    m_renderer.finishFrame(m_camera, glPixelRatio());
     m_lastFrameMs = double(m_frameTimer.nsecsElapsed()) * 1e-6;
     m_lastPoints = drawn;
     m_frameOpen = true;
@@ -330,7 +361,7 @@ void ViewportWidget::keyPressEvent(QKeyEvent* event)
     case Qt::Key_7: setStandardView(ctrl ? StandardView::Bottom : StandardView::Top); break;
     case Qt::Key_0: setStandardView(StandardView::Iso); break;
     case Qt::Key_5: setOrthographic(!m_camera.isOrthographic()); break;
-    default: QOpenGLWidget::keyPressEvent(event); return;
+    default: QWidget::keyPressEvent(event); return;
     }
     event->accept();
 }

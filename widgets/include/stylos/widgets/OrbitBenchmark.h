@@ -2,8 +2,8 @@
 /** @file
  * @brief Automation: orbits the camera of a ViewportWidget for N frames and reports the frame times,
  *        for `stylos --orbit-benchmark N FILE` and for measurements. Each frame turns the camera about
- *        the scene's vertical axis through the target, repaints the widget synchronously (QWidget::repaint:
- *        drawing and composition) and waits for the GPU (glFinish); the time of the whole is measured with
+ *        the scene's vertical axis through the target, draws a frame synchronously (ViewportWidget::renderNow:
+ *        drawing and the swap of the view's native window) and waits for the GPU (glFinish); the time of the whole is measured with
  *        QElapsedTimer. Between frames control returns to the event loop (a zero timer), so that the
  *        level-of-detail cuts computed in the background are delivered as they would be interactively.
  *

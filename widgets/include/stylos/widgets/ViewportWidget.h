@@ -1,8 +1,13 @@
 #pragma once
 /** @file
- * @brief The 3D view: a thin QOpenGLWidget (OpenGL 3.3 core) that forwards to the Camera, the
- *        LodScheduler (which cells to draw, computed in the background), the PointRenderer and the
- *        MarkerRenderer. It only turns input into camera moves and picks, and paints.
+ * @brief The 3D view: a thin QWidget that forwards to the Camera, the LodScheduler (which cells to draw,
+ *        computed in the background), the PointRenderer and the MarkerRenderer. It only turns input into
+ *        camera moves and picks, and paints: into a native OpenGL 3.3 core window (ViewportWindow) shown
+ *        in it through QWidget::createWindowContainer, which draws and swaps straight to the screen —
+ *        no QOpenGLWidget composition into the top-level window (tens of ms a frame on llvmpipe).
+ *        That window is transparent for input: this widget receives the mouse, the wheel and the keys,
+ *        and holds the focus (its actions' shortcuts work as for any widget). QWidget::grab() does not
+ *        capture the native window: grabFramebuffer() does.
  *
  * Mouse: left drag orbits about the target, right or middle drag (or Shift + left) pans, the wheel
  * dollies; a left click (press and release within 4 pixels) picks the surface point under the cursor
@@ -13,7 +18,7 @@
  *
  * Frames: while the camera moves, each paint draws an even subsample of the cuts (LodScheduler::drawLimit()
  * points, splats enlarged) without the back faces, so that a frame stays near the target time (the frame
- * time measured includes the window's composition, up to frameSwapped()). When it stops, the full-detail
+ * time measured includes the swap of the native window). When it stops, the full-detail
  * image is drawn offscreen in slices, each a short step on the GUI thread between events (sized to take
  * about the target frame time), while the last image stays on screen; it is shown when complete, and
  * again after each refinement stage.
@@ -29,8 +34,9 @@
 #include "stylos/widgets/ViewRenderer.h"
 
 #include <QElapsedTimer>
+#include <QImage>
 #include <QMetaType>
-#include <QOpenGLWidget>
+#include <QWidget>
 #include <QPoint>
 #include <QTimer>
 
@@ -44,7 +50,9 @@
 
 namespace stylos::widgets {
 
-class ViewportWidget : public QOpenGLWidget {
+class ViewportWindow;
+
+class ViewportWidget : public QWidget {
     Q_OBJECT
 
 public:
@@ -55,7 +63,7 @@ public:
 
     /**
      * @brief Whether this platform can show the view: an OpenGL 3.3 core context can be created (not on
-     *        Qt's offscreen platform, where Qt 6.4 crashes composing a QOpenGLWidget). Create the view only
+     *        Qt's offscreen platform, which has no native OpenGL windows). Create the view only
      *        when true; otherwise show a message in its place. Needs a QGuiApplication.
      */
     static bool isSupported();
@@ -93,8 +101,15 @@ public:
     /** @brief The surface point under the position @p pixel (logical pixels), if any. */
     std::optional<Pick> pickAt(const QPointF& pixel) const;
 
-    /** @brief Time of the last frame, ms — drawing, glFinish and, once the window has been composed and
-     *         swapped (frameSwapped()), the composition — and the points it drew. */
+    /** @brief Paints and swaps a frame now and waits for the GL to finish it (false: the view is not
+     *         exposed); QWidget::repaint() does not reach the native window. */
+    bool renderNow();
+    /** @brief Draws a frame and returns it (device pixels), as QOpenGLWidget::grabFramebuffer() did;
+     *         null before the GL has started. */
+    QImage grabFramebuffer();
+
+    /** @brief Time of the last frame, ms — drawing, glFinish and, once the window has swapped, the
+     *         swap — and the points it drew. */
     double lastFrameMs() const { return m_lastFrameMs; }
     std::uint64_t lastPointsDrawn() const { return m_lastPoints; }
     /** @brief ms from the last setFragments() to the first frame that drew points; −1 before it. */
@@ -114,9 +129,11 @@ Q_SIGNALS:
     void cameraChanged();
 
 protected:
-    void initializeGL() override;
-    void resizeGL(int width, int height) override;
-    void paintGL() override;
+    void initializeGL();
+    void resizeGL();
+    void paintGL(unsigned framebuffer);
+    void paintEvent(QPaintEvent* event) override;
+    void resizeEvent(QResizeEvent* event) override;
     void mousePressEvent(QMouseEvent* event) override;
     void mouseMoveEvent(QMouseEvent* event) override;
     void mouseReleaseEvent(QMouseEvent* event) override;
@@ -125,6 +142,8 @@ protected:
 
 private:
     void cameraEdited(bool moving);
+    /** Schedules a frame of the native window (what QWidget::update() was). */
+    void requestFrame();
     void releaseGl();
     void uploadPending();
     /** The frame painted last is on screen (@p swapped: its time includes the composition), or another
@@ -134,7 +153,10 @@ private:
     void invalidateImage(bool repaint);
     void imageStep();
     QSize deviceSize() const;
+    double glPixelRatio() const;
 
+    ViewportWindow* m_window = nullptr; ///< owned by m_container
+    QWidget* m_container = nullptr;     ///< child; fills this widget
     Camera m_camera;
     LodScheduler m_scheduler;
     ViewRenderer m_renderer;
