@@ -1,16 +1,16 @@
 // stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
 //               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--json]
-#include "AoScratchFolder.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
 
 #include "stylos/core/ao/AmbientOcclusion.h"
 #include "stylos/core/ao/AoCells.h"
-#include "stylos/core/ao/AoExport.h"
+#include "stylos/core/ao/SkydomeLayer.h"
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/util/ScratchFolder.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,7 +20,6 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
-#include <numeric>
 #include <optional>
 #include <thread>
 
@@ -147,11 +146,11 @@ int runAo(const std::vector<std::string>& args)
 
     const auto start = Clock::now();
     // A point file: its octree first, in a folder beside the output that goes when this function returns.
-    AoScratchFolder scratch;
+    core::ScratchFolder scratch;
     fs::path octreePath = r.input;
     std::optional<oct::BuildReport> built;
     if (!r.poctInput) {
-        if (auto s = scratch.create(fs::path(r.output)); !s) return fail(s.error());
+        if (auto s = scratch.create(fs::path(r.output), "ao"); !s) return fail(s.error());
         octreePath = scratch.path() / "octree.poct";
         ConsoleProgress progress("building the octree of " + r.input);
         auto report = oct::buildOctreeFile(r.input, octreePath, r.build, &progress, r.read);
@@ -168,37 +167,23 @@ int runAo(const std::vector<std::string>& args)
     if (level > octree.depth())
         return usageError(cl, "--level " + std::to_string(level) + " is outside the levels 0.." +
                                   std::to_string(octree.depth()) + " of " + r.input);
-    ao::AoCells cells;
-    {
-        ConsoleProgress progress("reading the cells of level " + std::to_string(level));
-        auto read = ao::cellsAtLevel(octree, level, &progress);
-        if (!read) return fail(read.error());
-        cells = std::move(read).value();
-    }
-    const double readSeconds = secondsSince(readStart);
-
-    const auto aoStart = Clock::now();
-    std::vector<float> perLeaf;
-    {
-        ConsoleProgress progress("skydome, " + std::to_string(r.options.directions) + " directions");
-        auto values = ao::computeAmbientOcclusion(cells, r.options, &progress);
-        if (!values) return fail(values.error());
-        perLeaf = ao::valuesPerLeaf(cells, values.value());
-    }
-    const double aoSeconds = secondsSince(aoStart);
-
-    const auto writeStart = Clock::now();
+    const double openSeconds = secondsSince(readStart);
     const bool inPlace = !r.plyOutput && sameFile(octreePath, r.output);
+    ao::SkydomeLayerOptions layer;
+    layer.ao = r.options;
+    layer.level = level;
+    layer.output = r.plyOutput ? ao::SkydomeOutput::Ply : ao::SkydomeOutput::Poct;
+    ao::SkydomeLayerReport made;
     {
-        ConsoleProgress progress("writing " + r.output);
-        auto written = r.plyOutput ? ao::writeAmbientPly(octree, perLeaf, r.output, &progress)
-                                   : ao::writeAmbientPoct(octree, perLeaf, r.output, &progress);
-        if (!written) return fail(written.error());
+        ConsoleProgress progress("skydome of level " + std::to_string(level) + ", " +
+                                 std::to_string(r.options.directions) + " directions, to " + r.output);
+        auto report = ao::computeSkydomeLayer(octree, r.output, layer, &progress);
+        if (!report) return fail(report.error());
+        made = *report;
     }
-    const double writeSeconds = secondsSince(writeStart);
+    const double readSeconds = openSeconds + made.readSeconds;
     const double seconds = secondsSince(start);
-    const double mean =
-        perLeaf.empty() ? 0.0 : std::accumulate(perLeaf.begin(), perLeaf.end(), 0.0) / double(perLeaf.size());
+    const double mean = made.meanAmbient;
     const unsigned threads = r.options.threads ? r.options.threads : std::max(1u, std::thread::hardware_concurrency());
 
     if (r.json) {
@@ -207,10 +192,10 @@ int runAo(const std::vector<std::string>& args)
                          {"format", r.plyOutput ? "ply" : "poct"},
                          {"in_place", inPlace},
                          {"directions", r.options.directions},
-                         {"cells", cells.size()},
+                         {"cells", made.cells},
                          {"level", level},
                          {"depth", octree.depth()},
-                         {"leaves", perLeaf.size()},
+                         {"leaves", made.leaves},
                          {"method", ao::aoMethodName(r.options.method)},
                          {"upper_hemisphere", r.options.upperHemisphere},
                          {"cosine", r.options.cosineWeighted},
@@ -221,8 +206,8 @@ int runAo(const std::vector<std::string>& args)
                          {"normals_estimated", built && built->normalsEstimated},
                          {"build_seconds", buildSeconds},
                          {"read_seconds", readSeconds},
-                         {"ao_seconds", aoSeconds},
-                         {"write_seconds", writeSeconds},
+                         {"ao_seconds", made.aoSeconds},
+                         {"write_seconds", made.writeSeconds},
                          {"seconds", seconds}};
         std::cout << j.dump() << "\n";
     } else {
@@ -232,9 +217,9 @@ int runAo(const std::vector<std::string>& args)
                         static_cast<unsigned long long>(built->leaves), built->depth,
                         built->normalsEstimated ? " (normals estimated)" : "", buildSeconds);
         std::printf("skydome of %zu cells at level %d (%zu leaves), %d directions, %s: mean ambient %.4f; wrote %s%s\n",
-                    cells.size(), level, perLeaf.size(), r.options.directions, ao::aoMethodName(r.options.method), mean,
+                    static_cast<std::size_t>(made.cells), level, static_cast<std::size_t>(made.leaves), r.options.directions, ao::aoMethodName(r.options.method), mean,
                     r.output.c_str(), inPlace ? " (in place)" : "");
-        std::printf("read %.2f s, skydome %.2f s, write %.2f s, total %.2f s\n", readSeconds, aoSeconds, writeSeconds,
+        std::printf("read %.2f s, skydome %.2f s, write %.2f s, total %.2f s\n", readSeconds, made.aoSeconds, made.writeSeconds,
                     seconds);
     }
     return ExitOk;

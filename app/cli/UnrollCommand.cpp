@@ -6,10 +6,8 @@
 #include "ConsoleProgress.h"
 #include "UnrollShading.h"
 
-#include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/image/ImageWriter.h"
-#include "stylos/core/unroll/SurfaceFit.h"
-#include "stylos/core/unroll/Unroller.h"
 
 #include <nlohmann/json.hpp>
 
@@ -25,6 +23,7 @@ namespace stylos::cli {
 namespace {
 
 namespace unroll = core::unroll;
+namespace dev = core::developpee;
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
@@ -59,9 +58,7 @@ bool parseAxis(const std::string& text, unroll::Axis& axis, std::string& problem
 }
 
 struct UnrollRequest {
-    unroll::FitOptions fit;
-    unroll::UnrollOptions unroll;
-    ShadingRequest shading;
+    dev::DeveloppeeOptions options;
     std::string input, output, heights;
     std::optional<core::image::SampleFormat> bits;
     bool json = false;
@@ -78,11 +75,11 @@ bool parseRequest(CommandLine& cl, UnrollRequest& r, std::string& problem)
     r.json = cl.flag("json");
     const auto kind = unroll::surfaceKindFromName(cl.value("surface").value_or("cylinder"));
     if (!kind) return problem = "unknown surface \"" + *cl.value("surface") + "\" (cylinder, cone or revolution)", false;
-    r.fit.kind = *kind;
+    r.options.surface = *kind;
     if (const auto axis = cl.value("axis")) {
         unroll::Axis a;
         if (!parseAxis(*axis, a, problem)) return false;
-        r.fit.axis = a;
+        r.options.axis = a;
     }
     double pixel = 0, cut = 0;
     long long threads = 0, bits = 0;
@@ -91,17 +88,17 @@ bool parseRequest(CommandLine& cl, UnrollRequest& r, std::string& problem)
         return problem = cl.error(), false;
     if (cl.value("pixel-size")) {
         if (!(pixel > 0)) return problem = "--pixel-size must be a positive length in metres", false;
-        r.unroll.pixelSize = pixel;
+        r.options.pixelSize = pixel;
     }
-    if (cl.value("cut-angle")) r.unroll.cutAngle = cut * std::numbers::pi / 180.0;
+    if (cl.value("cut-angle")) r.options.cutAngle = cut * std::numbers::pi / 180.0;
     if (threads < 0 || threads > 1024) return problem = "--threads must be between 0 and 1024", false;
-    r.fit.threads = r.unroll.threads = static_cast<unsigned>(threads);
+    r.options.threads = static_cast<unsigned>(threads);
     if (cl.value("bits")) {
         if (bits != 8 && bits != 16) return problem = "--bits must be 8 or 16", false;
         r.bits = bits == 8 ? core::image::SampleFormat::UInt8 : core::image::SampleFormat::UInt16;
     }
-    r.unroll.fillHoles = !cl.flag("no-fill");
-    return parseShading(cl, r.shading, r.fit.threads, problem);
+    r.options.fillHoles = !cl.flag("no-fill");
+    return parseShading(cl, r.options, problem);
 }
 
 int fail(const core::Error& error)
@@ -125,7 +122,7 @@ int runUnroll(const std::vector<std::string>& args)
                     {"raw", "", "skydome: write the exact fraction of the sky, not the 1-99 % contrast stretch"},
                     {"light-azimuth", "DEG", "light: clockwise from up (default 315, upper left)"},
                     {"light-elevation", "DEG", "light: above the horizon, 0..90 (default 45)"},
-                    {"pixel-size", "M", "metres per pixel (default: the sampling spacing)"},
+                    {"pixel-size", "M", "metres per pixel (default: the sampling spacing, at least 3 leaf edges of a .poct)"},
                     {"cut-angle", "DEG", "azimuth of the seam about the axis (default: where there are fewest points)"},
                     {"heights", "FILE", "also write the raw heights in metres (.tif or .exr, float)"},
                     {"bits", "N", "8 or 16 bits per sample for PNG and TIFF"},
@@ -146,42 +143,27 @@ int runUnroll(const std::vector<std::string>& args)
     if (auto s = checkImagePaths(r.output, r.heights, r.bits); !s) return usageError(cl, s.error().message);
 
     const auto start = Clock::now();
-    core::cloud::PointCloud cloud;
-    {
-        ConsoleProgress progress("reading " + r.input);
-        auto loaded = core::cloud::loadPointCloud(r.input, {}, &progress);
-        if (!loaded) return fail(loaded.error());
-        cloud = std::move(loaded).value();
-    }
-    const double loadSeconds = secondsSince(start);
-    ConsoleProgress fitProgress("fitting the surface");
-    auto fit = unroll::fitSurface(cloud, r.fit, &fitProgress);
-    if (!fit) return fail(fit.error());
-    ConsoleProgress unrollProgress("unrolling");
-    auto unrolled = unroll::unrollCloud(cloud, fit->surface, r.unroll, &unrollProgress);
-    if (!unrolled) return fail(unrolled.error());
-    cloud = {}; // the points are no longer needed: give the memory back before shading
-
-    const auto shadingStart = Clock::now();
-    auto shaded = shade(unrolled->field, r.shading);
-    if (!shaded) return fail(shaded.error());
-    const double shadingSeconds = secondsSince(shadingStart);
+    ConsoleProgress progress("unrolling " + r.input);
+    auto made = dev::computeDeveloppee(r.input, r.options, &progress);
+    if (!made) return fail(made.error());
+    const dev::Developpee& d = *made;
+    const char* shadingKey = dev::shadingInfo(r.options.shading).key;
 
     core::image::ImageWriteOptions write;
     write.format = r.bits;
-    write.metadata = {{"stylos:shading", shadingName(r.shading.kind)}, {"stylos:source", r.input}};
-    if (auto s = core::image::writeShadedImage(*shaded, r.output, write); !s) return fail(s.error());
+    write.metadata = {{"stylos:shading", shadingKey}, {"stylos:source", r.input}};
+    if (auto s = core::image::writeShadedImage(d.shaded, r.output, write); !s) return fail(s.error());
     if (!r.heights.empty()) {
         core::image::ImageWriteOptions heights;
         heights.metadata = {{"stylos:source", r.input}};
-        if (auto s = core::image::writeHeightImage(unrolled->field, r.heights, heights); !s) return fail(s.error());
+        if (auto s = core::image::writeHeightImage(d.field, r.heights, heights); !s) return fail(s.error());
     }
     const std::string sidecar = r.output + ".json";
-    if (auto s = unrolled->map.writeSidecar(sidecar); !s) return fail(s.error());
+    if (auto s = d.map.writeSidecar(sidecar); !s) return fail(s.error());
     const double seconds = secondsSince(start);
 
-    const unroll::Surface& surface = fit->surface;
-    const unroll::UnrollReport& u = unrolled->report;
+    const unroll::Surface& surface = d.fit.surface;
+    const unroll::UnrollReport& u = d.unroll;
     if (r.json) {
         nlohmann::json j{{"input", r.input},
                          {"output", r.output},
@@ -190,32 +172,34 @@ int runUnroll(const std::vector<std::string>& args)
                          {"axis_point", vectorJson(surface.axis().point)},
                          {"axis_dir", vectorJson(surface.axis().direction)},
                          {"radius", surface.referenceRadius()},
-                         {"width", unrolled->field.width()},
-                         {"height", unrolled->field.height()},
+                         {"width", d.field.width()},
+                         {"height", d.field.height()},
                          {"pixel_size", u.pixelSize},
                          {"cut_angle", u.cutAngle * 180.0 / std::numbers::pi},
-                         {"shading", shadingName(r.shading.kind)},
-                         {"directions", r.shading.kind == ShadingKind::Skydome ? r.shading.skydome.directions : 0},
+                         {"shading", shadingKey},
+                         {"directions", r.options.shading == dev::Shading::Skydome ? r.options.directions : 0},
                          {"filled_fraction", u.filledFraction},
+                         {"coverage", u.coverage},
+                         {"sampling_spacing", u.samplingSpacing},
                          {"points", u.points},
                          {"points_used", u.pointsUsed},
                          {"points_off_surface", u.pointsOffSurface},
-                         {"fit_rms", fit->rmsResidual},
-                         {"inlier_fraction", fit->inlierFraction},
-                         {"load_seconds", loadSeconds},
-                         {"fit_seconds", fit->seconds},
+                         {"fit_rms", d.fit.rmsResidual},
+                         {"inlier_fraction", d.fit.inlierFraction},
+                         {"load_seconds", d.timings.load},
+                         {"fit_seconds", d.timings.fit},
                          {"unroll_seconds", u.seconds},
-                         {"shading_seconds", shadingSeconds},
+                         {"shading_seconds", d.timings.shading},
                          {"seconds", seconds}};
         if (surface.kind() == unroll::SurfaceKind::Cone) j["slope"] = surface.slope();
         std::cout << j.dump() << "\n";
     } else {
-        std::printf("unrolled %s to %s (%d x %d pixels of %.3f mm): %s, radius %.2f mm, fit RMS %.3f mm, %.1f %% filled\n",
-                    r.input.c_str(), r.output.c_str(), unrolled->field.width(), unrolled->field.height(),
+        std::printf("unrolled %s to %s (%d x %d pixels of %.3f mm): %s, radius %.2f mm, fit RMS %.3f mm, %.1f %% covered, %.1f %% filled\n",
+                    r.input.c_str(), r.output.c_str(), d.field.width(), d.field.height(),
                     u.pixelSize * 1e3, unroll::surfaceKindName(surface.kind()), surface.referenceRadius() * 1e3,
-                    fit->rmsResidual * 1e3, u.filledFraction * 100.0);
+                    d.fit.rmsResidual * 1e3, u.coverage * 100.0, u.filledFraction * 100.0);
         std::printf("read %.2f s, fit %.2f s, unroll %.2f s, %s shading %.2f s, total %.2f s; map in %s\n",
-                    loadSeconds, fit->seconds, u.seconds, shadingName(r.shading.kind), shadingSeconds, seconds,
+                    d.timings.load, d.timings.fit, u.seconds, shadingKey, d.timings.shading, seconds,
                     sidecar.c_str());
     }
     return ExitOk;

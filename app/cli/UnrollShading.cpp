@@ -1,7 +1,5 @@
 #include "UnrollShading.h"
 
-#include "stylos/core/shading/ContrastStretch.h"
-
 #include <algorithm>
 #include <cctype>
 #include <filesystem>
@@ -22,56 +20,32 @@ core::Error invalid(const std::string& problem) { return core::Error{core::Error
 
 } // namespace
 
-const char* shadingName(ShadingKind kind)
+bool parseShading(CommandLine& cl, core::developpee::DeveloppeeOptions& options, std::string& problem)
 {
-    switch (kind) {
-    case ShadingKind::Height: return "height";
-    case ShadingKind::Light: return "light";
-    case ShadingKind::Skydome: return "skydome";
-    }
-    return "skydome";
-}
-
-bool parseShading(CommandLine& cl, ShadingRequest& request, unsigned threads, std::string& problem)
-{
-    const std::string name = cl.value("shading").value_or("skydome");
-    if (name == "height") request.kind = ShadingKind::Height;
-    else if (name == "light") request.kind = ShadingKind::Light;
-    else if (name == "skydome") request.kind = ShadingKind::Skydome;
-    else return problem = "unknown shading \"" + name + "\" (height, light or skydome)", false;
-    long long directions = request.skydome.directions;
+    namespace dev = core::developpee;
+    const std::string name = cl.value("shading").value_or(dev::shadingInfo(options.shading).key);
+    const auto kind = dev::shadingFromKey(name);
+    if (!kind) return problem = "unknown shading \"" + name + "\" (" + dev::shadingKeyList() + ")", false;
+    options.shading = *kind;
+    long long directions = options.directions;
     double azimuth = 315.0, elevation = 45.0;
     if (!cl.integer("directions", directions) || !cl.number("light-azimuth", azimuth) ||
         !cl.number("light-elevation", elevation))
         return problem = cl.error(), false;
-    if (directions < 1 || directions > 4096) return problem = "--directions must be between 1 and 4096", false;
+    if (directions < dev::DeveloppeeOptions::kMinDirections || directions > dev::DeveloppeeOptions::kMaxDirections)
+        return problem = "--directions must be between 1 and 4096", false;
     if (elevation < 0.0 || elevation > 90.0) return problem = "--light-elevation must be between 0 and 90 degrees", false;
-    if (cl.value("directions") && request.kind != ShadingKind::Skydome)
+    if (cl.value("directions") && options.shading != dev::Shading::Skydome)
         return problem = "--directions applies to --shading skydome only", false;
-    if (cl.flag("raw") && request.kind != ShadingKind::Skydome)
+    if (cl.flag("raw") && options.shading != dev::Shading::Skydome)
         return problem = "--raw applies to --shading skydome only", false;
-    request.stretch = !cl.flag("raw");
-    if ((cl.value("light-azimuth") || cl.value("light-elevation")) && request.kind != ShadingKind::Light)
+    options.stretch = !cl.flag("raw");
+    if ((cl.value("light-azimuth") || cl.value("light-elevation")) && options.shading != dev::Shading::Light)
         return problem = "--light-azimuth and --light-elevation apply to --shading light only", false;
-    request.skydome.directions = static_cast<int>(directions);
-    request.skydome.threads = threads;
-    request.light.azimuth = azimuth * std::numbers::pi / 180.0;
-    request.light.elevation = elevation * std::numbers::pi / 180.0;
+    options.directions = static_cast<int>(directions);
+    if (cl.value("light-azimuth")) options.light.azimuth = azimuth * std::numbers::pi / 180.0;
+    if (cl.value("light-elevation")) options.light.elevation = elevation * std::numbers::pi / 180.0;
     return true;
-}
-
-core::Result<core::shading::ShadedImage> shade(const core::shading::HeightField& field, const ShadingRequest& request)
-{
-    switch (request.kind) {
-    case ShadingKind::Height: return core::shading::shadeHeight(field, request.height);
-    case ShadingKind::Light: return core::shading::shadeLight(field, request.light);
-    case ShadingKind::Skydome: break;
-    }
-    auto sky = core::shading::shadeSkydome(field, request.skydome);
-    if (sky && request.stretch) {
-        if (auto range = core::shading::stretchContrast(*sky); !range) return range.error();
-    }
-    return sky;
 }
 
 core::Status checkImagePaths(const std::string& output, const std::string& heights,

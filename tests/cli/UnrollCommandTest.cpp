@@ -5,6 +5,9 @@
 #include "TestSupport.h"
 
 #include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -133,9 +136,12 @@ TEST(CliUnroll, NotASurfaceOfRevolutionAndTooLargeImagesFailAndWriteNothing)
     EXPECT_FALSE(fs::exists(dir / "plane.png"));
 
     const auto scan = generate(dir, "drum", "0.03");
+    // 0.05 mm pixels on points 30 mm apart: refused at once, with the pixel size that works.
     const auto huge = runCli({"unroll", scan, "-o", (dir / "huge.png").string(), "--pixel-size", "0.00005"});
     EXPECT_EQ(huge.exitCode, 1) << huge.err;
-    EXPECT_NE(huge.err.find("32768"), std::string::npos) << huge.err;
+    EXPECT_NE(huge.err.find("a pixel of 0.05 mm would leave the développée mostly empty"), std::string::npos) << huge.err;
+    EXPECT_NE(huge.err.find("give a pixel size of at least"), std::string::npos) << huge.err;
+    EXPECT_EQ(std::count(huge.err.begin(), huge.err.end(), '\n'), 1) << huge.err;
     EXPECT_FALSE(fs::exists(dir / "huge.png"));
     EXPECT_FALSE(fs::exists(dir / "huge.png.json"));
     const auto missing = runCli({"unroll", (dir / "nothing.ply").string(), "-o", (dir / "n.png").string()});
@@ -143,18 +149,25 @@ TEST(CliUnroll, NotASurfaceOfRevolutionAndTooLargeImagesFailAndWriteNothing)
     EXPECT_NE(missing.err.find("nothing.ply"), std::string::npos) << missing.err;
 }
 
-TEST(CliUnroll, PoctInputUsesTheLeafEdgeAsPixelSize)
+TEST(CliUnroll, PoctInputUsesTheSamplingSpacingAndAtLeastThreeLeafEdges)
 {
     TempDir dir;
     const auto scan = generate(dir, "drum", "0.01");
-    const auto poct = (dir / "drum.poct").string();
-    const auto build = runCli({"build", scan, "-o", poct, "--depth", "8", "--json"});
-    ASSERT_EQ(build.exitCode, 0) << build.err;
-    const auto info = nlohmann::json::parse(runCli({"info", poct, "--json"}).out);
-    const auto run = runCli({"unroll", poct, "-o", (dir / "d.png").string(), "--shading", "height", "--json"});
-    ASSERT_EQ(run.exitCode, 0) << run.err;
-    const auto j = nlohmann::json::parse(run.out);
-    EXPECT_EQ(j["points"], nlohmann::json::parse(build.out)["leaves"]);
-    // The root cube's edge over 2^8: the leaf edge.
-    EXPECT_DOUBLE_EQ(j["pixel_size"].get<double>(), info["root_box"]["size"].get<double>() / 256.0);
+    for (const char* depth : {"8", "11"}) {
+        const auto poct = (dir / (std::string("drum-") + depth + ".poct")).string();
+        const auto build = runCli({"build", scan, "-o", poct, "--depth", depth, "--json"});
+        ASSERT_EQ(build.exitCode, 0) << build.err;
+        const auto info = nlohmann::json::parse(runCli({"info", poct, "--json"}).out);
+        const auto run = runCli({"unroll", poct, "-o", (dir / "d.png").string(), "--shading", "height", "--json"});
+        ASSERT_EQ(run.exitCode, 0) << run.err;
+        const auto j = nlohmann::json::parse(run.out);
+        EXPECT_EQ(j["points"], nlohmann::json::parse(build.out)["leaves"]);
+        // The larger of the density's spacing and three leaf edges (the root cube's edge over 2^depth).
+        const double leafEdge = std::ldexp(info["root_box"]["size"].get<double>(), -std::stoi(depth));
+        const double spacing = j["sampling_spacing"].get<double>();
+        EXPECT_DOUBLE_EQ(j["pixel_size"].get<double>(), std::max(spacing, 3.0 * leafEdge)) << depth;
+        EXPECT_GE(j["coverage"].get<double>(), 0.9) << depth;
+        if (std::string(depth) == "8") EXPECT_DOUBLE_EQ(j["pixel_size"].get<double>(), 3.0 * leafEdge);
+        else EXPECT_NEAR(j["pixel_size"].get<double>(), 0.01, 0.002); // the scan's 10 mm, not the 0.6 mm leaves
+    }
 }

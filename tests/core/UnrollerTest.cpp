@@ -44,13 +44,28 @@ cloud::PointCloud cloudOf(const std::vector<Eigen::Vector3d>& points, double spa
     return cloud;
 }
 
+/** A given pixel and cut, no hole filling, no coverage check: for the geometry of sparse hand-made clouds. */
 UnrollOptions given(double pixel, double cut = 0.0)
 {
     UnrollOptions o;
     o.pixelSize = pixel;
     o.cutAngle = cut;
     o.fillHoles = false;
+    o.minCoverage = 0.0;
     return o;
+}
+
+/** A cylinder of radius @p R sampled on a jittered grid of @p d, 100 rows (seeded: always the same). */
+std::vector<Eigen::Vector3d> jitteredCylinder(double R, double d, int rows = 100)
+{
+    std::mt19937_64 random(3);
+    std::uniform_real_distribution<double> jitter(-0.25, 0.25);
+    std::vector<Eigen::Vector3d> points;
+    const int columns = int(2.0 * kPi * R / d);
+    for (int c = 0; c < columns; ++c)
+        for (int j = 0; j < rows; ++j)
+            points.push_back(onCylinder(R, (c + jitter(random)) * d / R, (j + jitter(random)) * d, 0.0));
+    return points;
 }
 
 Unrolled unrolled(const cloud::PointCloud& cloud, const Surface& surface, const UnrollOptions& options)
@@ -300,9 +315,13 @@ TEST(Unroller, PixelSizeDefaultsToTheCloudSpacingOrItsEstimate)
     options.fillHoles = false;
     const Unrolled estimated = unrolled(cloudOf(points), zCylinder(R), options);
     EXPECT_NEAR(estimated.report.pixelSize, d, 0.05 * d);
-    const Unrolled stated = unrolled(cloudOf(points, 0.0025), zCylinder(R), options);
-    EXPECT_EQ(stated.report.pixelSize, 0.0025);
-    EXPECT_EQ(stated.field.pixelSize(), 0.0025);
+    EXPECT_EQ(estimated.report.samplingSpacing, estimated.report.pixelSize);
+    // A stated leaf edge (a .poct): never less than three edges, else the density's spacing.
+    const Unrolled coarse = unrolled(cloudOf(points, 0.0025), zCylinder(R), options);
+    EXPECT_EQ(coarse.report.pixelSize, 3.0 * 0.0025);
+    EXPECT_EQ(coarse.field.pixelSize(), 3.0 * 0.0025);
+    const Unrolled fine = unrolled(cloudOf(points, 0.0005), zCylinder(R), options);
+    EXPECT_EQ(fine.report.pixelSize, estimated.report.pixelSize);
 
     auto few = unrollCloud(cloudOf({onCylinder(R, 0.0, 0.0, 0.0), onCylinder(R, 1.0, 0.1, 0.0)}), zCylinder(R), options);
     ASSERT_FALSE(few.ok());
@@ -461,4 +480,47 @@ TEST(Unroller, GeneratedDrumShowsItsGroovesAtTheRightSpacing)
     for (std::size_t k = 1; k < minima.size(); ++k)
         EXPECT_NEAR(minima[k] - minima[k - 1], pitch, 2.0) << "between grooves " << k - 1 << " and " << k;
     for (double m : minima) EXPECT_NEAR(profile[std::size_t(std::lround(m)) % w], -depth, 0.25 * depth) << m;
+}
+
+TEST(Unroller, TheDefaultPixelCoversTheSurface)
+{
+    const auto points = jitteredCylinder(0.3, 0.003);
+    const Unrolled made = unrolled(cloudOf(points), zCylinder(0.3), UnrollOptions{});
+    EXPECT_NEAR(made.report.samplingSpacing, 0.003, 0.05 * 0.003);
+    EXPECT_GE(made.report.coverage, 0.9);
+    EXPECT_LE(made.report.coverage, 1.0);
+}
+
+TEST(Unroller, APixelFarBelowTheSpacingIsRefusedBeforeRasterising)
+{
+    // 0.3 mm pixels on points 3 mm apart: 0.01 points a pixel, refused at once (no 5.9 M-pixel raster).
+    UnrollOptions o;
+    o.pixelSize = 0.0003;
+    auto r = unrollCloud(cloudOf(jitteredCylinder(0.3, 0.003)), zCylinder(0.3), o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::InvalidArgument);
+    const std::string& m = r.error().message;
+    EXPECT_NE(m.find("test.ply: a pixel of 0.3 mm would leave the développée mostly empty (about 1.0 % of its pixels"),
+              std::string::npos) << m;
+    EXPECT_NE(m.find(": give a pixel size of at least 2.993 mm (the sampling spacing)"), std::string::npos) << m;
+}
+
+TEST(Unroller, APixelThatCoversLittleOfTheSurfaceIsRefusedWithItsCoverage)
+{
+    // 1.2 mm pixels on points 3 mm apart: 0.16 points a pixel passes the prediction, but the empty pixels
+    // join up to the border and cannot be filled: the raster covers a fraction of the footprint.
+    UnrollOptions o;
+    o.pixelSize = 0.0012;
+    auto r = unrollCloud(cloudOf(jitteredCylinder(0.3, 0.003)), zCylinder(0.3), o);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().code, ErrorCode::InvalidArgument);
+    const std::string& m = r.error().message;
+    EXPECT_NE(m.find("test.ply: a pixel of 1.2 mm covers only "), std::string::npos) << m;
+    EXPECT_NE(m.find("covers only 16.0 % of the surface: give a pixel size of at least 2.993 mm"), std::string::npos) << m;
+    // Asked not to check, the same pixel gives that image.
+    o.minCoverage = 0.0;
+    auto unchecked = unrollCloud(cloudOf(jitteredCylinder(0.3, 0.003)), zCylinder(0.3), o);
+    ASSERT_TRUE(unchecked.ok());
+    EXPECT_LT(unchecked->report.coverage, 0.5);
+    EXPECT_GT(unchecked->report.coverage, 0.0);
 }

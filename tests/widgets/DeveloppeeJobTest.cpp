@@ -9,6 +9,9 @@
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/TaskManager.h"
 
+#include <QDir>
+#include <QImage>
+#include <QProcess>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -61,6 +64,7 @@ private Q_SLOTS:
     void computesTheDrum();
     void aPixelMapsOntoTheDrum();
     void shadingsGiveImagesOfTheMapSize();
+    void sameAsTheCommandLine();
     void invalidFileIsNamed();
     void missingFileIsNamed();
     void badSettingsAreRefused();
@@ -102,11 +106,14 @@ void DeveloppeeJobTest::computesTheDrum()
     QCOMPARE(r.heights->height(), r.map->height());
     QCOMPARE(r.image.format(), QImage::Format_ARGB32_Premultiplied);
     QCOMPARE(r.unroll.pixelSize, r.map->pixelSize());
-    // The automatic pixel size of a .poct is three leaf edges: the width is the circumference in them.
+    // The automatic pixel size of a .poct: the sampling spacing, at least three leaf edges; the width is
+    // the circumference in pixels; the image covers the drum.
     auto octree = stylos::core::octree::PackedOctree::open(m_poct.toStdString());
     QVERIFY(octree.ok());
     const double leafEdge = std::ldexp(octree->box().size, -octree->depth());
-    QCOMPARE(r.map->pixelSize(), DeveloppeeJob::PoctPixelEdges * leafEdge);
+    QVERIFY(r.unroll.samplingSpacing > 0.0);
+    QCOMPARE(r.map->pixelSize(), std::max(r.unroll.samplingSpacing, stylos::core::unroll::kLeafEdgesPerPixel * leafEdge));
+    QVERIFY2(r.unroll.coverage >= 0.9, qPrintable(QString::number(r.unroll.coverage)));
     QCOMPARE(r.map->width(), int(std::ceil(r.map->circumference() / r.map->pixelSize())));
     // Not blank: most pixels covered (a drum scanned all round), covered exactly where a height is, greys vary.
     qsizetype covered = 0;
@@ -253,11 +260,12 @@ void DeveloppeeJobTest::cancelGivesCancelledAndNoResult()
 void DeveloppeeJobTest::cancelThroughTheTaskManager()
 {
     TaskManager manager;
-    // A long job (a fine pixel and many skydome directions: tens of seconds) so that Cancel finds it running.
+    // A long job (a finer drum and many skydome directions: seconds) so that Cancel finds it running.
+    QVERIFY(QDir(m_dir.path()).mkpath(QStringLiteral("fine")));
+    const auto fine = stylos::test::makeDrumOctree(m_dir.filePath(QStringLiteral("fine")), 0.004, 9);
     DeveloppeeSettings slow;
-    slow.pixelSize = 0.002;
     slow.directions = DeveloppeeSettings::MaxDirections;
-    const DeveloppeeJob job(m_poct, 1, slow);
+    const DeveloppeeJob job(QString::fromStdString(fine.poct.string()), 1, slow);
     auto* watcher = manager.start<DeveloppeeResult>(job.label(), job);
     QSignalSpy finished(watcher, &QFutureWatcherBase::finished);
     QSignalSpy taskFinished(&manager, &TaskManager::taskFinished);
@@ -291,6 +299,46 @@ void DeveloppeeJobTest::settingsPersist()
     QCOMPARE(loaded.directions, DeveloppeeSettings{}.directions);
     QCOMPARE(loaded.shading, DeveloppeeSettings{}.shading);
     QCOMPARE(loaded.surface, s.surface);
+}
+
+void DeveloppeeJobTest::sameAsTheCommandLine()
+{
+    // The same settings in the Développée dock and on the command line give the same pixels: one
+    // pipeline (core::developpee), one pixel-size rule, one quantisation to 8 bits.
+    struct Case {
+        DeveloppeeShading shading;
+        QStringList args;
+        double pixelSize;
+    };
+    const Case cases[] = {{DeveloppeeShading::Skydome, {QStringLiteral("--directions"), QStringLiteral("24")}, 0.0},
+                          {DeveloppeeShading::Light, {}, 0.0},
+                          {DeveloppeeShading::Height, {QStringLiteral("--pixel-size"), QStringLiteral("0.02")}, 0.02}};
+    for (const Case& c : cases) {
+        DeveloppeeSettings settings;
+        settings.shading = c.shading;
+        settings.directions = 24;
+        settings.pixelSize = c.pixelSize;
+        auto made = DeveloppeeJob(m_poct, 1, settings).run();
+        QVERIFY2(made.ok(), made.ok() ? "" : made.error().message.c_str());
+
+        const QString png = m_dir.filePath(QStringLiteral("cli-%1.png").arg(DeveloppeeSettings::shadingKey(c.shading)));
+        QProcess cli;
+        cli.start(QStringLiteral(STYLOS_CLI),
+                  QStringList{QStringLiteral("unroll"), m_poct, QStringLiteral("-o"), png, QStringLiteral("--shading"),
+                              QString::fromLatin1(DeveloppeeSettings::shadingKey(c.shading))} + c.args);
+        QVERIFY(cli.waitForFinished(120000));
+        QVERIFY2(cli.exitCode() == 0, cli.readAllStandardError().constData());
+        QImage written(png);
+        QVERIFY(!written.isNull());
+        written = written.convertToFormat(QImage::Format_ARGB32);
+        const QImage shown = made->image.convertToFormat(QImage::Format_ARGB32);
+        QCOMPARE(written.size(), shown.size());
+        int differing = 0;
+        for (int row = 0; row < shown.height(); ++row)
+            for (int column = 0; column < shown.width(); ++column)
+                if (written.pixel(column, row) != shown.pixel(column, row)) ++differing;
+        QCOMPARE(differing, 0);
+    }
 }
 
 STYLOS_WIDGET_TEST_MAIN(DeveloppeeJobTest)

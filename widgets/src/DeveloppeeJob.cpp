@@ -1,13 +1,9 @@
 #include "stylos/widgets/DeveloppeeJob.h"
 
-#include "stylos/core/cloud/LoadPointCloud.h"
-#include "stylos/core/shading/ContrastStretch.h"
-#include "stylos/core/shading/HeightShading.h"
-#include "stylos/core/shading/LightShading.h"
-#include "stylos/core/shading/SkydomeShading.h"
+#include "stylos/core/image/ImageWriter.h"
+
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/JobResult.h"
-#include "stylos/core/util/SubProgress.h"
 
 #include <QFileInfo>
 
@@ -56,34 +52,15 @@ QImage DeveloppeeJob::toImage(const core::shading::ShadedImage& shaded)
                 line[column] = 0;
                 continue;
             }
-            const int grey = static_cast<int>(std::lround(std::clamp(shaded.value(column, row), 0.0f, 1.0f) * 255.0f));
+            const int grey = core::image::shadeToByte(shaded.value(column, row));
             line[column] = qRgba(grey, grey, grey, 255);
         }
     }
     return image;
 }
 
-core::Result<core::shading::ShadedImage> DeveloppeeJob::shade(const core::shading::HeightField& field,
-                                                              const DeveloppeeSettings& settings,
-                                                              core::ProgressSink* progress)
-{
-    switch (settings.shading) {
-    case DeveloppeeShading::Height: return core::shading::shadeHeight(field);
-    case DeveloppeeShading::Light: return core::shading::shadeLight(field, settings.light);
-    case DeveloppeeShading::Skydome: break;
-    }
-    core::shading::SkydomeOptions options;
-    options.directions = settings.directions;
-    auto sky = core::shading::shadeSkydome(field, options, progress);
-    if (sky && settings.stretch) {
-        if (auto range = core::shading::stretchContrast(*sky); !range) return range.error();
-    }
-    return sky;
-}
-
 core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) const
 {
-    const auto start = Clock::now();
     const std::string source = m_path.toStdString();
     if (const QString problem = m_settings.problem(); !problem.isEmpty())
         return core::Error{core::ErrorCode::InvalidArgument, source + ": " + problem.toStdString()};
@@ -92,54 +69,24 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
     result.octreePath = m_path;
     result.settings = m_settings;
 
-    core::cloud::PointCloud cloud;
-    {
-        core::SubProgress step(progress, 0.0, 0.15);
-        auto loaded = core::cloud::loadPointCloud(source, {}, &step);
-        if (!loaded) return loaded.error();
-        cloud = std::move(loaded).value();
-    }
-    result.timings.load = secondsSince(start);
-
-    core::unroll::FitOptions fitOptions;
-    fitOptions.kind = m_settings.surface;
-    if (m_settings.axis) {
-        core::unroll::Axis axis = *m_settings.axis;
-        axis.direction.normalize();
-        fitOptions.axis = axis;
-    }
-    core::SubProgress fitStep(progress, 0.15, 0.4);
-    auto fit = core::unroll::fitSurface(cloud, fitOptions, &fitStep);
-    if (!fit) return fit.error();
-    result.fit = *fit;
-    result.timings.fit = fit->seconds;
-
-    core::unroll::UnrollOptions unrollOptions;
-    if (m_settings.pixelSize > 0.0) unrollOptions.pixelSize = m_settings.pixelSize;
-    // Automatic on a .poct: its points are leaf centres, whose heights step by the leaf edge; at one edge
-    // per pixel the shading reads those steps as relief (salt and pepper), at three the carving shows.
-    else if (cloud.spacing > 0.0) unrollOptions.pixelSize = PoctPixelEdges * cloud.spacing;
-    core::SubProgress unrollStep(progress, 0.4, 0.7);
-    auto unrolled = core::unroll::unrollCloud(cloud, fit->surface, unrollOptions, &unrollStep);
-    if (!unrolled) return unrolled.error();
-    cloud = {}; // the points are no longer needed: give the memory back before shading
-    result.unroll = unrolled->report;
-    result.timings.unroll = unrolled->report.seconds;
-
-    const auto shadingStart = Clock::now();
-    core::SubProgress shadeStep(progress, 0.7, 0.98);
-    auto shaded = shade(unrolled->field, m_settings, &shadeStep);
-    if (!shaded) return shaded.error();
+    auto made = core::developpee::computeDeveloppee(source, m_settings.options(), progress);
+    if (!made) return made.error();
     if (progress && progress->isCancelRequested()) return cancelled(m_path);
-    result.image = toImage(*shaded);
-    if (result.image.isNull() && shaded->width > 0)
+    const auto imageStart = Clock::now();
+    result.image = toImage(made->shaded);
+    if (result.image.isNull() && made->shaded.width > 0)
         return core::Error{core::ErrorCode::OutOfBudget,
-                           source + ": the image of " + std::to_string(shaded->width) + " x " +
-                               std::to_string(shaded->height) + " pixels cannot be allocated"};
-    result.timings.shading = secondsSince(shadingStart);
-    result.heights = std::make_shared<const core::shading::HeightField>(std::move(unrolled->field));
-    result.map = std::move(unrolled->map);
-    result.timings.total = secondsSince(start);
+                           source + ": the image of " + std::to_string(made->shaded.width) + " x " +
+                               std::to_string(made->shaded.height) + " pixels cannot be allocated"};
+    result.fit = made->fit;
+    result.unroll = made->unroll;
+    result.timings = made->timings;
+    const double imageSeconds = secondsSince(imageStart);
+    result.timings.shading += imageSeconds;
+    result.timings.total += imageSeconds;
+    result.heights = std::make_shared<const core::shading::HeightField>(std::move(made->field));
+    result.shaded = std::make_shared<const core::shading::ShadedImage>(std::move(made->shaded));
+    result.map = std::move(made->map);
     if (progress) progress->update(1.0);
     return result;
 }

@@ -44,31 +44,34 @@ QString DeveloppeeSettings::surfaceName(SurfaceKind kind)
     return tr("Cylinder");
 }
 
+// The display names of core::developpee::shadings(), marked for lupdate in this class's context.
+[[maybe_unused]] constexpr const char* kShadingNames[] = {QT_TRANSLATE_NOOP("stylos::widgets::DeveloppeeSettings", "Skydome"),
+                                                         QT_TRANSLATE_NOOP("stylos::widgets::DeveloppeeSettings", "Light"),
+                                                         QT_TRANSLATE_NOOP("stylos::widgets::DeveloppeeSettings", "Height")};
+
 QString DeveloppeeSettings::shadingName(DeveloppeeShading shading)
 {
-    switch (shading) {
-    case DeveloppeeShading::Height: return tr("Height");
-    case DeveloppeeShading::Light: return tr("Light");
-    case DeveloppeeShading::Skydome: return tr("Skydome");
-    }
-    return tr("Skydome");
+    return tr(core::developpee::shadingInfo(shading).displayName);
 }
 
-const char* DeveloppeeSettings::shadingKey(DeveloppeeShading shading)
-{
-    switch (shading) {
-    case DeveloppeeShading::Height: return "height";
-    case DeveloppeeShading::Light: return "light";
-    case DeveloppeeShading::Skydome: return "skydome";
-    }
-    return "skydome";
-}
+const char* DeveloppeeSettings::shadingKey(DeveloppeeShading shading) { return core::developpee::shadingInfo(shading).key; }
 
 std::optional<DeveloppeeShading> DeveloppeeSettings::shadingFromKey(const QString& key)
 {
-    for (auto s : {DeveloppeeShading::Height, DeveloppeeShading::Light, DeveloppeeShading::Skydome})
-        if (key == QLatin1String(shadingKey(s))) return s;
-    return std::nullopt;
+    return core::developpee::shadingFromKey(key.toStdString());
+}
+
+core::developpee::DeveloppeeOptions DeveloppeeSettings::options() const
+{
+    core::developpee::DeveloppeeOptions o;
+    o.surface = surface;
+    o.axis = axis;
+    o.shading = shading;
+    o.directions = directions;
+    o.light = light;
+    o.stretch = stretch;
+    if (pixelSize > 0.0) o.pixelSize = pixelSize;
+    return o;
 }
 
 void DeveloppeeSettings::save(QSettings& settings) const

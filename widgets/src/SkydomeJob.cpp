@@ -1,10 +1,8 @@
 #include "stylos/widgets/SkydomeJob.h"
 
-#include "stylos/core/ao/AoCells.h"
-#include "stylos/core/ao/AoExport.h"
+#include "stylos/core/ao/SkydomeLayer.h"
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/JobResult.h"
-#include "stylos/core/util/SubProgress.h"
 
 #include <QFileInfo>
 
@@ -60,32 +58,17 @@ core::Result<SkydomeResult> SkydomeJob::run(core::ProgressSink* progress) const
     auto opened = oct::PackedOctree::open(path);
     if (!opened) return opened.error();
     const oct::PackedOctree& octree = *opened;
-    result.level = m_options.level.value_or(ao::closedSurfaceLevel(octree));
-    ao::AoCells cells;
+    core::ao::SkydomeLayerOptions layer;
+    layer.ao = m_options.aoOptions();
+    layer.level = m_options.level;
     {
-        core::SubProgress step(progress, 0.0, 0.1);
-        auto read = ao::cellsAtLevel(octree, result.level, &step);
-        if (!read) return read.error();
-        cells = std::move(read).value();
+        // In place and atomically: a cancel before the write (at 0.9) leaves the file as it was.
+        auto made = ao::computeSkydomeLayer(octree, path, layer, progress);
+        if (!made) return made.error();
+        result.level = made->level;
+        result.cells = made->cells;
+        result.leaves = made->leaves;
     }
-    result.cells = cells.size();
-
-    // Computing: per cell, then per leaf.
-    std::vector<float> perLeaf;
-    {
-        core::SubProgress step(progress, 0.1, 0.9);
-        auto values = ao::computeAmbientOcclusion(cells, m_options.aoOptions(), &step);
-        if (!values) return values.error();
-        perLeaf = ao::valuesPerLeaf(cells, *values);
-    }
-    cells = {};
-    result.leaves = perLeaf.size();
-
-    // Writing, in place and atomically: the last moment a cancel leaves the file as it was.
-    if (progress && progress->isCancelRequested())
-        return core::Error::at(core::ErrorCode::Cancelled, m_path.toStdString(), "", "cancelled");
-    if (auto written = ao::writeAmbientPoct(octree, perLeaf, path); !written) return written.error();
-    if (progress) progress->update(0.97);
 
     // The updated file, for the document (the old mapping stays valid for whoever still holds it).
     auto reopened = oct::PackedOctree::open(path);

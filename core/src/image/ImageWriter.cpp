@@ -106,6 +106,8 @@ void fillHeightRow(const shading::HeightField& field, int row, float* out)
 
 } // namespace
 
+std::uint8_t shadeToByte(float v) { return quantise<std::uint8_t>(v); }
+
 Status writeShadedImage(const shading::ShadedImage& image, const std::filesystem::path& path,
                         const ImageWriteOptions& options)
 {

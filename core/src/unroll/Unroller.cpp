@@ -7,6 +7,7 @@
 #include "UnrollRaster.h"
 #include "UnrollSample.h"
 #include "UnrollSpacing.h"
+#include "stylos/core/shading/FieldCoverage.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
@@ -70,8 +71,12 @@ private:
     Status checkOptions() const;
     /** Pass 1: the band, the azimuth histogram, the v range. False when cancelled. */
     bool gatherStats(PointStats& stats, std::uint64_t& offSurface);
-    /** The default pixel size when the cloud states none (UnrollSpacing). */
+    /** The sampling spacing from the density of the kept points (UnrollSpacing). */
     Result<double> estimateSpacing(const PointStats& stats);
+    /** A given pixel far below the spacing @p d (0: unknown, no check) would leave the image mostly empty. */
+    Status checkPredictedCoverage(double pixel, double d) const;
+    /** ": give a pixel size of at least D mm (the sampling spacing)", or "" when @p d is unknown. */
+    static std::string workingPixel(double d);
 
     const cloud::PointCloud& m_cloud;
     const Surface& m_surface;
@@ -156,6 +161,24 @@ Result<double> Unroller::estimateSpacing(const PointStats& stats)
     return *spacing;
 }
 
+std::string Unroller::workingPixel(double d)
+{
+    if (!(d > 0.0)) return "";
+    return ": give a pixel size of at least " + format("%.4g", d * 1000.0) + " mm (the sampling spacing)";
+}
+
+Status Unroller::checkPredictedCoverage(double pixel, double d) const
+{
+    if (!(d > 0.0) || m_options.minCoverage <= 0.0) return {};
+    const double perPixel = (pixel / d) * (pixel / d);
+    if (perPixel >= kMinPointsPerPixel) return {};
+    // Points land in about 1 − e^(−λ) of the pixels at λ points a pixel (Poisson), too few to fill from.
+    const double share = 1.0 - std::exp(-perPixel);
+    return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm would leave the développée mostly empty"
+                   " (about " + format("%.1f", share * 100.0) + " % of its pixels with a point; the points are "
+                   + format("%.4g", d * 1000.0) + " mm apart)" + workingPixel(d));
+}
+
 Result<Unrolled> Unroller::run()
 {
     const auto start = std::chrono::steady_clock::now();
@@ -176,15 +199,21 @@ Result<Unrolled> Unroller::run()
                                     : detail::chooseCutAngle(stats.azimuths);
     if (!(cut < kTwoPi) || cut < 0.0) cut = 0.0;
 
+    // The sampling spacing d from the density of the kept points: the default pixel, and the yardstick
+    // of a given one.
+    double spacing = 0.0;
+    if (auto estimated = estimateSpacing(stats)) spacing = *estimated;
+    else if (estimated.error().code == ErrorCode::Cancelled) return estimated.error();
+    else if (!m_options.pixelSize && !(m_cloud.spacing > 0.0 && std::isfinite(m_cloud.spacing)))
+        return estimated.error();
+
     double pixel = 0.0;
     if (m_options.pixelSize) {
         pixel = *m_options.pixelSize;
-    } else if (m_cloud.spacing > 0.0 && std::isfinite(m_cloud.spacing)) {
-        pixel = m_cloud.spacing;
+        if (auto s = checkPredictedCoverage(pixel, spacing); !s) return s.error();
     } else {
-        auto estimated = estimateSpacing(stats);
-        if (!estimated) return estimated.error();
-        pixel = *estimated;
+        const double leafEdge = m_cloud.spacing > 0.0 && std::isfinite(m_cloud.spacing) ? m_cloud.spacing : 0.0;
+        pixel = std::max(spacing, kLeafEdgesPerPixel * leafEdge);
     }
 
     const double vTop = pixel * std::ceil(stats.vMax / pixel);
@@ -220,6 +249,12 @@ Result<Unrolled> Unroller::run()
         }
     }
     if (m_progress && m_progress->isCancelRequested()) return cancelled();
+    const double closing = spacing > 0.0 ? std::ceil(2.0 * spacing / pixel) : 2.0;
+    const shading::FieldCoverage coverage = shading::measureCoverage(*field, int(std::clamp(closing, 1.0, 64.0)));
+    if (m_options.pixelSize && coverage.fraction() < m_options.minCoverage)
+        return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm covers only "
+                       + format("%.1f", coverage.fraction() * 100.0) + " % of the surface"
+                       + workingPixel(spacing));
     const double measured = double(field->count(shading::PixelState::Measured));
     const double filledPixels = double(field->count(shading::PixelState::Filled));
     report.points = m_cloud.size();
@@ -230,6 +265,8 @@ Result<Unrolled> Unroller::run()
     report.pixelSize = pixel;
     report.band = m_band;
     report.depthTolerance = tolerance;
+    report.samplingSpacing = spacing;
+    report.coverage = coverage.fraction();
     report.filledFraction = measured + filledPixels > 0.0 ? filledPixels / (measured + filledPixels) : 0.0;
     if (m_progress) m_progress->update(1.0);
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -1,10 +1,8 @@
 #pragma once
 /** @file
- * @brief The développée of one fragment, computed in the background: its `.poct` read as one point per
- *        leaf (core::cloud::loadPointCloud), the surface fitted (core::unroll::fitSurface), the cloud
- *        unrolled and its small holes filled (core::unroll::unrollCloud), the height field shaded (height,
- *        light or skydome, the skydome contrast-stretched) and turned into a grey + alpha QImage — the
- *        chain of `stylos-cli unroll`, without writing any file.
+ * @brief The développée of one fragment, computed in the background by the core's one entry point
+ *        (core::developpee::computeDeveloppee, as `stylos-cli unroll`: the same settings give the same
+ *        pixels) and turned into a grey + alpha QImage, without writing any file.
  *
  * Use: `tasks.start<DeveloppeeResult>(job.label(), job)` (TaskManager): the job adds one
  * result, or none when cancelled; a failure is a result whose error() is a translated message naming the
@@ -14,6 +12,7 @@
  * Thread-safety: the job is a value; run() and operator() are reentrant and touch no widget.
  * Everything in the result is in the octree's frame (the fragment's own), metres.
  */
+#include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/shading/HeightField.h"
 #include "stylos/core/shading/ShadedImage.h"
 #include "stylos/core/unroll/SurfaceFit.h"
@@ -33,14 +32,8 @@
 
 namespace stylos::widgets {
 
-/** @brief Wall time of each step, seconds. */
-struct DeveloppeeTimings {
-    double load = 0.0;
-    double fit = 0.0;
-    double unroll = 0.0;
-    double shading = 0.0; ///< shading, contrast stretch and the QImage
-    double total = 0.0;
-};
+/** @brief Wall time of each step, seconds (the core's; shading includes the QImage). */
+using DeveloppeeTimings = core::developpee::DeveloppeeTimings;
 
 /** @brief What the job hands back: a développée, or an error message. Cheap to copy (shared data). */
 struct DeveloppeeResult {
@@ -52,6 +45,8 @@ struct DeveloppeeResult {
     QImage image;
     /** The unrolled heights (metres) and states, same size as the image; null on failure. */
     std::shared_ptr<const core::shading::HeightField> heights;
+    /** The shading at full precision ([0, 1] floats, e.g. for a 16-bit plate); null on failure. */
+    std::shared_ptr<const core::shading::ShadedImage> shaded;
     std::optional<core::unroll::UnrollMap> map; ///< pixel ↔ 3D (octree frame); empty on failure
     core::unroll::FitReport fit;
     core::unroll::UnrollReport unroll;
@@ -67,9 +62,6 @@ class DeveloppeeJob {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::DeveloppeeJob)
 
 public:
-    /** @brief The automatic pixel of a `.poct`, in leaf edges (a point file: its sampling spacing). */
-    static constexpr double PoctPixelEdges = 3.0;
-
     /** @param octreePath the fragment's `.poct` (any point file works too) */
     DeveloppeeJob(QString octreePath, quint64 fragmentId, DeveloppeeSettings settings);
 
@@ -90,10 +82,6 @@ public:
     static QString errorText(const QString& path, const core::Error& error);
     /** @brief Grey (value · 255, rounded) with alpha = coverage, premultiplied; a null image for a 0-pixel one. */
     static QImage toImage(const core::shading::ShadedImage& shaded);
-    /** @brief Runs @p settings' shading on @p field (skydome stretched when asked). */
-    static core::Result<core::shading::ShadedImage> shade(const core::shading::HeightField& field,
-                                                          const DeveloppeeSettings& settings,
-                                                          core::ProgressSink* progress = nullptr);
 
 private:
     QString m_path;

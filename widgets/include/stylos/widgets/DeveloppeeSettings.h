@@ -6,6 +6,7 @@
  *        Plain data with the translated names the dock shows, a check of its ranges, and persistence in
  *        QSettings. Units: metres and radians, as the core. Thread-safety: a value type.
  */
+#include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/shading/LightShading.h"
 #include "stylos/core/unroll/Surface.h"
 
@@ -19,35 +20,34 @@ class QSettings;
 
 namespace stylos::widgets {
 
-/** @brief How the height field becomes grey (the CLI's --shading). */
-enum class DeveloppeeShading {
-    Height,  ///< height as grey, 1–99 % robust range
-    Light,   ///< one directional light (Lambert)
-    Skydome, ///< the visible solid angle of the sky, contrast-stretched 1–99 % (the default)
-};
+/** @brief How the height field becomes grey: the core's one table (core::developpee::shadings()). */
+using DeveloppeeShading = core::developpee::Shading;
 
 struct DeveloppeeSettings {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::DeveloppeeSettings)
 
 public:
-    static constexpr int MinDirections = 1;
-    static constexpr int MaxDirections = 4096;
+    static constexpr int MinDirections = core::developpee::DeveloppeeOptions::kMinDirections;
+    static constexpr int MaxDirections = core::developpee::DeveloppeeOptions::kMaxDirections;
 
     core::unroll::SurfaceKind surface = core::unroll::SurfaceKind::Cylinder;
     DeveloppeeShading shading = DeveloppeeShading::Skydome;
     int directions = 40;          ///< skydome azimuths, [MinDirections, MaxDirections]
     core::shading::LightShadingOptions light; ///< light shading: azimuth, elevation (radians)
     bool stretch = true;          ///< skydome: stretch the 1–99 % range to [0, 1] (false: the exact Ω / 2π)
-    double pixelSize = 0.0;       ///< metres; 0 = automatic (the .poct leaf edge)
+    double pixelSize = 0.0;       ///< metres; 0 = automatic (the core's rule: the sampling spacing, ≥ 3 leaf edges)
     /** Given axis in the octree's frame (unit direction not required: normalised by the job). */
     std::optional<core::unroll::Axis> axis;
 
     /** @brief An empty string when usable; else a translated reason (directions, pixel size or axis out of range). */
     QString problem() const;
 
+    /** @brief The core's options for these settings (the same pixels as `stylos-cli unroll` with the same values). */
+    core::developpee::DeveloppeeOptions options() const;
+
     /** @brief "Cylinder", "Cone", "Surface of revolution" (translated). */
     static QString surfaceName(core::unroll::SurfaceKind kind);
-    /** @brief "Height", "Light", "Skydome" (translated). */
+    /** @brief The table's display name, translated ("Skydome", "Light", "Height"). */
     static QString shadingName(DeveloppeeShading shading);
     /** @brief "height", "light", "skydome": the CLI's words, used as settings values. */
     static const char* shadingKey(DeveloppeeShading shading);

@@ -1,16 +1,16 @@
 #pragma once
 /** @file
  * @brief The 3D skydome (ambient occlusion) of one fragment, computed in the background and stored in its
- *        own `.poct` — the chain of `stylos-cli ao FRAGMENT.poct -o FRAGMENT.poct`: the cells of one level
- *        (core::ao::cellsAtLevel, by default core::ao::closedSurfaceLevel), their skydome
- *        (core::ao::computeAmbientOcclusion), spread to the leaves (core::ao::valuesPerLeaf) and written as
- *        the "ambient" layer in place (core::ao::writeAmbientPoct → core::octree::setPoctAttributeLayer:
- *        a temporary file beside it, renamed over it). The updated file is then opened again and handed
+ *        own `.poct` by the core's one entry point, core::ao::computeSkydomeLayer (as `stylos-cli ao
+ *        FRAGMENT.poct -o FRAGMENT.poct` and the demo): the cells of one level (by default
+ *        core::ao::closedSurfaceLevel), their skydome, spread to the leaves and written as the "ambient"
+ *        layer in place (a temporary file beside it, renamed over it). The updated file is then opened again and handed
  *        back, for SceneDocument::replaceOctree(); the 3D view's Ambient shading reads that layer.
  *
  * Use: `tasks.start<SkydomeResult>(job.label(), job)` (TaskManager or TaskRunner): the job adds one result,
  * or none when cancelled; a failure is a result whose error is a translated message naming the file and
- * the reason. Progress: reading the cells to 0.1, the skydome to 0.9, writing to 0.97, re-opening to 1.
+ * the reason. Progress: computeSkydomeLayer's (reading the cells to 0.1, the skydome to 0.9, writing to
+ * 1), then the re-opening.
  * Cancel: checked while reading and computing and once more just before the write; the file is then
  * untouched. The write itself (a copy of the file, a fraction of a second) cannot be interrupted: a cancel
  * arriving during it comes too late for the file, which gets the layer, while the task still gives no result.

@@ -51,6 +51,7 @@
 #include "stylos/core/util/Progress.h"
 #include "stylos/core/util/Result.h"
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <optional>
@@ -74,6 +75,10 @@ struct ImageWriteOptions {
     /** Optional: updated once per scanline group, polled for cancel (→ Cancelled, nothing left). */
     ProgressSink* progress = nullptr;
 };
+
+/** @brief A shading value as the 8-bit sample writeShadedImage() stores: clamped to [0, 1] (NaN → 0),
+ *         round(v · 255). The workbench's images use it too, so both show the same levels. */
+std::uint8_t shadeToByte(float v);
 
 /** @brief Writes the shading (values in [0, 1], coverage as alpha); see the file comment. */
 Status writeShadedImage(const shading::ShadedImage& image, const std::filesystem::path& path,

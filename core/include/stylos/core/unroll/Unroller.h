@@ -15,13 +15,18 @@
  *     deterministic pseudo-random sample of about 4 Mi) in 720 bins of 0.5°, smoothed by a circular
  *     moving sum over 11 bins (5.5°); the cut is the middle of the longest run of bins with the
  *     smallest sum (the first from e1 on a tie). A given cut is wrapped into [0, 2π).
- *  4. The pixel size s, unless given: cloud.spacing when > 0 (a .poct leaf edge); otherwise the
- *     sampling spacing estimated from the density of the kept points on the développée: a
+ *  4. The sampling spacing d, estimated from the density of the kept points on the développée: a
  *     deterministic sample of at most 2 Mi of them counted in square cells of side c holding ~64
  *     sampled points each; s = c · √(rate / m), m the median count of the occupied cells — the
  *     spacing of a grid with that many points per cell, so about one point per pixel where one scan
  *     covers the surface (overlaps of scans and partly covered cells along the edges are outvoted).
- *     Fewer than 16 kept points: InvalidArgument (give a pixel size).
+ *     The pixel size s, unless given, is max(d, kLeafEdgesPerPixel × cloud.spacing): one point per pixel
+ *     for a point file; for a .poct (cloud.spacing = the leaf edge) never less than three leaf edges, whose
+ *     heights step by the leaf edge (at one edge a pixel the shading reads those steps as relief).
+ *     Fewer than 16 kept points: InvalidArgument (give a pixel size), unless the cloud states a spacing.
+ *     A given s is checked against d before anything is rasterised: when (s / d)² < kMinPointsPerPixel
+ *     the image would be mostly empty, and it is refused (InvalidArgument) with the share of the surface
+ *     it would cover and the pixel size that works (d).
  *  5. The image: width = ceil(2π·R / s) columns (u wraps; the last column is partial),
  *     v_top = s · ceil(max v / s) (rows aligned on multiples of s), height = floor((v_top − min v) / s)
  *     + 1 rows (v over the kept points). Over HeightField::kMaxSide a side: InvalidArgument "SOURCE:
@@ -35,6 +40,9 @@
  *     Measured; pixels without points stay Empty.
  *  7. shading::fillHoles with options.holes (small holes Filled, large ones and regions open to the
  *     border stay Empty) unless fillHoles is false; filledFraction = Filled / (Measured + Filled).
+ *  8. The coverage (shading::measureCoverage, closing radius ⌈2 d / s⌉ pixels, at most 64): the share of
+ *     the object's footprint that has a height. A given pixel size whose image covers less than
+ *     options.minCoverage of it is refused (InvalidArgument, the coverage and the pixel size that works).
  *
  * Cost: three passes over all the points (statistics; the largest h; the average), each a projection
  * per point (a few dot products and a square root, for a revolution a meridian lookup; the azimuth by a
@@ -64,6 +72,11 @@
 
 namespace stylos::core::unroll {
 
+/** The default pixel of a .poct is at least this many leaf edges (step 4). */
+inline constexpr double kLeafEdgesPerPixel = 3.0;
+/** A given pixel size s with (s / d)² below this many points a pixel is refused before rasterising. */
+inline constexpr double kMinPointsPerPixel = 0.1;
+
 struct UnrollOptions {
     std::optional<double> cutAngle;  ///< radians about the axis from the reference direction; default: fewest points
     std::optional<double> pixelSize; ///< metres (> 0); default: the sampling spacing of the cloud
@@ -74,6 +87,9 @@ struct UnrollOptions {
     std::optional<double> depthTolerance;
     shading::HoleFillOptions holes;  ///< which holes are filled
     bool fillHoles = true;
+    /** A given pixel size whose image would cover less than this share of the object's footprint is
+     *  refused (step 8); 0 = never. The default pixel size is not checked. */
+    double minCoverage = 0.5;
     unsigned threads = 0;            ///< workers, the caller's included; 0 = hardware threads
 };
 
@@ -87,6 +103,8 @@ struct UnrollReport {
     double band = 0.0;               ///< used, metres
     double depthTolerance = 0.0;     ///< used, metres
     double filledFraction = 0.0;     ///< Filled pixels / non-empty pixels
+    double samplingSpacing = 0.0;    ///< d estimated from the density (step 4), metres; 0 when too few points
+    double coverage = 0.0;           ///< share of the footprint with a height (step 8), in [0, 1]
     double seconds = 0.0;            ///< wall time of unrollCloud()
 };
 

@@ -1,4 +1,4 @@
-#include "AoScratchFolder.h"
+#include "stylos/core/util/ScratchFolder.h"
 
 #include <cerrno>
 #include <cstdlib>
@@ -7,29 +7,29 @@
 #include <system_error>
 #include <vector>
 
-namespace stylos::cli {
+namespace stylos::core {
 
 namespace fs = std::filesystem;
 
-AoScratchFolder::~AoScratchFolder()
+ScratchFolder::~ScratchFolder()
 {
     std::error_code ignored;
     if (!m_path.empty()) fs::remove_all(m_path, ignored);
 }
 
-core::Status AoScratchFolder::create(const fs::path& output)
+Status ScratchFolder::create(const fs::path& output, const std::string& tag)
 {
     const fs::path parent = output.has_parent_path() ? output.parent_path() : fs::path(".");
     std::string hidden(".");
-    hidden.append(output.filename().string()).append(".ao-XXXXXX");
+    hidden.append(output.filename().string()).append(".").append(tag).append("-XXXXXX");
     const std::string pattern = (parent / hidden).string();
     std::vector<char> name(pattern.begin(), pattern.end());
     name.push_back('\0');
     if (!::mkdtemp(name.data()))
-        return core::Error::at(core::ErrorCode::WriteFailed, parent.string(), "",
-                               std::string("cannot create a temporary folder for the octree: ") + std::strerror(errno));
+        return Error::at(ErrorCode::WriteFailed, parent.string(), "",
+                               std::string("cannot create a temporary folder for intermediate files: ") + std::strerror(errno));
     m_path = name.data();
     return {};
 }
 
-} // namespace stylos::cli
+} // namespace stylos::core

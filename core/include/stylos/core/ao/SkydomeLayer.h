@@ -1,0 +1,53 @@
+#pragma once
+/** @file
+ * @brief The 3D skydome of a packed octree as one call, for every caller (stylos-cli ao, the workbench's
+ *        Compute skydome, the demo): the cells of the level (default closedSurfaceLevel: the deepest whose
+ *        cells still close the surface), the ambient occlusion of each (computeAmbientOcclusion), spread to
+ *        the leaves (valuesPerLeaf), written as the octree's "ambient" layer (.poct, atomically; the output
+ *        may be the octree's own file) or as a PLY of leaf centres with an "ambient" property.
+ *
+ * Progress: reading the cells to 0.1, the skydome to 0.9, writing to 1. A cancel is honoured until the
+ * write starts (the last moment that leaves the output as it was); the writer then finishes or fails.
+ * Memory: the cells of the level (AoCells) and one float a leaf. Units: directions over the unit sphere;
+ * values are fractions of the sky in [0, 1]. Thread-safety: reentrant (the octree is only read).
+ * Failure modes: InvalidArgument (a level outside 0..depth, options out of range), the writer's errors
+ * (Unwritable, OutOfBudget), Cancelled.
+ */
+#include "stylos/core/ao/AmbientOcclusion.h"
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/util/Progress.h"
+#include "stylos/core/util/Result.h"
+
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+
+namespace stylos::core::ao {
+
+enum class SkydomeOutput {
+    Poct, ///< the octree with its "ambient" layer (replacing any older one)
+    Ply,  ///< leaf centres, normals and an "ambient" float property
+};
+
+struct SkydomeLayerOptions {
+    AoOptions ao;              ///< directions, method, bias, weighting, threads
+    std::optional<int> level;  ///< the level of the cells; default closedSurfaceLevel(octree)
+    SkydomeOutput output = SkydomeOutput::Poct;
+};
+
+struct SkydomeLayerReport {
+    int level = 0;
+    std::uint64_t cells = 0;     ///< cells of the level
+    std::uint64_t leaves = 0;    ///< values written
+    double meanAmbient = 0.0;    ///< mean over the leaves
+    double readSeconds = 0.0;
+    double aoSeconds = 0.0;
+    double writeSeconds = 0.0;
+};
+
+/** @brief Computes the skydome of @p octree and writes it to @p output (see the file comment). */
+Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,
+                                               const SkydomeLayerOptions& options = {},
+                                               ProgressSink* progress = nullptr);
+
+} // namespace stylos::core::ao

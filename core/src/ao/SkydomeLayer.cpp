@@ -1,0 +1,73 @@
+#include "stylos/core/ao/SkydomeLayer.h"
+
+#include "stylos/core/ao/AoCells.h"
+#include "stylos/core/ao/AoExport.h"
+#include "stylos/core/util/SubProgress.h"
+
+#include <chrono>
+#include <numeric>
+#include <string>
+#include <vector>
+
+namespace stylos::core::ao {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+} // namespace
+
+Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,
+                                               const SkydomeLayerOptions& options, ProgressSink* progress)
+{
+    SkydomeLayerReport report;
+    report.level = options.level.value_or(closedSurfaceLevel(octree));
+    if (report.level < 0 || report.level > octree.depth())
+        return Error::at(ErrorCode::InvalidArgument, octree.path().string(), {},
+                         "the level " + std::to_string(report.level) + " is outside the levels 0.."
+                             + std::to_string(octree.depth()) + " of the octree");
+
+    auto start = Clock::now();
+    AoCells cells;
+    {
+        SubProgress step(progress, 0.0, 0.1);
+        auto read = cellsAtLevel(octree, report.level, &step);
+        if (!read) return read.error();
+        cells = std::move(read).value();
+    }
+    report.cells = cells.size();
+    report.readSeconds = secondsSince(start);
+
+    start = Clock::now();
+    std::vector<float> perLeaf;
+    {
+        SubProgress step(progress, 0.1, 0.9);
+        auto values = computeAmbientOcclusion(cells, options.ao, &step);
+        if (!values) return values.error();
+        perLeaf = valuesPerLeaf(cells, *values);
+    }
+    cells = {};
+    report.leaves = perLeaf.size();
+    report.meanAmbient =
+        perLeaf.empty() ? 0.0 : std::accumulate(perLeaf.begin(), perLeaf.end(), 0.0) / double(perLeaf.size());
+    report.aoSeconds = secondsSince(start);
+
+    // The last moment a cancel leaves the output as it was.
+    if (progress) progress->update(0.9);
+    if (progress && progress->isCancelRequested())
+        return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled");
+    start = Clock::now();
+    {
+        SubProgress step(progress, 0.9, 1.0);
+        auto written = options.output == SkydomeOutput::Ply ? writeAmbientPly(octree, perLeaf, output, &step)
+                                                            : writeAmbientPoct(octree, perLeaf, output, &step);
+        if (!written) return written.error();
+    }
+    report.writeSeconds = secondsSince(start);
+    if (progress) progress->update(1.0);
+    return report;
+}
+
+} // namespace stylos::core::ao

@@ -1,0 +1,133 @@
+#include "stylos/core/developpee/Developpee.h"
+
+#include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/shading/ContrastStretch.h"
+#include "stylos/core/shading/SkydomeShading.h"
+#include "stylos/core/util/SubProgress.h"
+
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <numbers>
+#include <utility>
+
+namespace stylos::core::developpee {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/** Where each step ends in [0, 1] of the caller's progress. */
+struct Split {
+    double fit, unroll, shade;
+};
+
+/**
+ * Fit, unroll, shade @p cloud; @p release is called once the points are no longer needed (the file
+ * version frees them before shading). @p timings.load is the caller's.
+ */
+Result<Developpee> develop(const cloud::PointCloud& cloud, const DeveloppeeOptions& options, ProgressSink* progress,
+                           double from, const Split& split, DeveloppeeTimings timings, const std::function<void()>& release,
+                           Clock::time_point start)
+{
+    unroll::FitOptions fitOptions;
+    fitOptions.kind = options.surface;
+    fitOptions.threads = options.threads;
+    if (options.axis) {
+        unroll::Axis axis = *options.axis;
+        axis.direction.normalize();
+        fitOptions.axis = axis;
+    }
+    SubProgress fitStep(progress, from, split.fit);
+    auto fit = unroll::fitSurface(cloud, fitOptions, &fitStep);
+    if (!fit) return fit.error();
+    timings.fit = fit->seconds;
+
+    unroll::UnrollOptions unrollOptions;
+    unrollOptions.pixelSize = options.pixelSize;
+    unrollOptions.cutAngle = options.cutAngle;
+    unrollOptions.fillHoles = options.fillHoles;
+    unrollOptions.threads = options.threads;
+    SubProgress unrollStep(progress, split.fit, split.unroll);
+    auto unrolled = unroll::unrollCloud(cloud, fit->surface, unrollOptions, &unrollStep);
+    if (!unrolled) return unrolled.error();
+    release();
+    timings.unroll = unrolled->report.seconds;
+
+    const auto shadingStart = Clock::now();
+    SubProgress shadeStep(progress, split.unroll, split.shade);
+    auto shaded = shadeField(unrolled->field, options, &shadeStep);
+    if (!shaded) return shaded.error();
+    timings.shading = secondsSince(shadingStart);
+    timings.total = secondsSince(start);
+    if (progress) progress->update(1.0);
+    return Developpee{std::move(unrolled->field), std::move(shaded).value(), std::move(unrolled->map), *fit,
+                      unrolled->report, timings};
+}
+
+} // namespace
+
+Status DeveloppeeOptions::check(const std::string& source) const
+{
+    const auto invalid = [&](const std::string& problem) {
+        return Error::at(ErrorCode::InvalidArgument, source, {}, problem);
+    };
+    if (directions < kMinDirections || directions > kMaxDirections)
+        return invalid("the number of skydome directions must be between " + std::to_string(kMinDirections) + " and "
+                       + std::to_string(kMaxDirections) + ", got " + std::to_string(directions));
+    if (pixelSize && !(std::isfinite(*pixelSize) && *pixelSize > 0.0))
+        return invalid("the pixel size must be a positive length in metres");
+    if (cutAngle && !std::isfinite(*cutAngle)) return invalid("the cut angle must be a finite number of radians");
+    if (!std::isfinite(light.azimuth) || !(light.elevation >= 0.0 && light.elevation <= 0.5 * std::numbers::pi))
+        return invalid("the light elevation must be between 0 and 90 degrees");
+    if (axis && (!axis->point.allFinite() || !axis->direction.allFinite() || axis->direction.norm() < 1e-12))
+        return invalid("the axis needs a finite point and a non-zero direction");
+    return {};
+}
+
+Result<shading::ShadedImage> shadeField(const shading::HeightField& field, const DeveloppeeOptions& options,
+                                        ProgressSink* progress)
+{
+    switch (options.shading) {
+    case Shading::Height: return shading::shadeHeight(field, options.height);
+    case Shading::Light: return shading::shadeLight(field, options.light);
+    case Shading::Skydome: break;
+    }
+    shading::SkydomeOptions sky;
+    sky.directions = options.directions;
+    sky.threads = options.threads;
+    auto shaded = shading::shadeSkydome(field, sky, progress);
+    if (shaded && options.stretch) {
+        if (auto range = shading::stretchContrast(*shaded); !range) return range.error();
+    }
+    return shaded;
+}
+
+Result<Developpee> computeDeveloppee(const std::filesystem::path& input, const DeveloppeeOptions& options,
+                                     ProgressSink* progress)
+{
+    const auto start = Clock::now();
+    if (auto s = options.check(input.string()); !s) return s.error();
+    cloud::PointCloud cloud;
+    {
+        SubProgress step(progress, 0.0, 0.15);
+        auto loaded = cloud::loadPointCloud(input, {}, &step);
+        if (!loaded) return loaded.error();
+        cloud = std::move(loaded).value();
+    }
+    DeveloppeeTimings timings;
+    timings.load = secondsSince(start);
+    return develop(cloud, options, progress, 0.15, {0.4, 0.7, 0.98}, timings, [&cloud] { cloud = {}; }, start);
+}
+
+Result<Developpee> computeDeveloppee(const cloud::PointCloud& cloud, const DeveloppeeOptions& options,
+                                     ProgressSink* progress)
+{
+    const auto start = Clock::now();
+    if (auto s = options.check(cloud.source.empty() ? "<memory>" : cloud.source); !s) return s.error();
+    return develop(cloud, options, progress, 0.0, {0.3, 0.65, 0.98}, {}, [] {}, start);
+}
+
+} // namespace stylos::core::developpee
