@@ -4,10 +4,9 @@
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/DeveloppeeView.h"
 #include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/TaskManager.h"
 #include "stylos/widgets/ViewportWidget.h"
 
-#include <QFutureWatcher>
+#include <QFuture>
 
 namespace stylos::app {
 
@@ -28,8 +27,13 @@ std::optional<core::unroll::Axis> axisGuide(const core::scene::Fragment& fragmen
 
 DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks,
                                widgets::DeveloppeeDock& dock, widgets::ViewportWidget* viewport, QObject* parent)
-    : QObject(parent), m_document(document), m_tasks(tasks), m_dock(dock), m_viewport(viewport)
+    : QObject(parent), m_document(document), m_jobs(document), m_dock(dock), m_viewport(viewport)
 {
+    Q_ASSERT_X(&tasks == &document.tasks(), "DeveloppeeLink", "the jobs run on the document's TaskManager");
+    // Every job's end, delivered or dropped (stale, cancelled, fragment gone): the busy mark follows.
+    connect(&m_jobs, &widgets::FragmentJobs::ended, this, [this](quint64 id, bool) {
+        if (m_dock.fragmentId() == id) m_dock.setBusy(m_jobs.isRunning(id));
+    });
     connect(&dock, &widgets::DeveloppeeDock::computeRequested, this, &DeveloppeeLink::compute);
     connect(dock.view(), &widgets::DeveloppeeView::pointPicked, this, &DeveloppeeLink::markInView);
     if (viewport)
@@ -51,7 +55,7 @@ void DeveloppeeLink::setFragment(core::scene::FragmentId id)
     if (!changed) return;
     if (const auto stored = m_document.developpee(id)) m_dock.showResult(*stored);
     else m_dock.clearResult();
-    m_dock.setBusy(m_computing.count(id) != 0);
+    m_dock.setBusy(m_jobs.isRunning(id));
 }
 
 void DeveloppeeLink::refreshFragment()
@@ -68,27 +72,22 @@ void DeveloppeeLink::refreshFragment()
 void DeveloppeeLink::compute()
 {
     const core::scene::Fragment* f = m_document.fragment(m_dock.fragmentId());
-    if (!f || m_computing.count(f->id) != 0) return;
+    if (!f || m_jobs.isRunning(f->id)) return;
     const core::scene::FragmentId id = f->id;
     const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), id, m_dock.settings());
-    m_computing.insert(id);
-    m_dock.setBusy(true);
-    auto* watcher = m_tasks.start<widgets::DeveloppeeResult>(job.label(), job);
     const QString name = QString::fromStdString(f->name);
-    connect(watcher, &QFutureWatcherBase::finished, this, [this, watcher, name, id] {
-        m_computing.erase(id);
-        const bool shown = m_dock.fragmentId() == id;
-        if (watcher->future().resultCount() == 0) { // cancelled
-            if (shown) m_dock.setBusy(false);
+    const auto deliver = [this, name](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
+        if (future.resultCount() == 0) { // cancelled from the Tasks dock
             Q_EMIT finished(tr("Développée of %1 cancelled").arg(name), false);
             return;
         }
-        const widgets::DeveloppeeResult result = watcher->future().result();
-        if (result.ok()) m_document.setDeveloppee(id, std::make_shared<const widgets::DeveloppeeResult>(result));
-        if (shown) m_dock.showResult(result);
+        const widgets::DeveloppeeResult result = future.result();
+        if (result.ok()) m_document.setDeveloppee(key, std::make_shared<const widgets::DeveloppeeResult>(result));
+        if (m_dock.fragmentId() == key) m_dock.showResult(result);
         if (result.ok()) Q_EMIT finished(widgets::DeveloppeeDock::fitSummary(result), false);
         else Q_EMIT finished(result.error, true);
-    });
+    };
+    if (m_jobs.start<widgets::DeveloppeeResult>(id, job.label(), job, deliver)) m_dock.setBusy(true);
 }
 
 void DeveloppeeLink::markInView(quint64 fragmentId, const Eigen::Vector3d& octreePoint)

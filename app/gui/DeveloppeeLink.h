@@ -6,16 +6,18 @@
  *        view on that fragment marks it in the développée (through the inverse pose). The dock follows the
  *        current fragment (setFragment), offering its axis guide and showing the développée last
  *        computed for it (kept by the document, listed in the Scene dock). Several fragments may be
- *        computing at once; each result goes to its fragment. GUI thread only.
+ *        computing at once; each result goes to its fragment. The jobs run through FragmentJobs: another
+ *        project, or the fragment's removal, cancels them, and a result whose fragment or octree file is no
+ *        longer the one it was computed for is dropped. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
+#include "stylos/widgets/FragmentJobs.h"
 
 #include <QObject>
 #include <QPointer>
 
 #include <Eigen/Core>
 
-#include <set>
 
 namespace stylos::widgets {
 class DeveloppeeDock;
@@ -31,7 +33,7 @@ class DeveloppeeLink : public QObject {
     Q_OBJECT
 
 public:
-    /** None owned; @p viewport may be null (no OpenGL: no 3D markers). */
+    /** None owned; @p viewport may be null (no OpenGL: no 3D markers); @p tasks must be the document's. */
     DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks, widgets::DeveloppeeDock& dock,
                    widgets::ViewportWidget* viewport, QObject* parent = nullptr);
 
@@ -43,6 +45,8 @@ public:
 
     /** @brief Computes the développée of the dock's fragment with the dock's settings (as Compute does). */
     void compute();
+    /** @brief True while a développée of @p id computes. */
+    bool isComputing(core::scene::FragmentId id) const { return m_jobs.isRunning(id); }
 
 Q_SIGNALS:
     /** @brief A computation ended: @p message says what was made (or why not, @p failed). Translated. */
@@ -53,11 +57,10 @@ private:
     void refreshFragment();
 
     widgets::SceneDocument& m_document;
-    widgets::TaskManager& m_tasks;
+    widgets::FragmentJobs m_jobs;
     widgets::DeveloppeeDock& m_dock;
     QPointer<widgets::ViewportWidget> m_viewport;
     core::scene::FragmentId m_fragment = core::scene::NoFragment;
-    std::set<core::scene::FragmentId> m_computing;
 };
 
 } // namespace stylos::app

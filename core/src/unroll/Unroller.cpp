@@ -11,6 +11,7 @@
 #include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -27,6 +28,8 @@ namespace {
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr double kDefaultBand = 0.15;      ///< × referenceRadius
 constexpr double kDefaultTolerance = 2.0;  ///< × pixel size
+/** The default pixel is enlarged by these factors, in turn, while its image covers less than kDefaultCoverage. */
+constexpr std::array<double, 4> kDefaultPixelSteps{1.25, 1.5, 2.0, 3.0};
 
 std::string format(const char* pattern, double value)
 {
@@ -75,6 +78,15 @@ private:
     Result<double> estimateSpacing(const PointStats& stats);
     /** A given pixel far below the spacing @p d (0: unknown, no check) would leave the image mostly empty. */
     Status checkPredictedCoverage(double pixel, double d) const;
+    /** A raster of the kept points at @p pixel, holes filled, with its coverage (progress @p from → @p to). */
+    struct Attempt {
+        shading::HeightField field;
+        UnrollMap map;
+        std::uint64_t averaged = 0;
+        double tolerance = 0.0;
+        shading::FieldCoverage coverage;
+    };
+    Result<Attempt> rasterise(const PointStats& stats, double cut, double pixel, double spacing, double from, double to);
     /** ": give a pixel size of at least D mm (the sampling spacing)", or "" when @p d is unknown. */
     static std::string workingPixel(double d);
 
@@ -161,6 +173,46 @@ Result<double> Unroller::estimateSpacing(const PointStats& stats)
     return *spacing;
 }
 
+Result<Unroller::Attempt> Unroller::rasterise(const PointStats& stats, double cut, double pixel, double spacing,
+                                              double from, double to)
+{
+    const double vTop = pixel * std::ceil(stats.vMax / pixel);
+    const double width = std::ceil(m_probe.circumference() / pixel);
+    const double height = std::floor((vTop - stats.vMin) / pixel) + 1.0;
+    const double limit = shading::HeightField::kMaxSide;
+    if (!(width <= limit) || !(height <= limit))
+        return invalid("the développée would be " + format("%.0f", width) + " × " + format("%.0f", height)
+                       + " pixels (pixel size " + format("%.4g", pixel * 1000.0) + " mm); the limit is "
+                       + std::to_string(shading::HeightField::kMaxSide) + " a side: give a larger --pixel-size");
+    UnrollMap map(m_surface, m_e1, cut, pixel, int(width), int(height), vTop);
+    const double tolerance = m_options.depthTolerance.value_or(kDefaultTolerance * pixel);
+    detail::UnrollRaster raster(m_cloud, map, m_band, tolerance, m_threads);
+    const double split = from + 0.85 * (to - from);
+    Result<shading::HeightField> field = shading::HeightField{};
+    try {
+        field = shading::HeightField::create(int(width), int(height), pixel);
+        if (!field) return invalid(field.error().message);
+        SubProgress rasterStage(m_progress, from, split);
+        if (!raster.run(*field, &rasterStage)) return cancelled();
+    } catch (const std::bad_alloc&) {
+        return Error::at(ErrorCode::OutOfBudget, m_source, {},
+                         "not enough memory for a développée of " + format("%.0f", width) + " × "
+                             + format("%.0f", height) + " pixels (21 bytes a pixel while unrolling)");
+    }
+    if (m_options.fillHoles) {
+        SubProgress fillStage(m_progress, split, to);
+        auto filled = shading::fillHoles(*field, m_options.holes, &fillStage);
+        if (!filled) {
+            if (filled.error().code == ErrorCode::Cancelled) return cancelled();
+            return invalid(filled.error().message);
+        }
+    }
+    if (m_progress && m_progress->isCancelRequested()) return cancelled();
+    const double closing = spacing > 0.0 ? std::ceil(2.0 * spacing / pixel) : 2.0;
+    const auto coverage = shading::measureCoverage(*field, int(std::clamp(closing, 1.0, 64.0)));
+    return Attempt{std::move(*field), std::move(map), raster.pointsAveraged(), tolerance, coverage};
+}
+
 std::string Unroller::workingPixel(double d)
 {
     if (!(d > 0.0)) return "";
@@ -216,61 +268,43 @@ Result<Unrolled> Unroller::run()
         pixel = std::max(spacing, kLeafEdgesPerPixel * leafEdge);
     }
 
-    const double vTop = pixel * std::ceil(stats.vMax / pixel);
-    const double width = std::ceil(m_probe.circumference() / pixel);
-    const double height = std::floor((vTop - stats.vMin) / pixel) + 1.0;
-    const double limit = shading::HeightField::kMaxSide;
-    if (!(width <= limit) || !(height <= limit))
-        return invalid("the développée would be " + format("%.0f", width) + " × " + format("%.0f", height)
-                       + " pixels (pixel size " + format("%.4g", pixel * 1000.0) + " mm); the limit is "
-                       + std::to_string(shading::HeightField::kMaxSide) + " a side: give a larger --pixel-size");
-    UnrollMap map(m_surface, m_e1, cut, pixel, int(width), int(height), vTop);
-    const double tolerance = m_options.depthTolerance.value_or(kDefaultTolerance * pixel);
-    detail::UnrollRaster raster(m_cloud, map, m_band, tolerance, m_threads);
-    Result<shading::HeightField> field = shading::HeightField{};
-    try {
-        field = shading::HeightField::create(int(width), int(height), pixel);
-        if (!field) return invalid(field.error().message);
-        SubProgress rasterStage(m_progress, 0.35, 0.9);
-        if (!raster.run(*field, &rasterStage)) return cancelled();
-    } catch (const std::bad_alloc&) {
-        return Error::at(ErrorCode::OutOfBudget, m_source, {},
-                         "not enough memory for a développée of " + format("%.0f", width) + " × "
-                             + format("%.0f", height) + " pixels (21 bytes a pixel while unrolling)");
-    }
-
-    UnrollReport report;
-    if (m_options.fillHoles) {
-        SubProgress fillStage(m_progress, 0.9, 1.0);
-        auto filled = shading::fillHoles(*field, m_options.holes, &fillStage);
-        if (!filled) {
-            if (filled.error().code == ErrorCode::Cancelled) return cancelled();
-            return invalid(filled.error().message);
+    // The raster; a default pixel grows by steps until the image covers the surface well (kDefaultCoverage).
+    const bool mayGrow = !m_options.pixelSize && m_options.fillHoles;
+    auto attempt = rasterise(stats, cut, pixel, spacing, 0.35, mayGrow ? 0.9 : 1.0);
+    if (!attempt) return attempt.error();
+    if (m_options.pixelSize && attempt->coverage.fraction() < m_options.minCoverage)
+        return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm covers only "
+                       + format("%.1f", attempt->coverage.fraction() * 100.0) + " % of the surface"
+                       + workingPixel(spacing));
+    if (mayGrow) {
+        const double base = pixel;
+        for (std::size_t k = 0; k < kDefaultPixelSteps.size() && attempt->coverage.fraction() < kDefaultCoverage; ++k) {
+            const double from = 0.9 + 0.1 * double(k) / double(kDefaultPixelSteps.size());
+            auto larger = rasterise(stats, cut, base * kDefaultPixelSteps[k], spacing, from,
+                                    from + 0.1 / double(kDefaultPixelSteps.size()));
+            if (!larger) return larger.error();
+            attempt = std::move(larger);
         }
     }
-    if (m_progress && m_progress->isCancelRequested()) return cancelled();
-    const double closing = spacing > 0.0 ? std::ceil(2.0 * spacing / pixel) : 2.0;
-    const shading::FieldCoverage coverage = shading::measureCoverage(*field, int(std::clamp(closing, 1.0, 64.0)));
-    if (m_options.pixelSize && coverage.fraction() < m_options.minCoverage)
-        return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm covers only "
-                       + format("%.1f", coverage.fraction() * 100.0) + " % of the surface"
-                       + workingPixel(spacing));
-    const double measured = double(field->count(shading::PixelState::Measured));
-    const double filledPixels = double(field->count(shading::PixelState::Filled));
+    UnrollReport report;
+    shading::HeightField& field = attempt->field;
+    pixel = field.pixelSize();
+    const double measured = double(field.count(shading::PixelState::Measured));
+    const double filledPixels = double(field.count(shading::PixelState::Filled));
     report.points = m_cloud.size();
     report.pointsUsed = stats.kept;
     report.pointsOffSurface = offSurface;
-    report.pointsHidden = stats.kept - raster.pointsAveraged();
+    report.pointsHidden = stats.kept - attempt->averaged;
     report.cutAngle = cut;
     report.pixelSize = pixel;
     report.band = m_band;
-    report.depthTolerance = tolerance;
+    report.depthTolerance = attempt->tolerance;
     report.samplingSpacing = spacing;
-    report.coverage = coverage.fraction();
+    report.coverage = attempt->coverage.fraction();
     report.filledFraction = measured + filledPixels > 0.0 ? filledPixels / (measured + filledPixels) : 0.0;
     if (m_progress) m_progress->update(1.0);
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    return Unrolled{std::move(*field), std::move(map), report};
+    return Unrolled{std::move(field), std::move(attempt->map), report};
 }
 
 } // namespace

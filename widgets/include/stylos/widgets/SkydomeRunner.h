@@ -4,21 +4,18 @@
  *        has an opened octree (on the document's TaskManager, so the Tasks dock lists them with Cancel),
  *        and when a job succeeds hands its re-opened octree to SceneDocument::replaceOctree(), whose
  *        octreeChanged() the 3D view already follows. Failures come back as failed() with the translated
- *        message naming the file. A fragment whose skydome is already being computed is skipped; a new or
- *        opened project (sceneAboutToBeReset) cancels the running jobs, leaving their files untouched.
- *        A result is applied only while the fragment still exists with the same octree file.
+ *        message naming the file. A fragment whose skydome is already being computed is skipped. The jobs
+ *        run through FragmentJobs: a new or opened project cancels them (their files untouched), and a
+ *        result is applied only while the fragment still exists with the same octree file.
  *        GUI thread only.
  */
+#include "stylos/widgets/FragmentJobs.h"
 #include "stylos/widgets/SceneDocument.h"
 #include "stylos/widgets/SkydomeJob.h"
 
+#include <QFuture>
 #include <QList>
 #include <QObject>
-#include <QPointer>
-
-#include <map>
-
-class QFutureWatcherBase;
 
 namespace stylos::widgets {
 
@@ -37,9 +34,9 @@ public:
      */
     int start(const QList<FragmentId>& ids, const SkydomeOptions& options = {});
     /** @brief True while a skydome task of @p id runs or waits. */
-    bool isRunning(FragmentId id) const { return m_running.count(id) != 0; }
+    bool isRunning(FragmentId id) const { return m_jobs.isRunning(id); }
     /** @brief Tasks running or waiting. */
-    int count() const { return static_cast<int>(m_running.size()); }
+    int count() const { return m_jobs.count(); }
 
 Q_SIGNALS:
     /** @brief The fragment's octree now has its "ambient" layer (replaceOctree() was called). */
@@ -48,10 +45,10 @@ Q_SIGNALS:
     void failed(quint64 id, const QString& message);
 
 private:
-    void ended(FragmentId id, QFutureWatcherBase* watcher);
+    void delivered(FragmentId id, const QFuture<SkydomeResult>& future);
 
     SceneDocument& m_document;
-    std::map<FragmentId, QPointer<QFutureWatcherBase>> m_running;
+    FragmentJobs m_jobs;
 };
 
 } // namespace stylos::widgets

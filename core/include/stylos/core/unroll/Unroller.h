@@ -43,6 +43,9 @@
  *  8. The coverage (shading::measureCoverage, closing radius ⌈2 d / s⌉ pixels, at most 64): the share of
  *     the object's footprint that has a height. A given pixel size whose image covers less than
  *     options.minCoverage of it is refused (InvalidArgument, the coverage and the pixel size that works).
+ *     The default pixel (with hole filling on), when its image covers less than kDefaultCoverage — scans
+ *     merged from many views, whose density varies, as the Happy Buddha's —, is enlarged by 1.25, 1.5, 2
+ *     and 3 in turn until it does (steps 5–8 again; the last is kept whatever its coverage).
  *
  * Cost: three passes over all the points (statistics; the largest h; the average), each a projection
  * per point (a few dot products and a square root, for a revolution a meridian lookup; the azimuth by a
@@ -74,6 +77,8 @@ namespace stylos::core::unroll {
 
 /** The default pixel of a .poct is at least this many leaf edges (step 4). */
 inline constexpr double kLeafEdgesPerPixel = 3.0;
+/** The default pixel is enlarged (×1.25, 1.5, 2, 3, in turn) while its image covers less of the footprint. */
+inline constexpr double kDefaultCoverage = 0.9;
 /** A given pixel size s with (s / d)² below this many points a pixel is refused before rasterising. */
 inline constexpr double kMinPointsPerPixel = 0.1;
 
