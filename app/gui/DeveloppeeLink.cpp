@@ -1,5 +1,7 @@
 #include "DeveloppeeLink.h"
 
+#include "stylos/core/scene/SceneEigen.h"
+
 #include "stylos/widgets/DeveloppeeDock.h"
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/DeveloppeeView.h"
@@ -12,15 +14,12 @@ namespace stylos::app {
 
 namespace {
 
-Eigen::Vector3d toEigen(const std::array<double, 3>& p) { return {p[0], p[1], p[2]}; }
-std::array<double, 3> toArray(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
-
 /** The fragment's first axis guide, in its own frame. */
 std::optional<core::unroll::Axis> axisGuide(const core::scene::Fragment& fragment)
 {
-    for (const core::scene::Guide& guide : fragment.guides)
-        if (guide.kind == core::scene::GuideKind::Axis) return core::unroll::Axis{toEigen(guide.origin), toEigen(guide.direction)};
-    return std::nullopt;
+    const auto line = core::scene::firstGuide(fragment, core::scene::GuideKind::Axis);
+    if (!line) return std::nullopt;
+    return core::unroll::Axis{line->origin, line->direction};
 }
 
 } // namespace
@@ -94,7 +93,7 @@ void DeveloppeeLink::markInView(quint64 fragmentId, const Eigen::Vector3d& octre
 {
     const core::scene::Fragment* f = m_document.fragment(fragmentId);
     if (!f || !m_viewport) return;
-    m_viewport->setMarker(toEigen(f->pose.apply(toArray(octreePoint))));
+    m_viewport->setMarker(core::scene::apply(f->pose, octreePoint));
 }
 
 void DeveloppeeLink::markInDeveloppee(const Eigen::Vector3d& scenePoint, core::scene::FragmentId id)
@@ -105,7 +104,7 @@ void DeveloppeeLink::markInDeveloppee(const Eigen::Vector3d& scenePoint, core::s
         view->setMarker(std::nullopt);
         return;
     }
-    view->setMarker(toEigen(f->pose.rigidInverse().apply(toArray(scenePoint))));
+    view->setMarker(core::scene::apply(f->pose.rigidInverse(), scenePoint));
 }
 
 } // namespace stylos::app
