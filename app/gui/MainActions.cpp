@@ -16,7 +16,7 @@
 namespace stylos::app {
 
 namespace {
-using widgets::StandardView;
+using core::view::StandardView;
 constexpr std::array<StandardView, 7> Views = {StandardView::Front, StandardView::Back, StandardView::Left,
                                                StandardView::Right, StandardView::Top,  StandardView::Bottom,
                                                StandardView::Iso};

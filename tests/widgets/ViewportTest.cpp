@@ -1,6 +1,7 @@
 // ViewportWidget: renders a small generated drum (.poct built in the test) with OpenGL 3.3 core under
 // Xvfb/llvmpipe; the framebuffer is not blank and the drum covers the middle; a click in the middle
-// picks a point of the drum's front surface (within a cell of the scanned samples); keys and markers.
+// picks a point of the drum's front surface (within a cell of the scanned samples); keys and markers;
+// a pose change moves the drawn fragment without a new cut; the orbit benchmark.
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
@@ -10,6 +11,8 @@
 #include "stylos/widgets/OrbitBenchmark.h"
 #include "stylos/widgets/ViewportWidget.h"
 
+#include <Eigen/Geometry>
+
 #include <QImage>
 #include <QJsonObject>
 #include <QSignalSpy>
@@ -17,9 +20,9 @@
 
 #include <limits>
 
+using stylos::core::view::StandardView;
+using stylos::core::view::ViewFragment;
 using stylos::widgets::OrbitBenchmark;
-using stylos::widgets::RenderFragment;
-using stylos::widgets::StandardView;
 using stylos::widgets::ViewportWidget;
 
 namespace {
@@ -46,6 +49,7 @@ private Q_SLOTS:
     void keysChangeTheView();
     void markerIsDrawn();
     void ambientShading();
+    void aPoseChangeMovesTheDrawnFragmentWithoutACut();
     void orbitBenchmarkReports();
 
 private:
@@ -78,7 +82,7 @@ void ViewportTest::initTestCase()
     m_view->resize(400, 300);
     m_view->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
-    RenderFragment f;
+    ViewFragment f;
     f.id = 42;
     f.octree = m_drum.octree;
     m_view->setFragments({f});
@@ -200,7 +204,7 @@ void ViewportTest::ambientShading()
         if (!stylos::core::ao::writeAmbientPoct(octree, ambient, path).ok()) return -1;
         auto opened = stylos::core::octree::PackedOctree::open(path);
         if (!opened.ok()) return -1;
-        RenderFragment f;
+        ViewFragment f;
         f.id = 42;
         f.octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened.value()));
         m_view->setFragments({f});
@@ -220,6 +224,43 @@ void ViewportTest::ambientShading()
     QVERIFY(qRed(colour) != qBlue(colour)); // the fragment's warm default colour, lit
     m_view->setShading(stylos::widgets::PointRenderer::Shading::Headlight);
     waitRefined();
+}
+
+void ViewportTest::aPoseChangeMovesTheDrawnFragmentWithoutACut()
+{
+    waitRefined();
+    const auto camera = m_view->camera();
+    const std::uint64_t cuts = m_view->scheduler().cutsStarted();
+    const auto before = m_view->renderer().points().modelMatrix(42);
+    QVERIFY(before);
+    const auto& origin = m_drum.octree->box().origin;
+    Eigen::Matrix4d expectedBefore = Eigen::Matrix4d::Identity();
+    expectedBefore.topRightCorner<3, 1>() << origin[0], origin[1], origin[2];
+    QVERIFY(*before == expectedBefore); // identity pose · the buffer's origin
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
+
+    // 150 pixels to the right at the target's depth: the drum leaves the middle of the view.
+    Eigen::Matrix4d pose = Eigen::Matrix4d::Identity();
+    pose.topRightCorner<3, 1>() = camera.right() * (150.0 / camera.pixelsPerMetre());
+    QVERIFY(m_view->setFragmentPose(42, pose));
+    QCOMPARE(m_view->scheduler().cutsStarted(), cuts); // no cut
+    QVERIFY(m_view->scheduler().isMoving());
+    QVERIFY(m_view->fragments().front().pose == pose);
+    const auto after = m_view->renderer().points().modelMatrix(42);
+    QVERIFY(after);
+    QVERIFY((*after - pose * expectedBefore).cwiseAbs().maxCoeff() == 0); // the drawn model matrix
+    const QImage image = m_view->grabFramebuffer();
+    QVERIFY(isBackground(image.pixel(200, 150)));
+    QVERIFY(!isBackground(image.pixel(350, 150)));
+    QCOMPARE(m_view->scheduler().cutsStarted(), cuts); // drawing it started none either
+    QVERIFY(!m_view->setFragmentPose(7, pose));      // no such fragment
+
+    // Once still, the cut for the new pose follows; back where it was.
+    waitRefined();
+    QVERIFY(m_view->scheduler().cutsStarted() > cuts);
+    QVERIFY(m_view->setFragmentPose(42, Eigen::Matrix4d::Identity()));
+    waitRefined();
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
 }
 
 void ViewportTest::orbitBenchmarkReports()

@@ -50,7 +50,7 @@ void OrbitBenchmark::step()
     if (!m_viewport || int(m_ms.size()) >= m_options.frames) return finish();
     QElapsedTimer timer;
     timer.start();
-    Camera camera = m_viewport->camera();
+    core::view::Camera camera = m_viewport->camera();
     camera.orbit(m_options.degreesPerFrame * M_PI / 180.0, 0.0);
     m_viewport->setCamera(camera, true);
     m_viewport->renderNow(); // drawn, swapped and finished (glFinish)
