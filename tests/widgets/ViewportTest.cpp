@@ -1,7 +1,7 @@
 // ViewportWidget: renders a small generated drum (.poct built in the test) with OpenGL 3.3 core under
 // Xvfb/llvmpipe; the framebuffer is not blank and the drum covers the middle; a click in the middle
 // picks a point of the drum's front surface (within a cell of the scanned samples); keys and markers;
-// a pose change moves the drawn fragment without a new cut; the orbit benchmark.
+// a pose change moves the drawn fragment without a new cut; the orbit and pose benchmarks.
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
@@ -9,6 +9,7 @@
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/io/PointReader.h"
 #include "stylos/widgets/OrbitBenchmark.h"
+#include "stylos/widgets/PoseBenchmark.h"
 #include "stylos/widgets/ViewportWidget.h"
 
 #include <Eigen/Geometry>
@@ -23,6 +24,7 @@
 using stylos::core::view::StandardView;
 using stylos::core::view::ViewFragment;
 using stylos::widgets::OrbitBenchmark;
+using stylos::widgets::PoseBenchmark;
 using stylos::widgets::ViewportWidget;
 
 namespace {
@@ -51,6 +53,7 @@ private Q_SLOTS:
     void ambientShading();
     void aPoseChangeMovesTheDrawnFragmentWithoutACut();
     void orbitBenchmarkReports();
+    void poseBenchmarkReports();
 
 private:
     void waitRefined();
@@ -287,6 +290,50 @@ void ViewportTest::orbitBenchmarkReports()
     QCOMPARE(s["medianMs"].toDouble(), 2.5);
     QCOMPARE(s["p95Ms"].toDouble(), 4.0);
     QCOMPARE(s["meanPointsDrawn"].toDouble(), 25.0);
+}
+
+void ViewportTest::poseBenchmarkReports()
+{
+    waitRefined();
+    PoseBenchmark::Options options;
+    options.frames = 12;
+    options.degreesPerFrame = 5;
+    PoseBenchmark benchmark(*m_view, options);
+    QSignalSpy finished(&benchmark, &PoseBenchmark::finished);
+    const auto camera = m_view->camera();
+    const std::uint64_t cuts = m_view->scheduler().cutsStarted();
+    const Eigen::Vector3d centre = m_view->sceneBounds().center();
+    const Eigen::Matrix4d model = *m_view->renderer().points().modelMatrix(42);
+    benchmark.start();
+    QVERIFY(finished.wait(30000));
+    const QJsonObject o = finished.first().at(0).toJsonObject();
+    QVERIFY2(!o.contains("error"), qPrintable(o["error"].toString()));
+    QCOMPARE(o["frames"].toInt(), 12);
+    QCOMPARE(o["fragmentId"].toDouble(), 42.0);
+    QCOMPARE(o["degreesPerFrame"].toDouble(), 5.0);
+    QVERIFY(o["medianMs"].toDouble() > 0);
+    QVERIFY(o["meanPointsDrawn"].toDouble() > 1000);
+    QCOMPARE(m_view->scheduler().cutsStarted(), cuts); // twelve poses, not one cut
+    QVERIFY((m_view->camera().viewMatrix() - camera.viewMatrix()).cwiseAbs().maxCoeff() == 0); // the camera stays
+    // The fragment turned 60° about the vertical through its centre.
+    const Eigen::Affine3d turn = Eigen::Translation3d(centre) * Eigen::AngleAxisd(M_PI / 3, Eigen::Vector3d::UnitZ()) *
+                                 Eigen::Translation3d(-centre);
+    const Eigen::Matrix4d drawn = *m_view->renderer().points().modelMatrix(42);
+    QVERIFY2((drawn - turn.matrix() * model).cwiseAbs().maxCoeff() < 1e-12,
+             qPrintable(QString::number((drawn - turn.matrix() * model).cwiseAbs().maxCoeff())));
+
+    // An unknown fragment is an error, at once.
+    PoseBenchmark::Options none;
+    none.frames = 3;
+    none.fragmentId = 7;
+    PoseBenchmark missing(*m_view, none);
+    QSignalSpy failed(&missing, &PoseBenchmark::finished);
+    m_view->setFragmentPose(42, Eigen::Matrix4d::Identity());
+    waitRefined();
+    missing.start();
+    QVERIFY(failed.wait(30000));
+    QCOMPARE(failed.first().at(0).toJsonObject()["frames"].toInt(), 0);
+    QVERIFY(failed.first().at(0).toJsonObject()["error"].toString().contains("7"));
 }
 
 STYLOS_WIDGET_TEST_MAIN(ViewportTest)
