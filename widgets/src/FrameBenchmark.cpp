@@ -41,6 +41,7 @@ void FrameBenchmark::waitForView()
         m_firstFrameMs = m_viewport->firstFrameMs();
         m_refinedPoints = m_viewport->lastPointsDrawn();
         if (!prepare(*m_viewport)) return finish();
+        m_cutsBefore = m_viewport->scheduler().cutsStarted();
         QTimer::singleShot(0, this, &FrameBenchmark::step);
         return;
     }
@@ -89,6 +90,7 @@ void FrameBenchmark::finish()
         o["height"] = m_viewport->height();
         o["pointBudget"] = double(m_viewport->scheduler().pointBudget());
         o["targetFrameMs"] = m_viewport->scheduler().targetFrameMs();
+        if (!m_ms.empty()) o["cutsStarted"] = double(m_viewport->scheduler().cutsStarted() - m_cutsBefore);
     }
     o["firstFrameMs"] = m_firstFrameMs;
     o["refinedPoints"] = double(m_refinedPoints);

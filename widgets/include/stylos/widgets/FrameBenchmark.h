@@ -10,7 +10,8 @@
  * Before the first frame it waits until the view has drawn points and (by default) has been refined, the
  * state after opening a file and letting it settle. Result (finished()): a JSON object {"frames", "width",
  * "height", "medianMs", "p95Ms", "meanMs", "maxMs", "meanPointsDrawn", "minPointsDrawn", "maxPointsDrawn",
- * "pointBudget", "targetFrameMs", "firstFrameMs", "refinedPoints"} and the keys of the kind of benchmark;
+ * "pointBudget", "targetFrameMs", "firstFrameMs", "refinedPoints", "cutsStarted"} and the keys of the kind of
+ * benchmark; "cutsStarted" counts the level-of-detail cuts the view started from the first timed frame to the end;
  * frame times in ms, p95 by the nearest rank. GUI thread only. Failure modes: none; a viewport without
  * fragments never starts (finished() is emitted with "error" after the wait timeout).
  */
@@ -69,6 +70,7 @@ private:
     int m_waitedMs = 0;
     double m_firstFrameMs = -1;
     std::uint64_t m_refinedPoints = 0;
+    std::uint64_t m_cutsBefore = 0;  ///< LodScheduler::cutsStarted() before the first timed frame
 };
 
 } // namespace stylos::widgets
