@@ -39,6 +39,22 @@
         <source>--grab and --orbit-benchmark do not go together</source>
         <translation>τα --grab και --orbit-benchmark δεν μπορούν να συνδυαστούν</translation>
     </message>
+    <message>
+        <source>Turn the first fragment, a change of its pose every frame, for &lt;frames&gt; frames at 1280 × 800 once the scene is ready, print the frame times as JSON and exit.</source>
+        <translation>Περιστροφή του πρώτου θραύσματος, με αλλαγή της θέσης του σε κάθε καρέ, για &lt;καρέ&gt; καρέ σε 1280 × 800 μόλις η σκηνή είναι έτοιμη, εκτύπωση των χρόνων καρέ ως JSON και έξοδος.</translation>
+    </message>
+    <message>
+        <source>--pose-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
+        <translation>--pose-benchmark: το «%1» δεν είναι πλήθος καρέ (1 έως 100000)</translation>
+    </message>
+    <message>
+        <source>--pose-benchmark needs exactly one file</source>
+        <translation>το --pose-benchmark απαιτεί ακριβώς ένα αρχείο</translation>
+    </message>
+    <message>
+        <source>--pose-benchmark goes with neither --grab nor --orbit-benchmark</source>
+        <translation>το --pose-benchmark δεν συνδυάζεται ούτε με το --grab ούτε με το --orbit-benchmark</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeLink</name>

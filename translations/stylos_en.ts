@@ -39,6 +39,22 @@
         <source>--grab and --orbit-benchmark do not go together</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Turn the first fragment, a change of its pose every frame, for &lt;frames&gt; frames at 1280 × 800 once the scene is ready, print the frame times as JSON and exit.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--pose-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--pose-benchmark needs exactly one file</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--pose-benchmark goes with neither --grab nor --orbit-benchmark</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeLink</name>

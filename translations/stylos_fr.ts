@@ -39,6 +39,22 @@
         <source>--grab and --orbit-benchmark do not go together</source>
         <translation>--grab et --orbit-benchmark ne peuvent pas être combinés</translation>
     </message>
+    <message>
+        <source>Turn the first fragment, a change of its pose every frame, for &lt;frames&gt; frames at 1280 × 800 once the scene is ready, print the frame times as JSON and exit.</source>
+        <translation>Faire tourner le premier fragment, un changement de sa pose à chaque image, pendant &lt;images&gt; images en 1280 × 800 une fois la scène prête, afficher les temps d’image en JSON et quitter.</translation>
+    </message>
+    <message>
+        <source>--pose-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
+        <translation>--pose-benchmark : « %1 » n’est pas un nombre d’images (de 1 à 100000)</translation>
+    </message>
+    <message>
+        <source>--pose-benchmark needs exactly one file</source>
+        <translation>--pose-benchmark demande exactement un fichier</translation>
+    </message>
+    <message>
+        <source>--pose-benchmark goes with neither --grab nor --orbit-benchmark</source>
+        <translation>--pose-benchmark ne peut être combiné ni avec --grab ni avec --orbit-benchmark</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeLink</name>

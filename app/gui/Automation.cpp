@@ -2,7 +2,9 @@
 
 #include "LogDock.h"
 #include "MainWindow.h"
+#include "ViewportSync.h"
 #include "stylos/widgets/OrbitBenchmark.h"
+#include "stylos/widgets/PoseBenchmark.h"
 #include "stylos/widgets/SceneDocument.h"
 #include "stylos/widgets/ViewportWidget.h"
 
@@ -47,6 +49,47 @@ void whenReady(MainWindow& window, int timeoutMs, std::function<void()> then)
     timer->start(200);
 }
 
+/** The frame benchmarks' common run: the view alone at 1280 × 800, then @p make's benchmark once ready. */
+void benchmarkWhenReady(MainWindow& window, const char* option, int timeoutMs,
+                        std::function<widgets::FrameBenchmark*(widgets::ViewportWidget&)> make)
+{
+    window.setErrorDialogsEnabled(false);
+    widgets::ViewportWidget* viewport = window.viewport();
+    if (!viewport) {
+        std::fprintf(stderr, "stylos: %s needs OpenGL 3.3 (core profile)\n", option);
+        QTimer::singleShot(0, qApp, [] { QApplication::exit(1); });
+        return;
+    }
+    // From here (just before the file is opened) to the first frame that drew points.
+    auto sinceOpen = std::make_shared<QElapsedTimer>();
+    sinceOpen->start();
+    auto openToFirstFrame = std::make_shared<double>(-1.0);
+    QObject::connect(viewport, &widgets::ViewportWidget::pointsDrawn, &window, [sinceOpen, openToFirstFrame](quint64 n) {
+        if (*openToFirstFrame < 0 && n > 0) *openToFirstFrame = double(sinceOpen->nsecsElapsed()) / 1e6;
+    });
+    for (QDockWidget* dock : window.findChildren<QDockWidget*>()) dock->hide();
+    for (QToolBar* bar : window.findChildren<QToolBar*>()) bar->hide();
+    viewport->setFixedSize(1280, 800);
+    window.adjustSize();
+    whenReady(window, timeoutMs, [&window, viewport, openToFirstFrame, make] {
+        if (window.logDock().errorCount() > 0 || viewport->fragments().empty()) {
+            std::fprintf(stderr, "stylos: nothing to show: the file did not open\n");
+            QApplication::exit(1);
+            return;
+        }
+        widgets::FrameBenchmark* benchmark = make(*viewport);
+        benchmark->setParent(&window);
+        QObject::connect(benchmark, &widgets::FrameBenchmark::finished, &window,
+                         [openToFirstFrame](QJsonObject result) {
+            result.insert(QStringLiteral("openToFirstFrameMs"), *openToFirstFrame);
+            std::fputs(QJsonDocument(result).toJson(QJsonDocument::Indented).constData(), stdout);
+            std::fflush(stdout);
+            QApplication::exit(result.contains(QStringLiteral("error")) ? 1 : 0);
+        });
+        benchmark->start();
+    });
+}
+
 } // namespace
 
 bool isWindowReady(const MainWindow& window)
@@ -83,41 +126,28 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs)
 
 void orbitWhenReady(MainWindow& window, int frames, int timeoutMs)
 {
-    window.setErrorDialogsEnabled(false);
-    widgets::ViewportWidget* viewport = window.viewport();
-    if (!viewport) {
-        std::fprintf(stderr, "stylos: --orbit-benchmark needs OpenGL 3.3 (core profile)\n");
-        QTimer::singleShot(0, qApp, [] { QApplication::exit(1); });
-        return;
-    }
-    // From here (just before the file is opened) to the first frame that drew points.
-    auto sinceOpen = std::make_shared<QElapsedTimer>();
-    sinceOpen->start();
-    auto openToFirstFrame = std::make_shared<double>(-1.0);
-    QObject::connect(viewport, &widgets::ViewportWidget::pointsDrawn, &window, [sinceOpen, openToFirstFrame](quint64 n) {
-        if (*openToFirstFrame < 0 && n > 0) *openToFirstFrame = double(sinceOpen->nsecsElapsed()) / 1e6;
-    });
-    for (QDockWidget* dock : window.findChildren<QDockWidget*>()) dock->hide();
-    for (QToolBar* bar : window.findChildren<QToolBar*>()) bar->hide();
-    viewport->setFixedSize(1280, 800);
-    window.adjustSize();
-    whenReady(window, timeoutMs, [&window, viewport, frames, openToFirstFrame] {
-        if (window.logDock().errorCount() > 0 || viewport->fragments().empty()) {
-            std::fprintf(stderr, "stylos: nothing to orbit: the file did not open\n");
-            QApplication::exit(1);
-            return;
-        }
+    benchmarkWhenReady(window, "--orbit-benchmark", timeoutMs, [frames](widgets::ViewportWidget& viewport) {
         widgets::OrbitBenchmark::Options options;
         options.frames = frames;
-        auto* benchmark = new widgets::OrbitBenchmark(*viewport, options, &window);
-        QObject::connect(benchmark, &widgets::OrbitBenchmark::finished, &window,
-                         [openToFirstFrame](QJsonObject result) {
-            result.insert(QStringLiteral("openToFirstFrameMs"), *openToFirstFrame);
-            std::fputs(QJsonDocument(result).toJson(QJsonDocument::Indented).constData(), stdout);
-            std::fflush(stdout);
-            QApplication::exit(result.contains(QStringLiteral("error")) ? 1 : 0);
-        });
-        benchmark->start();
+        return new widgets::OrbitBenchmark(viewport, options);
+    });
+}
+
+void poseWhenReady(MainWindow& window, int frames, int timeoutMs)
+{
+    benchmarkWhenReady(window, "--pose-benchmark", timeoutMs, [&window, frames](widgets::ViewportWidget& viewport) {
+        widgets::PoseBenchmark::Options options;
+        options.frames = frames;
+        auto continuing = std::make_shared<bool>(false);
+        options.setPose = [&window, continuing](std::uint64_t id, const Eigen::Matrix4d& pose) {
+            std::array<double, 16> rowMajor{};
+            for (int row = 0; row < 4; ++row)
+                for (int col = 0; col < 4; ++col) rowMajor[std::size_t(4 * row + col)] = pose(row, col);
+            window.document().setFragmentPose(id, core::scene::Pose(rowMajor), *continuing); // one undo step
+            *continuing = true;
+            window.viewportSync()->pushNow(); // what the next turn of the event loop would push
+        };
+        return new widgets::PoseBenchmark(viewport, std::move(options));
     });
 }
 

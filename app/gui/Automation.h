@@ -1,6 +1,6 @@
 #pragma once
 /** @file
- * @brief The automation behind `stylos --grab` and `stylos --orbit-benchmark`: wait until the window is
+ * @brief The automation behind `stylos --grab`, `--orbit-benchmark` and `--pose-benchmark`: wait until the window is
  *        ready — no task running, no import or octree load pending, the demo prepared, and the 3D view
  *        showing every opened fragment at full detail — then act and quit the application. Polls every
  *        200 ms (the window is never blocked); gives up after @p timeoutMs with exit status 1.
@@ -27,5 +27,13 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 *
  *        from this call (made just before the file is opened) to the first frame that drew points.
  */
 void orbitWhenReady(MainWindow& window, int frames, int timeoutMs = 15 * 60 * 1000);
+
+/**
+ * @brief As orbitWhenReady(), but the camera stays and the first fragment turns about the vertical axis through
+ *        its centre, 1° a frame (widgets::PoseBenchmark), each pose an edit of the document
+ *        (SceneDocument::setFragmentPose, one merged undo step, as a drag) pushed to the view at once
+ *        (ViewportSync::pushNow: a pose only, no new cut); the frame time covers the edit, the push and the frame.
+ */
+void poseWhenReady(MainWindow& window, int frames, int timeoutMs = 15 * 60 * 1000);
 
 } // namespace stylos::app

@@ -33,8 +33,14 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
                                    tr("Orbit the camera for <frames> frames at 1280 × 800 once the scene is ready, "
                                       "print the frame times as JSON and exit."),
                                    tr("frames"));
+    const QCommandLineOption pose(QStringLiteral("pose-benchmark"),
+                                  tr("Turn the first fragment, a change of its pose every frame, for <frames> "
+                                     "frames at 1280 × 800 once the scene is ready, print the frame times as JSON "
+                                     "and exit."),
+                                  tr("frames"));
     parser.addOption(grab);
     parser.addOption(orbit);
+    parser.addOption(pose);
     parser.addPositionalArgument(QStringLiteral("files"),
                                  tr("A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, "
                                     "OBJ, POCT)."),
@@ -51,6 +57,15 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
             usageError(tr("--orbit-benchmark: '%1' is not a frame count (1 to 100000)").arg(parser.value(orbit)));
         if (result.files.size() != 1) usageError(tr("--orbit-benchmark needs exactly one file"));
         if (!result.grabPath.isEmpty()) usageError(tr("--grab and --orbit-benchmark do not go together"));
+    }
+    if (parser.isSet(pose)) {
+        bool ok = false;
+        result.poseFrames = parser.value(pose).toInt(&ok);
+        if (!ok || result.poseFrames < 1 || result.poseFrames > 100000)
+            usageError(tr("--pose-benchmark: '%1' is not a frame count (1 to 100000)").arg(parser.value(pose)));
+        if (result.files.size() != 1) usageError(tr("--pose-benchmark needs exactly one file"));
+        if (!result.grabPath.isEmpty() || result.orbitFrames > 0)
+            usageError(tr("--pose-benchmark goes with neither --grab nor --orbit-benchmark"));
     }
     return result;
 }

@@ -1,8 +1,8 @@
 #pragma once
 /** @file
  * @brief The `stylos` command line: FILES to open (a `.stylos` project, or scans and `.poct` octrees to
- *        import; none: the demo scene), --grab OUT.png and --orbit-benchmark N for automation, --help and
- *        --version (handled by QCommandLineParser, which exits).
+ *        import; none: the demo scene), --grab OUT.png, --orbit-benchmark N and --pose-benchmark N for
+ *        automation, --help and --version (handled by QCommandLineParser, which exits).
  */
 #include <QString>
 #include <QStringList>
@@ -15,6 +15,7 @@ struct CommandLine {
     QStringList files;       ///< what to open; empty: the demo scene
     QString grabPath;        ///< non-empty: render the window to this PNG once everything is ready, then exit
     int orbitFrames = 0;     ///< > 0: orbit the camera for this many frames, print JSON, exit
+    int poseFrames = 0;      ///< > 0: turn the first fragment (a pose change) for this many frames, print JSON, exit
 
     /** Parses the application's arguments; exits the process for --help, --version and usage errors (2). */
     static CommandLine parse(const QCoreApplication& app);

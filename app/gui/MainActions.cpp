@@ -16,11 +16,11 @@
 namespace stylos::app {
 
 namespace {
-using widgets::StandardView;
+using core::view::StandardView;
 constexpr std::array<StandardView, 7> Views = {StandardView::Front, StandardView::Back, StandardView::Left,
                                                StandardView::Right, StandardView::Top,  StandardView::Bottom,
                                                StandardView::Iso};
-/** The viewport's own keys (ViewportWidget.h), as shortcuts active while it has the focus. */
+/** The viewport's own keys (its navigation, NavigationTool.h), as shortcuts active while it has the focus. */
 const std::array<QKeySequence, 7> ViewKeys = {QKeySequence(Qt::Key_1), QKeySequence(Qt::CTRL | Qt::Key_1),
                                               QKeySequence(Qt::CTRL | Qt::Key_3), QKeySequence(Qt::Key_3),
                                               QKeySequence(Qt::Key_7), QKeySequence(Qt::CTRL | Qt::Key_7),

@@ -49,6 +49,8 @@ public:
     widgets::SkydomeRunner& skydome() const { return *m_skydome; }
     /** @brief Null when this platform has no OpenGL 3.3 core (a message stands in its place). */
     widgets::ViewportWidget* viewport() const { return m_viewport; }
+    /** @brief What feeds the 3D view from the document; null without a view. */
+    ViewportSync* viewportSync() const { return m_sync; }
     SceneDock& sceneDock() const { return *m_sceneDock; }
     PropertiesDock& propertiesDock() const { return *m_propertiesDock; }
     widgets::DeveloppeeDock& developpeeDock() const { return *m_developpee; }

@@ -1,6 +1,6 @@
 #include "ViewportSync.h"
 
-#include "stylos/widgets/RenderFragment.h"
+#include "stylos/core/view/ViewFragment.h"
 #include "stylos/widgets/SceneDocument.h"
 #include "stylos/widgets/ViewportWidget.h"
 
@@ -38,19 +38,24 @@ void ViewportSync::pushNow()
 {
     m_scheduled = false;
     if (!m_viewport) return;
-    std::vector<widgets::RenderFragment> fragments;
+    std::vector<core::view::ViewFragment> fragments;
     for (const core::scene::Fragment& f : m_document.scene().fragments()) {
         auto octree = m_document.octree(f.id);
         if (!octree) continue;
-        widgets::RenderFragment r;
+        core::view::ViewFragment r;
         r.id = f.id;
         r.octree = std::move(octree);
         for (int row = 0; row < 4; ++row)
             for (int col = 0; col < 4; ++col) r.pose(row, col) = f.pose(row, col);
-        r.colour = QColor(f.colour.r, f.colour.g, f.colour.b);
+        r.colour = {f.colour.r, f.colour.g, f.colour.b};
         r.visible = f.visible;
         r.selected = m_selection.contains(f.id);
         fragments.push_back(std::move(r));
+    }
+    // A pose alone moves its fragment in the view (no new cut); anything else replaces the fragments.
+    if (const auto poses = core::view::poseChanges(m_viewport->fragments(), fragments)) {
+        for (const core::view::PoseChange& change : *poses) m_viewport->setFragmentPose(change.id, change.pose);
+        return;
     }
     m_viewport->setFragments(std::move(fragments));
 }

@@ -2,8 +2,10 @@
 /** @file
  * @brief Keeps the 3D view showing the scene document: after any change of the fragments (added, removed,
  *        moved, recoloured, hidden, their octree opened or replaced) or of the selection, it hands the view
- *        one RenderFragment per fragment with an octree. Changes arriving in one turn of the event loop are
- *        pushed once. The view never reads the document. GUI thread only.
+ *        one core::view::ViewFragment per fragment with an octree. Changes arriving in one turn of the event
+ *        loop are pushed once. When only poses changed (a fragment dragged, a pose typed, undone or redone),
+ *        only the poses are pushed (ViewportWidget::setFragmentPose: a new model matrix, no new cut); when
+ *        nothing the view shows changed, nothing is pushed. The view never reads the document. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
 

@@ -22,6 +22,7 @@ int main(int argc, char* argv[])
     stylos::app::MainWindow window(translations);
     if (!options.grabPath.isEmpty()) stylos::app::grabWhenReady(window, options.grabPath);
     if (options.orbitFrames > 0) stylos::app::orbitWhenReady(window, options.orbitFrames);
+    if (options.poseFrames > 0) stylos::app::poseWhenReady(window, options.poseFrames);
     window.show();
     if (options.files.isEmpty()) window.openDemo();
     else window.projectActions().openPaths(options.files);

@@ -1,6 +1,7 @@
 // The `stylos` executable's automation: --grab OUT.png [FILES] waits for the scene, its tasks and the
 // refined view, writes a PNG of the window in which the drum is visible and exits 0, or 1 naming the file
-// that failed; --orbit-benchmark N FILE prints the frame times as JSON; --version and --help.
+// that failed; --orbit-benchmark N FILE and --pose-benchmark N FILE print the frame times as JSON; --version
+// and --help.
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
@@ -22,6 +23,7 @@ private Q_SLOTS:
     void grabsTheDemoScene();
     void failsNamingTheBadFile();
     void orbitBenchmarkPrintsFrameTimes();
+    void poseBenchmarkPrintsFrameTimes();
     void rejectsBadOptions();
 
 private:
@@ -144,6 +146,25 @@ void GrabTest::orbitBenchmarkPrintsFrameTimes()
     QVERIFY(result.value("openToFirstFrameMs").toDouble() > 0);
 }
 
+void GrabTest::poseBenchmarkPrintsFrameTimes()
+{
+    if (!hasDisplay()) QSKIP("no display: the 3D view is not created");
+    QString out, err;
+    QCOMPARE(run({"--pose-benchmark", "5", QString::fromStdString(m_drum.poct.string())}, &out, &err), 0);
+    const QJsonObject result = QJsonDocument::fromJson(out.toUtf8()).object();
+    QVERIFY2(!result.isEmpty(), qPrintable(out + err));
+    QCOMPARE(result.value("frames").toInt(), 5);
+    QCOMPARE(result.value("width").toInt(), 1280);
+    QCOMPARE(result.value("height").toInt(), 800);
+    QCOMPARE(result.value("fragmentId").toDouble(), 1.0); // the first fragment of the new project
+    QCOMPARE(result.value("degreesPerFrame").toDouble(), 1.0);
+    QCOMPARE(result.value("cutsStarted").toDouble(), 0.0); // five poses, no cut
+    QVERIFY(result.value("medianMs").toDouble() > 0);
+    QVERIFY(result.value("p95Ms").toDouble() >= result.value("medianMs").toDouble());
+    QVERIFY(result.value("maxPointsDrawn").toDouble() > 0);
+    QVERIFY(!result.contains("error"));
+}
+
 void GrabTest::rejectsBadOptions()
 {
     QString err;
@@ -151,6 +172,12 @@ void GrabTest::rejectsBadOptions()
     QVERIFY2(err.contains("many"), qPrintable(err));
     QCOMPARE(run({"--orbit-benchmark", "5"}, nullptr, &err), 2);
     QVERIFY2(err.contains("exactly one file"), qPrintable(err));
+    QCOMPARE(run({"--pose-benchmark", "0", "x.poct"}, nullptr, &err), 2);
+    QVERIFY2(err.contains("--pose-benchmark: '0'"), qPrintable(err));
+    QCOMPARE(run({"--pose-benchmark", "5", "a.poct", "b.poct"}, nullptr, &err), 2);
+    QVERIFY2(err.contains("--pose-benchmark needs exactly one file"), qPrintable(err));
+    QCOMPARE(run({"--pose-benchmark", "5", "--orbit-benchmark", "5", "x.poct"}, nullptr, &err), 2);
+    QVERIFY2(err.contains("neither --grab nor --orbit-benchmark"), qPrintable(err));
 }
 
 STYLOS_WIDGET_TEST_MAIN(GrabTest)

@@ -1,12 +1,13 @@
-// LodScheduler: the budget is respected, a still view refines (in stages, in the background) to the
-// whole leaf level of a small octree, fragments share the budget, the global level mode, and the
-// frame-time controller of the motion budget.
+// LodScheduler: a still view refines (in stages, in the background) to the whole leaf level of a small
+// octree, a change of poses alone starts no cut until the poses stop changing, and the frame-time
+// controller of the motion budget. What a cut is (the budget, its sharing, the global level mode, the
+// splats) is core::view's, tested without a display in tests/core (SceneCutTest, BudgetShareTest,
+// SplatBufferTest).
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
-#include "stylos/core/ao/AoExport.h"
+#include "stylos/core/view/SceneCut.h"
 #include "stylos/widgets/LodScheduler.h"
-#include "stylos/widgets/SplatBuffer.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -15,10 +16,11 @@
 #include <set>
 #include <tuple>
 
-using stylos::widgets::Camera;
+using stylos::core::view::Camera;
+using stylos::core::view::SceneCut;
+using stylos::core::view::StandardView;
+using stylos::core::view::ViewFragment;
 using stylos::widgets::LodScheduler;
-using stylos::widgets::RenderFragment;
-using stylos::widgets::StandardView;
 
 namespace {
 
@@ -38,17 +40,13 @@ class LodSchedulerTest : public QObject {
 
 private Q_SLOTS:
     void initTestCase();
-    void budgetIsRespected();
     void refinesToTheLeafLevelWhenStill();
-    void fragmentsShareTheBudget();
-    void shareBudgetExactly();
-    void hiddenAndGlobalLevel();
+    void aPoseChangeStartsNoCut();
     void motionBudgetFollowsFrameTimes();
-    void splatsCarryTheAmbientLayer();
 
 private:
     Camera fittedCamera(const Eigen::Matrix4d& pose = Eigen::Matrix4d::Identity()) const;
-    RenderFragment fragment(std::uint64_t id, const Eigen::Matrix4d& pose = Eigen::Matrix4d::Identity()) const;
+    ViewFragment fragment(std::uint64_t id, const Eigen::Matrix4d& pose = Eigen::Matrix4d::Identity()) const;
 
     QTemporaryDir m_dir;
     stylos::test::DrumOctree m_drum;
@@ -75,26 +73,13 @@ Camera LodSchedulerTest::fittedCamera(const Eigen::Matrix4d& pose) const
     return camera;
 }
 
-RenderFragment LodSchedulerTest::fragment(std::uint64_t id, const Eigen::Matrix4d& pose) const
+ViewFragment LodSchedulerTest::fragment(std::uint64_t id, const Eigen::Matrix4d& pose) const
 {
-    RenderFragment f;
+    ViewFragment f;
     f.id = id;
     f.octree = m_drum.octree;
     f.pose = pose;
     return f;
-}
-
-void LodSchedulerTest::budgetIsRespected()
-{
-    const Camera camera = fittedCamera();
-    for (std::uint64_t budget : {1ull, 37ull, 500ull, 5000ull}) {
-        const auto batch = LodScheduler::computeCuts({fragment(1)}, camera, {}, budget);
-        QCOMPARE(batch.fragments.size(), 1u);
-        QVERIFY(batch.cells <= budget);
-        QCOMPARE(batch.fragments[0].splats.vertices.size(), batch.cells);
-        QVERIFY(batch.budgetReached);
-        QVERIFY(batch.cells >= budget * 8 / 10); // the budget is used, not wasted
-    }
 }
 
 void LodSchedulerTest::refinesToTheLeafLevelWhenStill()
@@ -117,11 +102,11 @@ void LodSchedulerTest::refinesToTheLeafLevelWhenStill()
     QVERIFY2(cuts.size() >= 3, "progressive: several stages");
     std::uint64_t previous = 0;
     for (const auto& args : cuts) {
-        const auto batch = args.at(0).value<std::shared_ptr<const LodScheduler::CutBatch>>();
+        const auto batch = args.at(0).value<std::shared_ptr<const SceneCut>>();
         QVERIFY(batch->cells > previous);
         previous = batch->cells;
     }
-    const auto last = cuts.last().at(0).value<std::shared_ptr<const LodScheduler::CutBatch>>();
+    const auto last = cuts.last().at(0).value<std::shared_ptr<const SceneCut>>();
     QVERIFY(last->final);
     QVERIFY(!last->budgetReached);
 
@@ -144,72 +129,50 @@ void LodSchedulerTest::refinesToTheLeafLevelWhenStill()
     QVERIFY(cut == leaves);
 }
 
-void LodSchedulerTest::fragmentsShareTheBudget()
+void LodSchedulerTest::aPoseChangeStartsNoCut()
 {
-    // Two copies side by side, symmetric about the view axis, and a third far behind them.
-    const double size = m_drum.octree->box().size;
-    Eigen::Matrix4d left = Eigen::Matrix4d::Identity(), right = left, far = left;
-    left(0, 3) = -0.6 * size;
-    right(0, 3) = 0.6 * size;
-    far(1, 3) = 6 * size;
-    Camera camera = fittedCamera();
-    camera.setStandardView(StandardView::Front);
-    camera.setDistance(camera.distance() * 2);
-    Eigen::AlignedBox3d all = camera.sceneBounds();
-    all.extend(all.min() + Eigen::Vector3d(0, 6 * size, 0));
-    all.extend(all.min() - Eigen::Vector3d(0.6 * size, 0, 0));
-    all.extend(all.max() + Eigen::Vector3d(0.6 * size, 6 * size, 0));
-    camera.setSceneBounds(all);
+    LodScheduler scheduler;
+    scheduler.setIdleDelay(1000);
+    QSignalSpy refined(&scheduler, &LodScheduler::refined);
+    QSignalSpy stopped(&scheduler, &LodScheduler::motionStopped);
+    QSignalSpy cuts(&scheduler, &LodScheduler::cutReady);
+    const Camera camera = fittedCamera();
+    scheduler.setFragments({fragment(1), fragment(2)}, camera);
+    QVERIFY(refined.wait(20000));
+    QTRY_VERIFY(!scheduler.isComputing());
+    const std::uint64_t before = scheduler.cutsStarted();
+    QVERIFY(before >= 1);
+    QCOMPARE(std::uint64_t(cuts.size()), before); // each cut started was delivered
 
-    // A coarse threshold, so that the needs differ within this shallow octree (depth 6).
-    LodScheduler::Settings coarse;
-    coarse.pixelThreshold = 8;
-    const std::uint64_t budget = 3000;
-    const auto batch = LodScheduler::computeCuts({fragment(1, left), fragment(2, right), fragment(3, far)}, camera,
-                                                 coarse, budget);
-    QCOMPARE(batch.fragments.size(), 3u);
-    const auto n = [&](int i) { return double(batch.fragments[std::size_t(i)].splats.vertices.size()); };
-    QVERIFY(batch.cells <= budget);
-    QVERIFY(batch.cells >= budget * 9 / 10);
-    QVERIFY2(std::abs(n(0) - n(1)) <= 0.1 * n(0), qPrintable(QString("%1 vs %2").arg(n(0)).arg(n(1))));
-    QVERIFY2(n(2) > 0 && n(2) < 0.5 * n(0), qPrintable(QString("far %1 near %2").arg(n(2)).arg(n(0))));
+    // A drag: poses change, no cut starts; the view counts as moving (quick frames).
+    Eigen::Matrix4d moved = Eigen::Matrix4d::Identity();
+    for (int i = 1; i <= 5; ++i) {
+        moved(0, 3) = 0.01 * i;
+        QVERIFY(scheduler.setFragmentPose(2, moved, camera));
+        QCOMPARE(scheduler.cutsStarted(), before);
+        QVERIFY(scheduler.isMoving());
+        QVERIFY(!scheduler.isRefined());
+        QCOMPARE(scheduler.frameLimit(), scheduler.drawLimit());
+        QTest::qWait(20); // well within the idle delay: still no cut
+        QCOMPARE(scheduler.cutsStarted(), before);
+    }
+    QVERIFY(scheduler.fragments()[1].pose == moved);
+    QVERIFY(scheduler.fragments()[0].pose == Eigen::Matrix4d::Identity());
+    QVERIFY(!scheduler.setFragmentPose(99, moved, camera)); // no such fragment: nothing changes
+    QVERIFY(scheduler.fragments()[1].pose == moved);
+    QCOMPARE(stopped.size(), 0);
 
-    // With a budget above what the view needs each gets all it asks for: the same as alone.
-    Camera alone = camera;
-    const auto big = LodScheduler::computeCuts({fragment(1, left), fragment(2, right)}, alone, {}, 10'000'000);
-    const auto single = LodScheduler::computeCuts({fragment(1, left)}, alone, {}, 10'000'000);
-    QVERIFY(!big.budgetReached);
-    QCOMPARE(big.fragments[0].splats.vertices.size(), single.fragments[0].splats.vertices.size());
-}
-
-void LodSchedulerTest::shareBudgetExactly()
-{
-    using V = std::vector<std::uint64_t>;
-    QCOMPARE(LodScheduler::shareBudget({1, 1, 2}, {100, 100, 100}, 100), (V{25, 25, 50}));
-    QCOMPARE(LodScheduler::shareBudget({1, 1, 2}, {10, 100, 100}, 100), (V{10, 30, 60}));
-    QCOMPARE(LodScheduler::shareBudget({1, 0, 2}, {100, 100, 100}, 90), (V{30, 0, 60}));
-    QCOMPARE(LodScheduler::shareBudget({1, 1}, {5, 7}, 100), (V{5, 7}));
-    QCOMPARE(LodScheduler::shareBudget({1, 1, 1}, {100, 100, 100}, 10), (V{4, 3, 3})); // rounding goes somewhere
-    QCOMPARE(LodScheduler::shareBudget({1000, 1}, {100, 100}, 100), (V{99, 1}));       // nobody visible gets 0
-    QCOMPARE(LodScheduler::shareBudget({}, {}, 100), V{});
-}
-
-void LodSchedulerTest::hiddenAndGlobalLevel()
-{
-    RenderFragment hidden = fragment(2);
-    hidden.visible = false;
-    LodScheduler::Settings settings;
-    settings.mode = LodScheduler::Mode::GlobalLevel;
-    settings.globalLevel = 4;
-    const auto batch = LodScheduler::computeCuts({fragment(1), hidden}, fittedCamera(), settings, 1'000'000);
-    QCOMPARE(batch.fragments.size(), 2u);
-    QCOMPARE(std::uint64_t(batch.fragments[0].splats.vertices.size()), m_drum.octree->cellCount(4));
-    QCOMPARE(batch.fragments[1].id, 2u);
-    QVERIFY(batch.fragments[1].splats.vertices.empty());
-    // A level beyond the depth is the leaf level; the budget still caps it.
-    settings.globalLevel = 40;
-    const auto capped = LodScheduler::computeCuts({fragment(1)}, fittedCamera(), settings, 100);
-    QVERIFY(capped.cells <= 100);
+    // Once the poses have been still for the idle delay, the cut for the new poses follows, refined to the end:
+    // exactly the core's cut of the moved fragments at the last stage's budget.
+    QVERIFY(refined.wait(20000));
+    QCOMPARE(stopped.size(), 1);
+    QVERIFY(scheduler.cutsStarted() > before);
+    QVERIFY(!scheduler.isMoving());
+    const auto last = cuts.last().at(0).value<std::shared_ptr<const SceneCut>>();
+    QVERIFY(last->final);
+    const SceneCut expected = stylos::core::view::computeSceneCut(scheduler.fragments(), camera, {}, last->budget);
+    QCOMPARE(last->cells, expected.cells);
+    QCOMPARE(last->fragments.at(1).splats.vertices.size(), expected.fragments.at(1).splats.vertices.size());
 }
 
 void LodSchedulerTest::motionBudgetFollowsFrameTimes()
@@ -238,54 +201,6 @@ void LodSchedulerTest::motionBudgetFollowsFrameTimes()
     scheduler.setPointBudget(1'000'000);
     for (int i = 0; i < 60; ++i) scheduler.reportFrame(5 + 1e-3 * double(scheduler.drawLimit()), scheduler.drawLimit());
     QVERIFY(std::abs(5 + 1e-3 * double(scheduler.drawLimit()) - 42.5) < 0.5);
-}
-
-void LodSchedulerTest::splatsCarryTheAmbientLayer()
-{
-    // Every leaf gets its own value; an inner cell of a cut takes its first leaf's.
-    const auto& octree = *m_drum.octree;
-    const std::uint64_t leaves = octree.cellCount(octree.depth());
-    std::vector<float> ambient(leaves);
-    for (std::uint64_t i = 0; i < leaves; ++i) ambient[i] = float(i % 256) / 255.0f;
-    const std::filesystem::path path = m_dir.filePath("ambient.poct").toStdString();
-    QVERIFY(stylos::core::ao::writeAmbientPoct(octree, ambient, path).ok());
-    auto opened = stylos::core::octree::PackedOctree::open(path);
-    QVERIFY(opened.ok());
-    const auto& withAmbient = *opened;
-
-    stylos::core::octree::CutCamera camera;
-    camera.cullToFrustum = false;
-    stylos::core::octree::CutOptions options;
-    options.pixelThreshold = 0;
-    options.maxLevel = 3;
-    const auto cut = stylos::core::octree::computeViewCut(withAmbient, camera, options);
-    QCOMPARE(std::uint64_t(cut.cells.size()), withAmbient.cellCount(3));
-    const auto splats = stylos::widgets::makeSplatBuffer(withAmbient, cut, 0);
-    QVERIFY(splats.hasAmbient);
-    QVERIFY(!splats.hasColour);
-    QCOMPARE(splats.vertices.size(), cut.cells.size());
-    for (std::size_t i = 0; i < cut.cells.size(); ++i) {
-        const auto& c = cut.cells[i];
-        const std::uint64_t first = stylos::widgets::firstLeafOf(withAmbient, c.level, c.index);
-        QCOMPARE(int(splats.vertices[i].colour[3]), int(first % 256));
-        QCOMPARE(splats.vertices[i].position, c.centre);
-        QCOMPARE(splats.vertices[i].colour[0], std::uint8_t(255)); // no scan colour
-        // The first leaf lies inside the cell.
-        bool inside = false;
-        withAmbient.forEachCell(withAmbient.depth(), [&](const stylos::core::octree::CellView& l) {
-            if (l.index != first) return true;
-            for (int a = 0; a < 3; ++a) {
-                const double rel = l.centre[std::size_t(a)] - withAmbient.box().origin[std::size_t(a)];
-                if (std::abs(rel - c.centre[std::size_t(a)]) > 0.5 * c.size) return false;
-            }
-            inside = true;
-            return false;
-        });
-        QVERIFY(inside);
-        if (i > 40) break; // the leaf walk is linear: a sample is enough
-    }
-    QCOMPARE(stylos::widgets::firstLeafOf(withAmbient, withAmbient.depth(), 5), 5u);
-    QCOMPARE(stylos::widgets::firstLeafOf(withAmbient, 0, 0), 0u);
 }
 
 STYLOS_WIDGET_TEST_MAIN(LodSchedulerTest)

@@ -1,6 +1,7 @@
 // The workbench through its main window: import in the background, the Scene tree, errors naming the
 // file, undo/redo from the Edit menu, save and reopen a project, the développée linked to the 3D view,
-// the skydome task, the language menu, closing with a task running.
+// the skydome task, the language menu, closing with a task running; a pose edit reaches the 3D view as a
+// pose only (no new cut), any other edit as new fragments.
 #include "DeveloppeeLink.h"
 #include "DrumOctreeFixture.h"
 #include "LogDock.h"
@@ -43,6 +44,7 @@ private Q_SLOTS:
     void importsInTheBackgroundAndListsTheFragments();
     void reportsErrorsNamingTheFile();
     void undoAndRedoFromTheEditMenu();
+    void aPoseEditReachesTheViewAsAPoseOnly();
     void removesTheSelectionInOneUndoStep();
     void savesAndReopensTheProject();
     void developpeeClickMarksThe3dPointAndBack();
@@ -177,6 +179,41 @@ void MainWindowTest::undoAndRedoFromTheEditMenu()
     redo->trigger();
     QCOMPARE(tree.rowCount(), 1);
     QTRY_VERIFY(window->document().octree(window->document().scene().fragments()[0].id) != nullptr);
+}
+
+void MainWindowTest::aPoseEditReachesTheViewAsAPoseOnly()
+{
+    auto window = makeWindow();
+    widgets::ViewportWidget* viewport = window->viewport();
+    if (!viewport) QSKIP("no OpenGL 3.3 on this platform (run under xvfb-run)");
+    importAndWait(*window, {QString::fromStdString(m_drum.poct.string())});
+    QTRY_VERIFY_WITH_TIMEOUT(viewport->fragments().size() == 1 && viewport->isSettled(), 20000);
+    viewport->scheduler().setIdleDelay(60000); // the deferred cut after a drag stays out of the way
+    widgets::SceneDocument& document = window->document();
+    const auto id = document.scene().fragments()[0].id;
+    const std::uint64_t cuts = viewport->scheduler().cutsStarted();
+
+    const auto pose = core::scene::Pose::translation({0.25, -0.5, 1});
+    QVERIFY(document.setFragmentPose(id, pose));
+    Eigen::Matrix4d expected = Eigen::Matrix4d::Identity();
+    expected.topRightCorner<3, 1>() << 0.25, -0.5, 1;
+    QTRY_VERIFY(viewport->fragments()[0].pose == expected); // pushed on the next turn of the event loop
+    QCOMPARE(viewport->scheduler().cutsStarted(), cuts);
+    const auto& origin = m_drum.octree->box().origin;
+    Eigen::Matrix4d model = expected;
+    model.topRightCorner<3, 1>() += Eigen::Vector3d(origin[0], origin[1], origin[2]);
+    QVERIFY(*viewport->renderer().points().modelMatrix(id) == model);
+
+    window->document().undoStack()->undo(); // undone: a pose again
+    QTRY_VERIFY(viewport->fragments()[0].pose == Eigen::Matrix4d::Identity());
+    QVERIFY(document.renameFragment(id, QStringLiteral("Drum II"))); // nothing the view shows
+    QTest::qWait(50);
+    QCOMPARE(viewport->scheduler().cutsStarted(), cuts);
+
+    // Any other change replaces the fragments: a new cut at once.
+    QVERIFY(document.setFragmentColour(id, core::scene::Rgb{10, 20, 30}));
+    QTRY_VERIFY(viewport->scheduler().cutsStarted() > cuts);
+    QVERIFY((viewport->fragments()[0].colour == std::array<std::uint8_t, 3>{10, 20, 30}));
 }
 
 void MainWindowTest::removesTheSelectionInOneUndoStep()

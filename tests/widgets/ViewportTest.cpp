@@ -1,6 +1,7 @@
 // ViewportWidget: renders a small generated drum (.poct built in the test) with OpenGL 3.3 core under
 // Xvfb/llvmpipe; the framebuffer is not blank and the drum covers the middle; a click in the middle
-// picks a point of the drum's front surface (within a cell of the scanned samples); keys and markers.
+// picks a point of the drum's front surface (within a cell of the scanned samples); keys and markers;
+// a pose change moves the drawn fragment without a new cut; the orbit and pose benchmarks.
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
@@ -8,7 +9,10 @@
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/io/PointReader.h"
 #include "stylos/widgets/OrbitBenchmark.h"
+#include "stylos/widgets/PoseBenchmark.h"
 #include "stylos/widgets/ViewportWidget.h"
+
+#include <Eigen/Geometry>
 
 #include <QImage>
 #include <QJsonObject>
@@ -17,9 +21,10 @@
 
 #include <limits>
 
+using stylos::core::view::StandardView;
+using stylos::core::view::ViewFragment;
 using stylos::widgets::OrbitBenchmark;
-using stylos::widgets::RenderFragment;
-using stylos::widgets::StandardView;
+using stylos::widgets::PoseBenchmark;
 using stylos::widgets::ViewportWidget;
 
 namespace {
@@ -46,7 +51,9 @@ private Q_SLOTS:
     void keysChangeTheView();
     void markerIsDrawn();
     void ambientShading();
+    void aPoseChangeMovesTheDrawnFragmentWithoutACut();
     void orbitBenchmarkReports();
+    void poseBenchmarkReports();
 
 private:
     void waitRefined();
@@ -78,7 +85,7 @@ void ViewportTest::initTestCase()
     m_view->resize(400, 300);
     m_view->show();
     QVERIFY(QTest::qWaitForWindowExposed(m_view.get()));
-    RenderFragment f;
+    ViewFragment f;
     f.id = 42;
     f.octree = m_drum.octree;
     m_view->setFragments({f});
@@ -200,7 +207,7 @@ void ViewportTest::ambientShading()
         if (!stylos::core::ao::writeAmbientPoct(octree, ambient, path).ok()) return -1;
         auto opened = stylos::core::octree::PackedOctree::open(path);
         if (!opened.ok()) return -1;
-        RenderFragment f;
+        ViewFragment f;
         f.id = 42;
         f.octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened.value()));
         m_view->setFragments({f});
@@ -220,6 +227,43 @@ void ViewportTest::ambientShading()
     QVERIFY(qRed(colour) != qBlue(colour)); // the fragment's warm default colour, lit
     m_view->setShading(stylos::widgets::PointRenderer::Shading::Headlight);
     waitRefined();
+}
+
+void ViewportTest::aPoseChangeMovesTheDrawnFragmentWithoutACut()
+{
+    waitRefined();
+    const auto camera = m_view->camera();
+    const std::uint64_t cuts = m_view->scheduler().cutsStarted();
+    const auto before = m_view->renderer().points().modelMatrix(42);
+    QVERIFY(before);
+    const auto& origin = m_drum.octree->box().origin;
+    Eigen::Matrix4d expectedBefore = Eigen::Matrix4d::Identity();
+    expectedBefore.topRightCorner<3, 1>() << origin[0], origin[1], origin[2];
+    QVERIFY(*before == expectedBefore); // identity pose · the buffer's origin
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
+
+    // 150 pixels to the right at the target's depth: the drum leaves the middle of the view.
+    Eigen::Matrix4d pose = Eigen::Matrix4d::Identity();
+    pose.topRightCorner<3, 1>() = camera.right() * (150.0 / camera.pixelsPerMetre());
+    QVERIFY(m_view->setFragmentPose(42, pose));
+    QCOMPARE(m_view->scheduler().cutsStarted(), cuts); // no cut
+    QVERIFY(m_view->scheduler().isMoving());
+    QVERIFY(m_view->fragments().front().pose == pose);
+    const auto after = m_view->renderer().points().modelMatrix(42);
+    QVERIFY(after);
+    QVERIFY((*after - pose * expectedBefore).cwiseAbs().maxCoeff() == 0); // the drawn model matrix
+    const QImage image = m_view->grabFramebuffer();
+    QVERIFY(isBackground(image.pixel(200, 150)));
+    QVERIFY(!isBackground(image.pixel(350, 150)));
+    QCOMPARE(m_view->scheduler().cutsStarted(), cuts); // drawing it started none either
+    QVERIFY(!m_view->setFragmentPose(7, pose));      // no such fragment
+
+    // Once still, the cut for the new pose follows; back where it was.
+    waitRefined();
+    QVERIFY(m_view->scheduler().cutsStarted() > cuts);
+    QVERIFY(m_view->setFragmentPose(42, Eigen::Matrix4d::Identity()));
+    waitRefined();
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
 }
 
 void ViewportTest::orbitBenchmarkReports()
@@ -246,6 +290,51 @@ void ViewportTest::orbitBenchmarkReports()
     QCOMPARE(s["medianMs"].toDouble(), 2.5);
     QCOMPARE(s["p95Ms"].toDouble(), 4.0);
     QCOMPARE(s["meanPointsDrawn"].toDouble(), 25.0);
+}
+
+void ViewportTest::poseBenchmarkReports()
+{
+    waitRefined();
+    PoseBenchmark::Options options;
+    options.frames = 12;
+    options.degreesPerFrame = 5;
+    PoseBenchmark benchmark(*m_view, options);
+    QSignalSpy finished(&benchmark, &PoseBenchmark::finished);
+    const auto camera = m_view->camera();
+    const std::uint64_t cuts = m_view->scheduler().cutsStarted();
+    const Eigen::Vector3d centre = m_view->sceneBounds().center();
+    const Eigen::Matrix4d model = *m_view->renderer().points().modelMatrix(42);
+    benchmark.start();
+    QVERIFY(finished.wait(30000));
+    const QJsonObject o = finished.first().at(0).toJsonObject();
+    QVERIFY2(!o.contains("error"), qPrintable(o["error"].toString()));
+    QCOMPARE(o["frames"].toInt(), 12);
+    QCOMPARE(o["fragmentId"].toDouble(), 42.0);
+    QCOMPARE(o["degreesPerFrame"].toDouble(), 5.0);
+    QVERIFY(o["medianMs"].toDouble() > 0);
+    QVERIFY(o["meanPointsDrawn"].toDouble() > 1000);
+    QCOMPARE(m_view->scheduler().cutsStarted(), cuts); // twelve poses, not one cut
+    QCOMPARE(o["cutsStarted"].toDouble(), 0.0);
+    QVERIFY((m_view->camera().viewMatrix() - camera.viewMatrix()).cwiseAbs().maxCoeff() == 0); // the camera stays
+    // The fragment turned 60° about the vertical through its centre.
+    const Eigen::Affine3d turn = Eigen::Translation3d(centre) * Eigen::AngleAxisd(M_PI / 3, Eigen::Vector3d::UnitZ()) *
+                                 Eigen::Translation3d(-centre);
+    const Eigen::Matrix4d drawn = *m_view->renderer().points().modelMatrix(42);
+    QVERIFY2((drawn - turn.matrix() * model).cwiseAbs().maxCoeff() < 1e-12,
+             qPrintable(QString::number((drawn - turn.matrix() * model).cwiseAbs().maxCoeff())));
+
+    // An unknown fragment is an error, at once.
+    PoseBenchmark::Options none;
+    none.frames = 3;
+    none.fragmentId = 7;
+    PoseBenchmark missing(*m_view, none);
+    QSignalSpy failed(&missing, &PoseBenchmark::finished);
+    m_view->setFragmentPose(42, Eigen::Matrix4d::Identity());
+    waitRefined();
+    missing.start();
+    QVERIFY(failed.wait(30000));
+    QCOMPARE(failed.first().at(0).toJsonObject()["frames"].toInt(), 0);
+    QVERIFY(failed.first().at(0).toJsonObject()["error"].toString().contains("7"));
 }
 
 STYLOS_WIDGET_TEST_MAIN(ViewportTest)

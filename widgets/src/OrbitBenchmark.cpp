@@ -2,97 +2,23 @@
 
 #include "stylos/widgets/ViewportWidget.h"
 
-#include <QElapsedTimer>
-#include <QTimer>
-
-#include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace stylos::widgets {
 
-namespace {
-constexpr int PollMs = 20;
-}
-
 OrbitBenchmark::OrbitBenchmark(ViewportWidget& viewport, const Options& options, QObject* parent)
-    : QObject(parent), m_viewport(&viewport), m_options(options)
+    : FrameBenchmark(viewport, {options.frames, options.waitUntilRefined, options.waitTimeoutMs}, parent),
+      m_options(options)
 {
 }
 
-void OrbitBenchmark::start()
+void OrbitBenchmark::advance(ViewportWidget& viewport, int)
 {
-    m_ms.clear();
-    m_points.clear();
-    m_waitedMs = 0;
-    QTimer::singleShot(0, this, &OrbitBenchmark::waitForView);
-}
-
-void OrbitBenchmark::waitForView()
-{
-    if (!m_viewport) return finish();
-    const bool drawn = m_viewport->firstFrameMs() >= 0;
-    const bool settled = !m_options.waitUntilRefined || m_viewport->isSettled();
-    if (drawn && settled) {
-        m_viewport->renderNow(); // the refined view, drawn once
-        m_firstFrameMs = m_viewport->firstFrameMs();
-        m_refinedPoints = m_viewport->lastPointsDrawn();
-        QTimer::singleShot(0, this, &OrbitBenchmark::step);
-        return;
-    }
-    if (m_waitedMs >= m_options.waitTimeoutMs) return finish();
-    m_waitedMs += PollMs;
-    QTimer::singleShot(PollMs, this, &OrbitBenchmark::waitForView);
-}
-
-void OrbitBenchmark::step()
-{
-    if (!m_viewport || int(m_ms.size()) >= m_options.frames) return finish();
-    QElapsedTimer timer;
-    timer.start();
-    Camera camera = m_viewport->camera();
+    core::view::Camera camera = viewport.camera();
     camera.orbit(m_options.degreesPerFrame * M_PI / 180.0, 0.0);
-    m_viewport->setCamera(camera, true);
-    m_viewport->renderNow(); // drawn, swapped and finished (glFinish)
-    m_ms.push_back(double(timer.nsecsElapsed()) * 1e-6);
-    m_points.push_back(m_viewport->lastPointsDrawn());
-    QTimer::singleShot(0, this, &OrbitBenchmark::step);
+    viewport.setCamera(camera, true);
 }
 
-QJsonObject OrbitBenchmark::summarize(const std::vector<double>& ms, const std::vector<std::uint64_t>& points)
-{
-    QJsonObject o;
-    o["frames"] = int(ms.size());
-    if (ms.empty()) return o;
-    std::vector<double> sorted = ms;
-    std::sort(sorted.begin(), sorted.end());
-    const std::size_t n = sorted.size();
-    o["medianMs"] = n % 2 ? sorted[n / 2] : 0.5 * (sorted[n / 2 - 1] + sorted[n / 2]);
-    o["p95Ms"] = sorted[std::size_t(std::ceil(0.95 * double(n))) - 1];
-    o["meanMs"] = std::accumulate(sorted.begin(), sorted.end(), 0.0) / double(n);
-    o["maxMs"] = sorted.back();
-    if (!points.empty()) {
-        o["meanPointsDrawn"] = double(std::accumulate(points.begin(), points.end(), std::uint64_t(0))) / double(points.size());
-        o["minPointsDrawn"] = double(*std::min_element(points.begin(), points.end()));
-        o["maxPointsDrawn"] = double(*std::max_element(points.begin(), points.end()));
-    }
-    return o;
-}
-
-void OrbitBenchmark::finish()
-{
-    QJsonObject o = summarize(m_ms, m_points);
-    if (m_viewport) {
-        o["width"] = m_viewport->width();
-        o["height"] = m_viewport->height();
-        o["pointBudget"] = double(m_viewport->scheduler().pointBudget());
-        o["targetFrameMs"] = m_viewport->scheduler().targetFrameMs();
-    }
-    o["firstFrameMs"] = m_firstFrameMs;
-    o["refinedPoints"] = double(m_refinedPoints);
-    o["degreesPerFrame"] = m_options.degreesPerFrame;
-    if (m_ms.empty()) o["error"] = QStringLiteral("the view showed no points within %1 ms").arg(m_options.waitTimeoutMs);
-    Q_EMIT finished(o);
-}
+void OrbitBenchmark::describe(QJsonObject& result) const { result["degreesPerFrame"] = m_options.degreesPerFrame; }
 
 } // namespace stylos::widgets

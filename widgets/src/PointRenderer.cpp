@@ -9,6 +9,10 @@
 
 namespace stylos::widgets {
 
+using core::view::SplatBuffer;
+using core::view::SplatVertex;
+using core::view::ViewFragment;
+
 namespace {
 
 const char* const VertexShader = R"(#version 330 core
@@ -106,19 +110,40 @@ void PointRenderer::release()
 
 void PointRenderer::setSplatFactor(double factor) { m_splatFactor = std::clamp(factor, 0.1, 10.0); }
 
-RenderFragment* PointRenderer::find(std::uint64_t id)
+ViewFragment* PointRenderer::find(std::uint64_t id)
 {
-    auto it = std::find_if(m_fragments.begin(), m_fragments.end(), [id](const RenderFragment& f) { return f.id == id; });
+    auto it = std::find_if(m_fragments.begin(), m_fragments.end(), [id](const ViewFragment& f) { return f.id == id; });
     return it == m_fragments.end() ? nullptr : &*it;
 }
 
-void PointRenderer::setFragments(const std::vector<RenderFragment>& fragments)
+const ViewFragment* PointRenderer::find(std::uint64_t id) const { return const_cast<PointRenderer*>(this)->find(id); }
+
+void PointRenderer::setFragments(const std::vector<ViewFragment>& fragments)
 {
     m_fragments = fragments;
     for (auto it = m_slots.begin(); it != m_slots.end();) {
-        const RenderFragment* f = find(it->first);
+        const ViewFragment* f = find(it->first);
         it = (f && f->octree) ? std::next(it) : m_slots.erase(it);
     }
+}
+
+bool PointRenderer::setPose(std::uint64_t id, const Eigen::Matrix4d& pose)
+{
+    ViewFragment* f = find(id);
+    if (!f) return false;
+    f->pose = pose;
+    return true;
+}
+
+std::optional<Eigen::Matrix4d> PointRenderer::modelMatrix(std::uint64_t id) const
+{
+    const ViewFragment* f = find(id);
+    const auto it = m_slots.find(id);
+    if (!f || it == m_slots.end()) return std::nullopt;
+    const auto& origin = it->second->origin;
+    Eigen::Matrix4d toOctree = Eigen::Matrix4d::Identity();
+    toOctree.topRightCorner<3, 1>() = Eigen::Vector3d(origin[0], origin[1], origin[2]);
+    return Eigen::Matrix4d(f->pose * toOctree);
 }
 
 void PointRenderer::upload(std::uint64_t id, const SplatBuffer& splats)
@@ -172,12 +197,12 @@ bool PointRenderer::hasColour() const
 std::uint64_t PointRenderer::visiblePoints() const
 {
     std::uint64_t total = 0;
-    for (const RenderFragment& f : m_fragments)
+    for (const ViewFragment& f : m_fragments)
         if (auto it = m_slots.find(f.id); f.visible && it != m_slots.end()) total += it->second->count;
     return total;
 }
 
-std::uint64_t PointRenderer::draw(const Camera& camera, const Pass& pass)
+std::uint64_t PointRenderer::draw(const core::view::Camera& camera, const Pass& pass)
 {
     const double from = std::clamp(pass.from, 0.0, 1.0), to = std::clamp(pass.to, from, 1.0);
     if (!m_program || to <= from || visiblePoints() == 0) return 0;
@@ -199,16 +224,14 @@ std::uint64_t PointRenderer::draw(const Camera& camera, const Pass& pass)
     m_program->setUniformValue("uRound", m_round);
 
     std::uint64_t drawn = 0;
-    for (const RenderFragment& f : m_fragments) {
+    for (const ViewFragment& f : m_fragments) {
         auto it = m_slots.find(f.id);
         if (!f.visible || it == m_slots.end() || it->second->count == 0) continue;
         Slot& slot = *it->second;
         const auto first = std::uint64_t(std::floor(double(slot.count) * from));
         const std::uint64_t last = to >= 1.0 ? slot.count : std::uint64_t(std::floor(double(slot.count) * to));
         if (last <= first) continue;
-        Eigen::Matrix4d toOctree = Eigen::Matrix4d::Identity();
-        toOctree.topRightCorner<3, 1>() = Eigen::Vector3d(slot.origin[0], slot.origin[1], slot.origin[2]);
-        const Eigen::Matrix4d modelView = view * f.pose * toOctree; // double until here: site coordinates are large
+        const Eigen::Matrix4d modelView = view * *modelMatrix(f.id); // double until here: site coordinates are large
         const Eigen::Matrix4f mv = modelView.cast<float>();
         const Eigen::Matrix3f normalMatrix = mv.topLeftCorner<3, 3>(); // rigid: the rotation is its own inverse transpose
         glUniformMatrix4fv(m_program->uniformLocation("uModelView"), 1, GL_FALSE, mv.data());
@@ -217,8 +240,8 @@ std::uint64_t PointRenderer::draw(const Camera& camera, const Pass& pass)
         if (m_shading == Shading::Ambient && slot.hasAmbient) shading = 1;
         if (m_shading == Shading::Colour && slot.hasColour) shading = 2;
         m_program->setUniformValue("uShading", shading);
-        m_program->setUniformValue("uBaseColour", float(f.colour.redF()), float(f.colour.greenF()),
-                                   float(f.colour.blueF()));
+        m_program->setUniformValue("uBaseColour", float(f.colour[0]) / 255.0f, float(f.colour[1]) / 255.0f,
+                                   float(f.colour[2]) / 255.0f);
         m_program->setUniformValue("uSelected", f.selected);
         QOpenGLVertexArrayObject::Binder bind(&slot.vao);
         glDrawArrays(GL_POINTS, GLint(first), GLsizei(last - first));

@@ -12,22 +12,53 @@ bool ViewRenderer::initialize()
         m_log = m_points.log().isEmpty() ? QStringLiteral("OpenGL 3.3 core is not available") : m_points.log();
         return false;
     }
-    if (!m_marker.initialize()) {
-        m_log = QStringLiteral("OpenGL 3.3 core is not available");
-        m_points.release();
-        return false;
-    }
     const QByteArray name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     m_software = name.contains("llvmpipe") || name.contains("softpipe") || name.contains("SwiftShader") ||
                  name.contains("Software");
     restartImage();
+    for (Overlay& entry : m_overlays) initializeOverlay(entry);
     return true;
+}
+
+void ViewRenderer::initializeOverlay(Overlay& entry)
+{
+    entry.ready = entry.overlay->initialize();
+    if (!entry.ready) qWarning("ViewRenderer: an overlay could not initialise its OpenGL objects; it is not drawn");
+}
+
+void ViewRenderer::addOverlay(std::shared_ptr<ViewOverlay> overlay)
+{
+    if (!overlay) return;
+    for (const Overlay& entry : m_overlays)
+        if (entry.overlay == overlay) return;
+    m_overlays.push_back({std::move(overlay), false});
+    if (isInitialized()) initializeOverlay(m_overlays.back());
+}
+
+bool ViewRenderer::removeOverlay(const ViewOverlay* overlay)
+{
+    const auto it = std::find_if(m_overlays.begin(), m_overlays.end(),
+                                 [overlay](const Overlay& entry) { return entry.overlay.get() == overlay; });
+    if (it == m_overlays.end()) return false;
+    if (it->ready) it->overlay->release();
+    m_overlays.erase(it);
+    return true;
+}
+
+std::vector<std::shared_ptr<ViewOverlay>> ViewRenderer::overlays() const
+{
+    std::vector<std::shared_ptr<ViewOverlay>> out;
+    for (const Overlay& entry : m_overlays) out.push_back(entry.overlay);
+    return out;
 }
 
 void ViewRenderer::release()
 {
     m_points.release();
-    m_marker.release();
+    for (Overlay& entry : m_overlays) {
+        if (entry.ready) entry.overlay->release();
+        entry.ready = false;
+    }
     m_image.release();
     m_lowRes.release();
 }
@@ -40,7 +71,7 @@ void ViewRenderer::clear()
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
-std::uint64_t ViewRenderer::drawQuick(const Camera& camera, unsigned target, const QSize& size, double devicePixelRatio,
+std::uint64_t ViewRenderer::drawQuick(const core::view::Camera& camera, unsigned target, const QSize& size, double devicePixelRatio,
                                       std::uint64_t limit, bool moving)
 {
     const double scale = moving ? motionScale() : 1.0;
@@ -69,7 +100,7 @@ void ViewRenderer::restartImage()
     m_imagePoints = 0;
 }
 
-std::uint64_t ViewRenderer::drawImageStep(const Camera& camera, const QSize& size, double devicePixelRatio,
+std::uint64_t ViewRenderer::drawImageStep(const core::view::Camera& camera, const QSize& size, double devicePixelRatio,
                                           std::uint64_t points)
 {
     if (isImageComplete()) return 0;
@@ -97,9 +128,11 @@ bool ViewRenderer::presentImage(unsigned target, const QSize& size)
     return true;
 }
 
-void ViewRenderer::finishFrame(const Camera& camera, double devicePixelRatio)
+void ViewRenderer::finishFrame(const core::view::Camera& camera, const QSize& size, double devicePixelRatio)
 {
-    m_marker.draw(camera, devicePixelRatio);
+    const OverlayFrame frame{camera, camera.viewMatrix(), camera.projectionMatrix(), size, devicePixelRatio};
+    for (Overlay& entry : m_overlays)
+        if (entry.ready) entry.overlay->draw(frame);
     glFinish(); // the frame time is the rendering's, not the submission's
 }
 

@@ -1,5 +1,7 @@
 #include "stylos/widgets/ViewportWidget.h"
 
+#include "stylos/widgets/MarkerOverlay.h"
+#include "stylos/widgets/ViewportTool.h"
 #include "stylos/widgets/ViewportWindow.h"
 
 #include <QGuiApplication>
@@ -18,13 +20,11 @@ namespace stylos::widgets {
 
 namespace {
 
-constexpr double RadiansPerPixel = 0.008;
 constexpr double PickRadiusPixels = 3.0;
-constexpr int ClickTolerance = 4; ///< a press and release closer than this (Manhattan, pixels) is a click
 
 } // namespace
 
-ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent)
+ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent), m_marker(std::make_shared<MarkerOverlay>())
 {
     qRegisterMetaType<Eigen::Vector3d>();
     QSurfaceFormat format = QSurfaceFormat::defaultFormat();
@@ -44,11 +44,12 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent)
     setFocusPolicy(Qt::StrongFocus);
     setMouseTracking(true);
     setMinimumSize(160, 120);
-    m_camera.setStandardView(StandardView::Iso);
+    m_camera.setStandardView(core::view::StandardView::Iso);
+    m_renderer.addOverlay(m_marker); // the first overlay
     m_stepTimer.setSingleShot(true);
     m_stepTimer.setInterval(0);
     connect(&m_stepTimer, &QTimer::timeout, this, &ViewportWidget::imageStep);
-    connect(&m_scheduler, &LodScheduler::cutReady, this, [this](std::shared_ptr<const LodScheduler::CutBatch> batch) {
+    connect(&m_scheduler, &LodScheduler::cutReady, this, [this](std::shared_ptr<const core::view::SceneCut> batch) {
         m_pending = std::move(batch);
         if (m_renderer.isInitialized() && m_window->isValid()) {
             m_window->makeCurrent();
@@ -63,6 +64,7 @@ ViewportWidget::ViewportWidget(QWidget* parent) : QWidget(parent)
 
 ViewportWidget::~ViewportWidget()
 {
+    resetTool();
     releaseGl();
     // The window (and its context) goes now, while what its callbacks reach is still alive.
     m_window->disconnect(this);
@@ -117,7 +119,7 @@ void ViewportWidget::uploadPending()
         m_fragmentsChanged = false;
     }
     if (!m_pending) return;
-    for (const LodScheduler::FragmentCut& cut : m_pending->fragments) m_renderer.points().upload(cut.id, cut.splats);
+    for (const core::view::FragmentCut& cut : m_pending->fragments) m_renderer.points().upload(cut.id, cut.splats);
     m_pending.reset();
 }
 
@@ -153,18 +155,31 @@ void ViewportWidget::imageStep()
     if (isSettled()) Q_EMIT refined();
 }
 
-void ViewportWidget::setFragments(std::vector<RenderFragment> fragments)
+void ViewportWidget::setFragments(Fragments fragments)
 {
     m_sinceFragments.start();
     m_firstFrameMs = -1;
     m_fragmentsChanged = true;
     invalidateImage(false);
     const bool fit = m_scheduler.fragments().empty() && !fragments.empty();
-    m_camera.setSceneBounds(widgets::sceneBounds(fragments));
+    m_camera.setSceneBounds(core::view::sceneBounds(fragments));
     if (fit) m_camera.fit(m_camera.sceneBounds());
     m_scheduler.setFragments(std::move(fragments), m_camera);
     requestFrame();
     if (fit) Q_EMIT cameraChanged();
+}
+
+bool ViewportWidget::setFragmentPose(std::uint64_t id, const Eigen::Matrix4d& pose)
+{
+    Fragments moved = m_scheduler.fragments();
+    const auto it = std::find_if(moved.begin(), moved.end(), [id](const core::view::ViewFragment& f) { return f.id == id; });
+    if (it == moved.end()) return false;
+    it->pose = pose;
+    m_camera.setSceneBounds(core::view::sceneBounds(moved)); // the clip planes hold the moved fragment
+    m_scheduler.setFragmentPose(id, pose, m_camera);
+    m_renderer.points().setPose(id, pose); // no GL work: the model matrix of its next draw
+    invalidateImage(true);
+    return true;
 }
 
 void ViewportWidget::setCamera(const Camera& camera, bool moving)
@@ -185,7 +200,7 @@ void ViewportWidget::cameraEdited(bool moving)
 
 Eigen::AlignedBox3d ViewportWidget::sceneBounds(bool selectedOnly) const
 {
-    return widgets::sceneBounds(m_scheduler.fragments(), selectedOnly);
+    return core::view::sceneBounds(m_scheduler.fragments(), selectedOnly);
 }
 
 void ViewportWidget::fitToScene()
@@ -201,7 +216,7 @@ void ViewportWidget::fitToSelection()
     cameraEdited(false);
 }
 
-void ViewportWidget::setStandardView(StandardView view)
+void ViewportWidget::setStandardView(core::view::StandardView view)
 {
     m_camera.setStandardView(view);
     cameraEdited(false);
@@ -241,13 +256,50 @@ void ViewportWidget::setCullBackFacesWhileMoving(bool cull) { m_renderer.setCull
 
 void ViewportWidget::setMarker(const std::optional<Eigen::Vector3d>& point)
 {
-    m_renderer.marker().setMarker(point);
+    m_marker->setMarker(point);
     requestFrame();
+}
+
+std::optional<Eigen::Vector3d> ViewportWidget::marker() const { return m_marker->marker(); }
+
+void ViewportWidget::setTool(std::unique_ptr<ViewportTool> tool)
+{
+    if (m_tool) m_tool->deactivate(*this);
+    m_tool = std::move(tool);
+    if (m_tool) m_tool->activate(*this);
+    showToolCursor();
+}
+
+void ViewportWidget::showToolCursor()
+{
+    const QCursor wanted = m_tool ? m_tool->cursor() : m_navigation.cursor();
+    if (!(cursor() == wanted)) setCursor(wanted);
+}
+
+void ViewportWidget::resetTool() { setTool(nullptr); }
+
+void ViewportWidget::addOverlay(std::shared_ptr<ViewOverlay> overlay)
+{
+    const bool current = m_renderer.isInitialized() && m_window->isValid();
+    if (current) m_window->makeCurrent();
+    m_renderer.addOverlay(std::move(overlay));
+    if (current) m_window->doneCurrent();
+    requestFrame();
+}
+
+bool ViewportWidget::removeOverlay(const ViewOverlay* overlay)
+{
+    const bool current = m_renderer.isInitialized() && m_window->isValid();
+    if (current) m_window->makeCurrent();
+    const bool removed = m_renderer.removeOverlay(overlay);
+    if (current) m_window->doneCurrent();
+    if (removed) requestFrame();
+    return removed;
 }
 
 std::optional<ViewportWidget::Pick> ViewportWidget::pickAt(const QPointF& pixel) const
 {
-    return pickScene(m_scheduler.fragments(), m_camera, pixel.x(), pixel.y(), PickRadiusPixels);
+    return core::view::pickScene(m_scheduler.fragments(), m_camera, pixel.x(), pixel.y(), PickRadiusPixels);
 }
 
 void ViewportWidget::initializeGL()
@@ -285,7 +337,7 @@ void ViewportWidget::paintGL(unsigned framebuffer)
     const std::uint64_t drawn = complete ? m_renderer.imagePoints()
                                          : m_renderer.drawQuick(m_camera, framebuffer, size, glPixelRatio(),
                                                                 m_scheduler.drawLimit(), moving);
-    m_renderer.finishFrame(m_camera, glPixelRatio());
+    m_renderer.finishFrame(m_camera, size, glPixelRatio());
     m_lastFrameMs = double(m_frameTimer.nsecsElapsed()) * 1e-6;
     m_lastPoints = drawn;
     m_frameOpen = true;
@@ -304,66 +356,42 @@ void ViewportWidget::closeFrame(bool swapped)
     Q_EMIT pointsDrawn(m_lastPoints);
 }
 
+template <typename Handler>
+bool ViewportWidget::offer(Handler handler)
+{
+    const bool consumed = (m_tool && handler(*m_tool)) || handler(static_cast<ViewportTool&>(m_navigation));
+    showToolCursor();
+    return consumed;
+}
+
 void ViewportWidget::mousePressEvent(QMouseEvent* event)
 {
-    m_pressPosition = m_lastPosition = event->position().toPoint();
-    m_dragButton = event->button();
-    m_dragged = false;
+    if (!offer([&](ViewportTool& tool) { return tool.mousePress(*this, *event); })) event->ignore();
 }
 
 void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
 {
-    const QPoint position = event->position().toPoint();
-    if (m_dragButton == Qt::NoButton) {
-        if (const auto pick = pickAt(event->position())) Q_EMIT cursorMoved(pick->point);
-        return;
-    }
-    if ((position - m_pressPosition).manhattanLength() >= ClickTolerance) m_dragged = true;
-    if (!m_dragged) return;
-    const QPoint delta = position - m_lastPosition;
-    m_lastPosition = position;
-    const bool orbit = m_dragButton == Qt::LeftButton && !(event->modifiers() & Qt::ShiftModifier);
-    if (orbit) m_camera.orbit(-delta.x() * RadiansPerPixel, delta.y() * RadiansPerPixel);
-    else m_camera.pan(delta.x(), delta.y());
-    cameraEdited(true);
+    const bool hovering = event->buttons() == Qt::NoButton;
+    const bool consumed = offer([&](ViewportTool& tool) {
+        return hovering ? tool.hover(*this, *event) : tool.mouseMove(*this, *event);
+    });
+    if (!consumed) event->ignore();
 }
 
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
-    if (event->button() != m_dragButton) return;
-    const bool click = !m_dragged && m_dragButton == Qt::LeftButton;
-    m_dragButton = Qt::NoButton;
-    if (!click) return;
-    if (const auto pick = pickAt(event->position())) {
-        setMarker(pick->point);
-        Q_EMIT pointPicked(pick->point, pick->fragmentId);
-    }
+    if (!offer([&](ViewportTool& tool) { return tool.mouseRelease(*this, *event); })) event->ignore();
 }
 
 void ViewportWidget::wheelEvent(QWheelEvent* event)
 {
-    const double steps = event->angleDelta().y() / 120.0;
-    if (steps == 0) return;
-    m_camera.dolly(std::pow(0.85, steps));
-    cameraEdited(true);
+    if (!offer([&](ViewportTool& tool) { return tool.wheel(*this, *event); })) event->ignore();
 }
 
 void ViewportWidget::keyPressEvent(QKeyEvent* event)
 {
-    const bool ctrl = event->modifiers() & Qt::ControlModifier;
-    switch (event->key()) {
-    case Qt::Key_F:
-        if (event->modifiers() & Qt::ShiftModifier) fitToSelection();
-        else fitToScene();
-        break;
-    case Qt::Key_1: setStandardView(ctrl ? StandardView::Back : StandardView::Front); break;
-    case Qt::Key_3: setStandardView(ctrl ? StandardView::Left : StandardView::Right); break;
-    case Qt::Key_7: setStandardView(ctrl ? StandardView::Bottom : StandardView::Top); break;
-    case Qt::Key_0: setStandardView(StandardView::Iso); break;
-    case Qt::Key_5: setOrthographic(!m_camera.isOrthographic()); break;
-    default: QWidget::keyPressEvent(event); return;
-    }
-    event->accept();
+    if (offer([&](ViewportTool& tool) { return tool.keyPress(*this, *event); })) event->accept();
+    else QWidget::keyPressEvent(event);
 }
 
 } // namespace stylos::widgets

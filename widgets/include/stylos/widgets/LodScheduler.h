@@ -1,12 +1,8 @@
 #pragma once
 /** @file
- * @brief Decides which cells of which fragments the 3D view draws, and computes them in the background.
- *
- * Two modes. **Budget** (the default): per fragment the view-dependent cut (core::octree::computeViewCut:
- * refine while a cell projects larger than the pixel threshold), the total point budget (default 1 M)
- * shared among the visible fragments in proportion to the cells each needs at the threshold (capped by
- * its leaf count; what one cannot use goes to the others). **GlobalLevel**: the paper's level slider,
- * every cell of one level of every fragment (the budget still caps it).
+ * @brief Decides when the 3D view's level-of-detail cut is computed, and computes it in the background. What
+ *        a cut is — which cells of which fragments under the shared point budget, in Budget or GlobalLevel
+ *        mode — is the core's (core::view::computeSceneCut); this class schedules it.
  *
  * Timing. While the camera moves, the view draws a prefix of the current cut (SplatBuffer is shuffled)
  * of drawLimit() points: the limit adapts from the frame times reported (reportFrame) so that a frame
@@ -15,20 +11,28 @@
  * drawLimit() × 4^k, then the full budget — each stage computed in the background and delivered by
  * cutReady(); refined() says the last stage is in.
  *
+ * Poses. A change of a fragment's pose alone (setFragmentPose) starts no cut: the view keeps drawing the
+ * cells it has, with the new model matrix, as moving frames (isMoving() is true) while poses keep changing.
+ * Once no pose (nor the camera) has changed for idleDelay(), the cut is computed for the new poses — its
+ * cells, culling and detail depend on where the fragment now is — and refined in stages as after a camera
+ * move. So dragging a fragment never re-cuts on a mouse move; the cut of a moved fragment lags by the idle
+ * delay (250 ms by default) after the drag stops.
+ *
  * Threads: the public interface is for the GUI thread. Cuts run on QThreadPool::globalInstance()
  * (QtConcurrent), one at a time, reading the shared octrees only; results come back on the GUI
  * thread (cutReady), where the receiver uploads them. Nothing blocks the GUI thread except the
  * destructor, which waits for the running cut (one cut: a fraction of a second).
  * Failure modes: none (a fragment without an octree, hidden or out of view gets an empty cut).
  */
-#include "stylos/widgets/Camera.h"
-#include "stylos/widgets/RenderFragment.h"
-#include "stylos/widgets/SplatBuffer.h"
+#include "stylos/core/view/Camera.h"
+#include "stylos/core/view/SceneCut.h"
+#include "stylos/core/view/ViewFragment.h"
 
-#include <QElapsedTimer>
 #include <QFutureWatcher>
 #include <QObject>
 #include <QTimer>
+
+#include <Eigen/Core>
 
 #include <cstdint>
 #include <memory>
@@ -40,49 +44,38 @@ class LodScheduler : public QObject {
     Q_OBJECT
 
 public:
-    enum class Mode { Budget, GlobalLevel };
-
-    /** @brief What a cut depends on besides the fragments and the camera. */
-    struct Settings {
-        Mode mode = Mode::Budget;
-        double pixelThreshold = 1.0;   ///< refine while a cell projects larger than this, pixels
-        int globalLevel = 8;           ///< GlobalLevel mode: the level drawn (clamped to each depth)
-    };
-
-    /** @brief One fragment's cut. */
-    struct FragmentCut {
-        std::uint64_t id = 0;
-        SplatBuffer splats;
-    };
-
-    /** @brief The cuts of one computation. */
-    struct CutBatch {
-        std::vector<FragmentCut> fragments;
-        std::uint64_t budget = 0;      ///< the budget it was computed for
-        std::uint64_t cells = 0;       ///< cells in all cuts
-        bool motion = false;           ///< a cut made while the camera moved
-        bool budgetReached = false;    ///< some cut stopped at its share of the budget
-        bool final = false;            ///< the last refinement stage for this view (set by the scheduler)
-        double seconds = 0;            ///< time the computation took
-    };
+    using Mode = core::view::CutMode;
+    using Settings = core::view::CutSettings;
+    using Camera = core::view::Camera;
+    using Fragments = std::vector<core::view::ViewFragment>;
 
     explicit LodScheduler(QObject* parent = nullptr);
     ~LodScheduler() override;
 
     /** @brief Replaces the fragments; recomputes from a coarse first stage. */
-    void setFragments(std::vector<RenderFragment> fragments);
+    void setFragments(Fragments fragments);
     /** @brief Replaces the fragments and the camera (still) at once: one computation, not two. */
-    void setFragments(std::vector<RenderFragment> fragments, const Camera& camera);
-    const std::vector<RenderFragment>& fragments() const { return m_fragments; }
+    void setFragments(Fragments fragments, const Camera& camera);
+    const Fragments& fragments() const { return m_fragments; }
+    /**
+     * @brief Fragment @p id's pose alone changed (octree frame → scene frame), and @p camera with it (its
+     *        scene bounds follow the poses): no cut now; moving until idleDelay() passes without another
+     *        change, then the cut for the new poses (see the file comment). False (nothing changes) when no
+     *        fragment has that id.
+     */
+    bool setFragmentPose(std::uint64_t id, const Eigen::Matrix4d& pose, const Camera& camera);
 
     /** @brief The camera moved (or changed in any way): the view is "moving" until idleDelay() passes. */
     void cameraChanged(const Camera& camera);
     /** @brief Starts refining at once for @p camera, without waiting for idleDelay() (still view). */
     void cameraSettled(const Camera& camera);
+    /** @brief The camera or a pose changed less than idleDelay() ago (moving frames are drawn). */
     bool isMoving() const { return m_moving; }
     /** @brief The last refinement stage for the current view and settings has been delivered. */
     bool isRefined() const { return m_refined; }
     bool isComputing() const { return m_watcher != nullptr; }
+    /** @brief Cuts started since construction (each stage and each motion cut counts one). */
+    std::uint64_t cutsStarted() const { return m_cutsStarted; }
 
     void setSettings(const Settings& settings);
     const Settings& settings() const { return m_settings; }
@@ -109,27 +102,12 @@ public:
     /** @brief A frame took @p ms and drew @p points: adapts drawLimit(). Frames of 0 points are ignored. */
     void reportFrame(double ms, std::uint64_t points);
 
-    /**
-     * @brief The cuts for @p camera (synchronous; the background jobs call it). @p budget is shared as the
-     *        file comment says. Pure function of its arguments; reentrant.
-     */
-    static CutBatch computeCuts(const std::vector<RenderFragment>& fragments, const Camera& camera,
-                                const Settings& settings, std::uint64_t budget);
-    /**
-     * @brief Water-filling share of @p budget: in proportion to @p demands, none above its cap, what a
-     *        capped one cannot use shared among the others; zero demand or cap gets 0. Σ ≤ budget.
-     */
-    static std::vector<std::uint64_t> shareBudget(const std::vector<double>& demands,
-                                                  const std::vector<std::uint64_t>& caps, std::uint64_t budget);
-    /** @brief core's cut camera for @p camera, in the frame of an octree placed by @p pose (octree → scene). */
-    static core::octree::CutCamera cutCameraFor(const Camera& camera, const Eigen::Matrix4d& pose);
-
 Q_SIGNALS:
     /** @brief New cuts for the fragments (GUI thread); upload them and repaint. */
-    void cutReady(std::shared_ptr<const stylos::widgets::LodScheduler::CutBatch> batch);
+    void cutReady(std::shared_ptr<const stylos::core::view::SceneCut> batch);
     /** @brief The view has been refined as far as the budget and threshold allow. */
     void refined();
-    /** @brief The camera has been still for idleDelay() after moving. */
+    /** @brief The camera and the poses have been still for idleDelay() after moving. */
     void motionStopped();
 
 private:
@@ -146,7 +124,7 @@ private:
     void finished();
     std::uint64_t stageBudget(int stage) const;
 
-    std::vector<RenderFragment> m_fragments;
+    Fragments m_fragments;
     Camera m_camera;
     Settings m_settings;
     std::uint64_t m_budget = 1'000'000;
@@ -162,12 +140,13 @@ private:
     int m_nextStage = 0;                ///< next refinement stage for m_stageVersion
     std::uint64_t m_stageBase = 1;      ///< budget of stage 0 for m_stageVersion (then × 4 per stage)
     std::uint64_t m_lastJobVersion = 0;
+    std::uint64_t m_cutsStarted = 0;
     Job m_running;
-    QFutureWatcher<CutBatch>* m_watcher = nullptr;
+    QFutureWatcher<core::view::SceneCut>* m_watcher = nullptr;
     QTimer m_idleTimer;
     QTimer m_motionTimer;
 };
 
 } // namespace stylos::widgets
 
-Q_DECLARE_METATYPE(std::shared_ptr<const stylos::widgets::LodScheduler::CutBatch>)
+Q_DECLARE_METATYPE(std::shared_ptr<const stylos::core::view::SceneCut>)

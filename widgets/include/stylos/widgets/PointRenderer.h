@@ -19,16 +19,19 @@
  * upload(), draw(), release()); GUI thread only. Failure modes: initialize() returns false and
  * log() says why when a shader does not compile or link (no GL 3.3 core context).
  */
-#include "stylos/widgets/Camera.h"
-#include "stylos/widgets/RenderFragment.h"
-#include "stylos/widgets/SplatBuffer.h"
+#include "stylos/core/view/Camera.h"
+#include "stylos/core/view/SplatBuffer.h"
+#include "stylos/core/view/ViewFragment.h"
 
 #include <QOpenGLFunctions_3_3_Core>
 #include <QString>
 
+#include <Eigen/Core>
+
 #include <cstdint>
 #include <map>
 #include <memory>
+#include <optional>
 #include <vector>
 
 class QOpenGLBuffer;
@@ -63,9 +66,17 @@ public:
     QString log() const { return m_log; }
 
     /** @brief The fragments drawn, with their poses and colours; buffers of ids no longer present are freed. */
-    void setFragments(const std::vector<RenderFragment>& fragments);
+    void setFragments(const std::vector<core::view::ViewFragment>& fragments);
+    /** @brief Moves fragment @p id (octree frame → scene frame); its buffer stays. False if no such fragment. */
+    bool setPose(std::uint64_t id, const Eigen::Matrix4d& pose);
+    /**
+     * @brief The model matrix fragment @p id's splats are drawn with: from its buffer's frame (positions
+     *        relative to the root box origin) to the scene frame, pose · translation(origin); empty without a
+     *        buffer for it.
+     */
+    std::optional<Eigen::Matrix4d> modelMatrix(std::uint64_t id) const;
     /** @brief Replaces the splats of fragment @p id (ignored if no such fragment is set). */
-    void upload(std::uint64_t id, const SplatBuffer& splats);
+    void upload(std::uint64_t id, const core::view::SplatBuffer& splats);
     /** @brief Splats held in buffers, all fragments (hidden ones included). */
     std::uint64_t bufferedPoints() const;
     /** @brief Splats held in the buffers of visible fragments. */
@@ -87,14 +98,15 @@ public:
      * @brief Draws @p pass of the visible fragments for @p camera into the bound framebuffer (depth test on;
      *        clears nothing; the viewport is the caller's). Returns the points drawn.
      */
-    std::uint64_t draw(const Camera& camera, const Pass& pass);
+    std::uint64_t draw(const core::view::Camera& camera, const Pass& pass);
 
 private:
     struct Slot;
 
-    RenderFragment* find(std::uint64_t id);
+    core::view::ViewFragment* find(std::uint64_t id);
+    const core::view::ViewFragment* find(std::uint64_t id) const;
 
-    std::vector<RenderFragment> m_fragments;
+    std::vector<core::view::ViewFragment> m_fragments;
     std::map<std::uint64_t, std::unique_ptr<Slot>> m_slots;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     QString m_log;

@@ -1,7 +1,8 @@
 #pragma once
 /** @file
  * @brief Everything the 3D view draws, behind one GL facade for ViewportWidget: the splats
- *        (PointRenderer), the marker (MarkerRenderer), and the two ways a frame is made —
+ *        (PointRenderer), the overlays drawn over them in order (ViewOverlay: the marker, guides, gizmos…),
+ *        and the two ways a frame is made —
  *        quick frames (a subsample, enlarged splats; while moving without back faces and optionally at a
  *        reduced resolution) and the full-detail image, drawn offscreen in slices
  *        (drawImageStep) and then copied to the screen (presentImage).
@@ -9,12 +10,13 @@
  * Every drawing method needs the widget's GL context current; GUI thread only. Sizes are device
  * pixels; the camera's viewport is in logical pixels (devicePixelRatio converts). Failure modes:
  * initialize() returns false, with log(), without an OpenGL 3.3 core context; without offscreen
- * framebuffers drawImageStep() draws nothing and presentImage() returns false (quick frames remain).
+ * framebuffers drawImageStep() draws nothing and presentImage() returns false (quick frames remain); an
+ * overlay whose initialize() fails is not drawn (one qWarning).
  */
-#include "stylos/widgets/Camera.h"
-#include "stylos/widgets/MarkerRenderer.h"
+#include "stylos/core/view/Camera.h"
 #include "stylos/widgets/OffscreenFrame.h"
 #include "stylos/widgets/PointRenderer.h"
+#include "stylos/widgets/ViewOverlay.h"
 
 #include <QColor>
 #include <QOpenGLFunctions_3_3_Core>
@@ -22,6 +24,8 @@
 #include <QString>
 
 #include <cstdint>
+#include <memory>
+#include <vector>
 
 namespace stylos::widgets {
 
@@ -40,8 +44,15 @@ public:
 
     PointRenderer& points() { return m_points; }
     const PointRenderer& points() const { return m_points; }
-    MarkerRenderer& marker() { return m_marker; }
-    const MarkerRenderer& marker() const { return m_marker; }
+    /**
+     * @brief Adds @p overlay at the end of the list (drawn last); initialised at once when the renderer is
+     *        (context current then), else by initialize(). Adding one already there does nothing.
+     */
+    void addOverlay(std::shared_ptr<ViewOverlay> overlay);
+    /** @brief Releases @p overlay (context current when initialised) and takes it off the list; false when absent. */
+    bool removeOverlay(const ViewOverlay* overlay);
+    /** @brief The overlays, in drawing order. */
+    std::vector<std::shared_ptr<ViewOverlay>> overlays() const;
 
     /**
      * @brief Resolution of moving frames relative to the view, clamped to [0.1, 1] (default 1). Below 1 the
@@ -57,26 +68,32 @@ public:
      *        fragments, splats enlarged to stand for the rest; @p moving adds the motion shortcuts.
      *        Leaves @p target bound. Returns the points drawn.
      */
-    std::uint64_t drawQuick(const Camera& camera, unsigned target, const QSize& size, double devicePixelRatio,
+    std::uint64_t drawQuick(const core::view::Camera& camera, unsigned target, const QSize& size, double devicePixelRatio,
                             std::uint64_t limit, bool moving);
 
     /** @brief Starts the full-detail image afresh (nothing drawn yet). */
     void restartImage();
     /** @brief Draws the next slice of about @p points points into the image (@p size); waits for it. */
-    std::uint64_t drawImageStep(const Camera& camera, const QSize& size, double devicePixelRatio, std::uint64_t points);
+    std::uint64_t drawImageStep(const core::view::Camera& camera, const QSize& size, double devicePixelRatio, std::uint64_t points);
     bool isImageComplete() const { return m_imageDrawn >= 1.0; }
     std::uint64_t imagePoints() const { return m_imagePoints; }
     /** @brief Copies the complete image into @p target (and binds it); false when there is none. */
     bool presentImage(unsigned target, const QSize& size);
 
-    /** @brief Draws the marker over the bound framebuffer, then waits for the GL to finish. */
-    void finishFrame(const Camera& camera, double devicePixelRatio);
+    /** @brief Draws the overlays over the bound framebuffer (of @p size), then waits for the GL to finish. */
+    void finishFrame(const core::view::Camera& camera, const QSize& size, double devicePixelRatio);
 
 private:
+    struct Overlay {
+        std::shared_ptr<ViewOverlay> overlay;
+        bool ready = false;   ///< initialised and not released
+    };
+
     void clear();
+    void initializeOverlay(Overlay& entry);
 
     PointRenderer m_points;
-    MarkerRenderer m_marker;
+    std::vector<Overlay> m_overlays;
     OffscreenFrame m_image;
     OffscreenFrame m_lowRes;
     QString m_log;

@@ -1,20 +1,23 @@
 #pragma once
 /** @file
- * @brief The 3D view: a thin QWidget that forwards to the Camera, the LodScheduler (which cells to draw,
- *        computed in the background), the PointRenderer and the MarkerRenderer. It only turns input into
- *        camera moves and picks, and paints: into a native OpenGL 3.3 core window (ViewportWindow) shown
+ * @brief The 3D view: a thin QWidget that forwards to the camera (core::view::Camera), the LodScheduler
+ *        (which cells to draw, computed in the background), the tools (what input does) and the ViewRenderer
+ *        (the points, then the overlays). It only hands input to its tools, and paints: into a native
+ *        OpenGL 3.3 core window (ViewportWindow) shown
  *        in it through QWidget::createWindowContainer, which draws and swaps straight to the screen —
  *        no QOpenGLWidget composition into the top-level window (tens of ms a frame on llvmpipe).
  *        That window is transparent for input: this widget receives the mouse, the wheel and the keys,
  *        and holds the focus (its actions' shortcuts work as for any widget). QWidget::grab() does not
  *        capture the native window: grabFramebuffer() does.
  *
- * Mouse: left drag orbits about the target, right or middle drag (or Shift + left) pans, the wheel
- * dollies; a left click (press and release within 4 pixels) picks the surface point under the cursor
- * (core::octree::pickRay on each visible fragment's leaves, a few pixels wide), marks it and emits
- * pointPicked(); moving the cursor emits cursorMoved() when it is over a surface.
- * Keys (the numeric keypad works too): F fit to the scene, Shift+F fit to the selection, 1 front,
- * Ctrl+1 back, 3 right, Ctrl+3 left, 7 top, Ctrl+7 bottom, 0 isometric, 5 perspective/orthographic.
+ * Input: each mouse, wheel and key event goes first to the tool set with setTool() (a gizmo, a pick tool,
+ * a lasso; see ViewportTool), then, when that tool does not consume it, to navigation (NavigationTool:
+ * orbit, pan, dolly, a click picks the surface point under the cursor — core::view::pickScene, a few
+ * pixels wide —, marks it and emits pointPicked(); hovering emits cursorMoved(); the view keys).
+ * Overlays: addOverlay() puts a ViewOverlay over the points, drawn on every frame after them; the marker
+ * (setMarker) is the first.
+ * Poses: setFragmentPose() moves one fragment — its model matrix and a redraw, no new cut until the poses
+ * stop changing (see LodScheduler); setFragments() replaces everything and recomputes the cut.
  *
  * Frames: while the camera moves, each paint draws an even subsample of the cuts (LodScheduler::drawLimit()
  * points, splats enlarged) without the back faces, so that a frame stays near the target time (the frame
@@ -23,14 +26,15 @@
  * about the target frame time), while the last image stays on screen; it is shown when complete, and
  * again after each refinement stage.
  *
- * The scene frame is the fragments' common frame (RenderFragment::pose maps each octree into it), +Z up.
+ * The scene frame is the fragments' common frame (core::view::ViewFragment::pose maps each octree into it), +Z up.
  * Units: metres; positions in signals are in the scene frame, double precision. GUI thread only.
  */
-#include "stylos/widgets/Camera.h"
+#include "stylos/core/view/Camera.h"
+#include "stylos/core/view/ScenePick.h"
+#include "stylos/core/view/ViewFragment.h"
 #include "stylos/widgets/LodScheduler.h"
+#include "stylos/widgets/NavigationTool.h"
 #include "stylos/widgets/PointRenderer.h"
-#include "stylos/widgets/RenderFragment.h"
-#include "stylos/widgets/ScenePick.h"
 #include "stylos/widgets/ViewRenderer.h"
 
 #include <QElapsedTimer>
@@ -50,13 +54,18 @@
 
 namespace stylos::widgets {
 
+class MarkerOverlay;
+class ViewOverlay;
+class ViewportTool;
 class ViewportWindow;
 
 class ViewportWidget : public QWidget {
     Q_OBJECT
 
 public:
-    using Pick = ScenePick;
+    using Pick = core::view::ScenePick;
+    using Camera = core::view::Camera;
+    using Fragments = std::vector<core::view::ViewFragment>;
 
     explicit ViewportWidget(QWidget* parent = nullptr);
     ~ViewportWidget() override;
@@ -68,9 +77,15 @@ public:
      */
     static bool isSupported();
 
-    /** @brief The fragments to show (replaces the previous set). The first non-empty set is fitted. */
-    void setFragments(std::vector<RenderFragment> fragments);
-    const std::vector<RenderFragment>& fragments() const { return m_scheduler.fragments(); }
+    /** @brief The fragments to show (replaces the previous set; a new cut). The first non-empty set is fitted. */
+    void setFragments(Fragments fragments);
+    const Fragments& fragments() const { return m_scheduler.fragments(); }
+    /**
+     * @brief Moves fragment @p id to @p pose (octree frame → scene frame): its model matrix changes and a
+     *        frame is drawn, with no new cut (LodScheduler::setFragmentPose: the cut follows once the poses
+     *        stop changing). The camera's scene bounds follow. False (nothing changes) for an unknown id.
+     */
+    bool setFragmentPose(std::uint64_t id, const Eigen::Matrix4d& pose);
 
     const Camera& camera() const { return m_camera; }
     /** @brief Sets the camera (its viewport is kept); @p moving: part of a continuous move (the view
@@ -78,12 +93,15 @@ public:
     void setCamera(const Camera& camera, bool moving = true);
     void fitToScene();
     void fitToSelection();
-    void setStandardView(StandardView view);
+    void setStandardView(core::view::StandardView view);
     void setOrthographic(bool orthographic);
     /** @brief Bounds of the visible fragments (selected ones only with @p selectedOnly), scene frame. */
     Eigen::AlignedBox3d sceneBounds(bool selectedOnly = false) const;
 
     LodScheduler& scheduler() { return m_scheduler; }
+    const LodScheduler& scheduler() const { return m_scheduler; }
+    /** @brief What draws (read-only: the points' buffers and model matrices, the overlays). */
+    const ViewRenderer& renderer() const { return m_renderer; }
     void setShading(PointRenderer::Shading shading);
     PointRenderer::Shading shading() const { return m_renderer.points().shading(); }
     void setSplatFactor(double factor);
@@ -96,7 +114,25 @@ public:
 
     /** @brief Shows a marker at @p point (scene frame); empty hides it. */
     void setMarker(const std::optional<Eigen::Vector3d>& point);
-    std::optional<Eigen::Vector3d> marker() const { return m_renderer.marker().marker(); }
+    std::optional<Eigen::Vector3d> marker() const;
+
+    /**
+     * @brief Makes @p tool the view's tool (ViewportTool): it gets every input event first, navigation what
+     *        it does not consume. The previous tool is deactivated and destroyed; null is resetTool().
+     */
+    void setTool(std::unique_ptr<ViewportTool> tool);
+    /** @brief Back to navigation alone (the previous tool is deactivated and destroyed). */
+    void resetTool();
+    /** @brief The tool set with setTool(); null when navigation alone. */
+    ViewportTool* tool() const { return m_tool.get(); }
+    NavigationTool& navigation() { return m_navigation; }
+
+    /** @brief Draws @p overlay over the points from the next frame on, after those added before. */
+    void addOverlay(std::shared_ptr<ViewOverlay> overlay);
+    /** @brief Stops drawing @p overlay and releases its GL objects; false when it was not there. */
+    bool removeOverlay(const ViewOverlay* overlay);
+    /** @brief Schedules a frame (e.g. an overlay changed); coalesced, drawn on a later turn of the event loop. */
+    void requestFrame();
 
     /** @brief The surface point under the position @p pixel (logical pixels), if any. */
     std::optional<Pick> pickAt(const QPointF& pixel) const;
@@ -141,9 +177,11 @@ protected:
     void keyPressEvent(QKeyEvent* event) override;
 
 private:
+    /** Offers an event to the tool, then to navigation; shows the cursor; true when one consumed it. */
+    template <typename Handler>
+    bool offer(Handler handler);
+    void showToolCursor();
     void cameraEdited(bool moving);
-    /** Schedules a frame of the native window (what QWidget::update() was). */
-    void requestFrame();
     void releaseGl();
     void uploadPending();
     /** The frame painted last is on screen (@p swapped: its time includes the composition), or another
@@ -160,15 +198,14 @@ private:
     Camera m_camera;
     LodScheduler m_scheduler;
     ViewRenderer m_renderer;
+    std::shared_ptr<MarkerOverlay> m_marker;
+    NavigationTool m_navigation;
+    std::unique_ptr<ViewportTool> m_tool;
     QTimer m_stepTimer;          ///< drives the slices of the full-detail image
     std::uint64_t m_stepPoints = 100'000; ///< points per slice, adapted to about one target frame time
-    std::shared_ptr<const LodScheduler::CutBatch> m_pending;
+    std::shared_ptr<const core::view::SceneCut> m_pending;
     bool m_fragmentsChanged = false;
     QString m_glError;
-    QPoint m_pressPosition;
-    QPoint m_lastPosition;
-    Qt::MouseButton m_dragButton = Qt::NoButton;
-    bool m_dragged = false;
     double m_lastFrameMs = 0;
     QElapsedTimer m_frameTimer;  ///< from the start of the last paintGL
     bool m_frameOpen = false;    ///< painted, not yet reported

@@ -1,9 +1,9 @@
-#include "stylos/widgets/Camera.h"
+#include "stylos/core/view/Camera.h"
 
 #include <algorithm>
 #include <cmath>
 
-namespace stylos::widgets {
+namespace stylos::core::view {
 
 namespace {
 
@@ -186,4 +186,4 @@ std::optional<Eigen::Vector3d> Camera::project(const Eigen::Vector3d& point) con
     return Eigen::Vector3d((ndc.x() + 1.0) * 0.5 * m_width, (1.0 - ndc.y()) * 0.5 * m_height, ndc.z());
 }
 
-} // namespace stylos::widgets
+} // namespace stylos::core::view

@@ -1,4 +1,4 @@
-#include "stylos/widgets/SplatBuffer.h"
+#include "stylos/core/view/SplatBuffer.h"
 
 #include "stylos/core/octree/PoctWriter.h"
 
@@ -7,9 +7,9 @@
 #include <cstring>
 #include <random>
 
-namespace stylos::widgets {
+namespace stylos::core::view {
 
-namespace oct = core::octree;
+namespace oct = octree;
 
 namespace {
 
@@ -73,4 +73,4 @@ SplatBuffer makeSplatBuffer(const oct::PackedOctree& octree, const oct::CutResul
     return out;
 }
 
-} // namespace stylos::widgets
+} // namespace stylos::core::view

@@ -1,22 +1,22 @@
-#include "stylos/widgets/ScenePick.h"
+#include "stylos/core/view/ScenePick.h"
 
 #include "stylos/core/octree/CellPick.h"
 
 #include <algorithm>
 
-namespace stylos::widgets {
+namespace stylos::core::view {
 
 namespace {
 
 constexpr int BoundsLevel = 5; ///< cells of this level bound a fragment (at most 32 Ki of them)
 
-Eigen::AlignedBox3d fragmentBounds(const RenderFragment& f)
+Eigen::AlignedBox3d fragmentBounds(const ViewFragment& f)
 {
     Eigen::AlignedBox3d box;
     if (!f.octree) return box;
     const Eigen::Matrix3d r = f.pose.topLeftCorner<3, 3>();
     const Eigen::Vector3d t = f.pose.topRightCorner<3, 1>();
-    f.octree->forEachCell(std::min(BoundsLevel, f.octree->depth()), [&](const core::octree::CellView& cell) {
+    f.octree->forEachCell(std::min(BoundsLevel, f.octree->depth()), [&](const octree::CellView& cell) {
         const Eigen::Vector3d c = r * Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]) + t;
         const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.8660254037844386 * cell.size); // any rotation
         box.extend(c - half);
@@ -28,15 +28,15 @@ Eigen::AlignedBox3d fragmentBounds(const RenderFragment& f)
 
 } // namespace
 
-Eigen::AlignedBox3d sceneBounds(const std::vector<RenderFragment>& fragments, bool selectedOnly)
+Eigen::AlignedBox3d sceneBounds(const std::vector<ViewFragment>& fragments, bool selectedOnly)
 {
     Eigen::AlignedBox3d box;
-    for (const RenderFragment& f : fragments)
+    for (const ViewFragment& f : fragments)
         if (f.visible && (!selectedOnly || f.selected)) box.extend(fragmentBounds(f));
     return box;
 }
 
-std::optional<ScenePick> pickScene(const std::vector<RenderFragment>& fragments, const Camera& camera, double x,
+std::optional<ScenePick> pickScene(const std::vector<ViewFragment>& fragments, const Camera& camera, double x,
                                    double y, double radiusPixels)
 {
     const Ray ray = camera.rayAt(x, y);
@@ -44,12 +44,12 @@ std::optional<ScenePick> pickScene(const std::vector<RenderFragment>& fragments,
     if (camera.isOrthographic()) radiusAtOrigin = radiusPixels / camera.pixelsPerMetre();
     else radiusPerMetre = radiusPixels / (camera.pixelsPerMetre() * camera.distance()); // per metre of depth
     std::optional<ScenePick> best;
-    for (const RenderFragment& f : fragments) {
+    for (const ViewFragment& f : fragments) {
         if (!f.visible || !f.octree) continue;
         const Eigen::Matrix3d r = f.pose.topLeftCorner<3, 3>();
         const Eigen::Vector3d t = f.pose.topRightCorner<3, 1>();
         const Eigen::Vector3d o = r.transpose() * (ray.origin - t), d = r.transpose() * ray.direction;
-        const auto hit = core::octree::pickRay(*f.octree, {o.x(), o.y(), o.z()}, {d.x(), d.y(), d.z()},
+        const auto hit = octree::pickRay(*f.octree, {o.x(), o.y(), o.z()}, {d.x(), d.y(), d.z()},
                                                radiusAtOrigin, radiusPerMetre);
         if (!hit) continue;
         const Eigen::Vector3d point = r * Eigen::Vector3d(hit->cell.centre[0], hit->cell.centre[1], hit->cell.centre[2]) + t;
@@ -59,4 +59,4 @@ std::optional<ScenePick> pickScene(const std::vector<RenderFragment>& fragments,
     return best;
 }
 
-} // namespace stylos::widgets
+} // namespace stylos::core::view

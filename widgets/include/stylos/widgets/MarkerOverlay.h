@@ -1,13 +1,13 @@
 #pragma once
 /** @file
- * @brief Draws a marker at a 3D point of the scene (a picked point, or the 3D point of a click in the
- *        développée): a three-axis cross of constant size on screen with a dot at its centre, drawn over
- *        the splats (no depth test) so that it is never hidden. OpenGL 3.3 core.
+ * @brief The 3D view's first overlay (ViewOverlay): a marker at a 3D point of the scene (a picked point, or
+ *        the 3D point of a click in the développée), a three-axis cross of constant size on screen with a dot
+ *        at its centre, drawn over the splats (no depth test) so that it is never hidden. OpenGL 3.3 core.
  *
  * initialize(), draw() and release() need the GL context current; GUI thread only. Failure modes:
  * initialize() returns false when the shader does not build (no GL 3.3 core context).
  */
-#include "stylos/widgets/Camera.h"
+#include "stylos/widgets/ViewOverlay.h"
 
 #include <QColor>
 #include <QOpenGLFunctions_3_3_Core>
@@ -23,15 +23,17 @@ class QOpenGLVertexArrayObject;
 
 namespace stylos::widgets {
 
-class MarkerRenderer : protected QOpenGLFunctions_3_3_Core {
+class MarkerOverlay : public ViewOverlay, protected QOpenGLFunctions_3_3_Core {
 public:
-    MarkerRenderer();
-    ~MarkerRenderer();
-    MarkerRenderer(const MarkerRenderer&) = delete;
-    MarkerRenderer& operator=(const MarkerRenderer&) = delete;
+    MarkerOverlay();
+    ~MarkerOverlay() override;
+    MarkerOverlay(const MarkerOverlay&) = delete;
+    MarkerOverlay& operator=(const MarkerOverlay&) = delete;
 
-    bool initialize();
-    void release();
+    bool initialize() override;
+    void release() override;
+    /** @brief Draws the marker, if any, into the bound framebuffer. */
+    void draw(const OverlayFrame& frame) override;
 
     /** @brief The marked point, scene frame, metres; empty: no marker. */
     void setMarker(const std::optional<Eigen::Vector3d>& point) { m_point = point; }
@@ -39,9 +41,6 @@ public:
     /** @brief Half the length of an arm, logical pixels (default 14). */
     void setSize(double pixels) { m_size = pixels; }
     void setColour(const QColor& colour) { m_colour = colour; }
-
-    /** @brief Draws the marker, if any, into the bound framebuffer. */
-    void draw(const Camera& camera, double devicePixelRatio = 1.0);
 
 private:
     std::unique_ptr<QOpenGLShaderProgram> m_program;

@@ -1,4 +1,4 @@
-#include "stylos/widgets/MarkerRenderer.h"
+#include "stylos/widgets/MarkerOverlay.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLShaderProgram>
@@ -30,10 +30,10 @@ const float Cross[] = {-1, 0, 0, 1, 0, 0, 0, -1, 0, 0, 1, 0, 0, 0, -1, 0, 0, 1, 
 
 } // namespace
 
-MarkerRenderer::MarkerRenderer() = default;
-MarkerRenderer::~MarkerRenderer() = default;
+MarkerOverlay::MarkerOverlay() = default;
+MarkerOverlay::~MarkerOverlay() = default;
 
-bool MarkerRenderer::initialize()
+bool MarkerOverlay::initialize()
 {
     initializeOpenGLFunctions();
     auto program = std::make_unique<QOpenGLShaderProgram>();
@@ -54,16 +54,17 @@ bool MarkerRenderer::initialize()
     return true;
 }
 
-void MarkerRenderer::release()
+void MarkerOverlay::release()
 {
     m_vao.reset();
     m_vbo.reset();
     m_program.reset();
 }
 
-void MarkerRenderer::draw(const Camera& camera, double devicePixelRatio)
+void MarkerOverlay::draw(const OverlayFrame& frame)
 {
     if (!m_program || !m_point) return;
+    const core::view::Camera& camera = frame.camera;
     // Constant size on screen: metres per pixel at the marker's depth.
     const double depth = camera.isOrthographic() ? camera.distance() : (*m_point - camera.eye()).dot(camera.forward());
     if (!camera.isOrthographic() && depth <= 0) return;
@@ -72,13 +73,13 @@ void MarkerRenderer::draw(const Camera& camera, double devicePixelRatio)
     Eigen::Matrix4d model = Eigen::Matrix4d::Identity();
     model.topLeftCorner<3, 3>() *= m_size * metresPerPixel;
     model.topRightCorner<3, 1>() = *m_point;
-    const Eigen::Matrix4f matrix = (camera.viewProjection() * model).cast<float>();
+    const Eigen::Matrix4f matrix = (frame.projection * frame.view * model).cast<float>();
 
     glDisable(GL_DEPTH_TEST);
     glEnable(GL_PROGRAM_POINT_SIZE);
     m_program->bind();
     glUniformMatrix4fv(m_program->uniformLocation("uMatrix"), 1, GL_FALSE, matrix.data());
-    m_program->setUniformValue("uPointSize", float(5.0 * devicePixelRatio));
+    m_program->setUniformValue("uPointSize", float(5.0 * frame.devicePixelRatio));
     m_program->setUniformValue("uColour", float(m_colour.redF()), float(m_colour.greenF()), float(m_colour.blueF()));
     {
         QOpenGLVertexArrayObject::Binder bind(m_vao.get());

@@ -8,7 +8,8 @@
  *
  * Per-cell attributes of the octree are per leaf; an inner cell of the cut takes those of its first leaf
  * (following first children down to the leaf level). Units: metres (positions relative to the octree's
- * root box origin, in the octree's frame). Thread-safety: makeSplatBuffer is reentrant.
+ * root box origin, in the octree's frame). Thread-safety: reentrant, reads the octree only. Failure modes:
+ * none; a "colour" or "ambient" layer of another type or size is ignored, as if absent.
  */
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/octree/ViewCut.h"
@@ -17,7 +18,7 @@
 #include <cstdint>
 #include <vector>
 
-namespace stylos::widgets {
+namespace stylos::core::view {
 
 /** @brief One splat as the vertex shader reads it (24 bytes). */
 struct SplatVertex {
@@ -39,10 +40,10 @@ struct SplatBuffer {
 };
 
 /** @brief Index at the leaf level of the first leaf under the cell (@p level, @p index). */
-std::uint64_t firstLeafOf(const core::octree::PackedOctree& octree, int level, std::uint64_t index);
+std::uint64_t firstLeafOf(const octree::PackedOctree& octree, int level, std::uint64_t index);
 
 /** @brief The splats of @p cut (cells of @p octree), shuffled with @p seed (0: in the cut's order). */
-SplatBuffer makeSplatBuffer(const core::octree::PackedOctree& octree, const core::octree::CutResult& cut,
+SplatBuffer makeSplatBuffer(const octree::PackedOctree& octree, const octree::CutResult& cut,
                             std::uint64_t seed = 1);
 
-} // namespace stylos::widgets
+} // namespace stylos::core::view

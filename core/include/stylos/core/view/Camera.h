@@ -13,14 +13,16 @@
  * Orthographic: the view height at any depth is the perspective view height at the target,
  * 2 · distance · tan(fov / 2), so switching projection keeps what is at the target the same size.
  * Clip planes follow the scene bounds (setSceneBounds) so that the whole scene is never clipped.
- * Units: metres, radians, pixels. A plain value type; not thread-safe for writing, copy it to share.
+ * Units: metres, radians, pixels. Thread-safety: a plain value type; not thread-safe for writing, copy it
+ * to share. Failure modes: none; out-of-range values are clamped (setViewport, setFieldOfView, setDistance)
+ * or ignored (dolly by a non-positive factor, fit to an empty box).
  */
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
 #include <optional>
 
-namespace stylos::widgets {
+namespace stylos::core::view {
 
 /** @brief The standard views: where the camera looks from (Front: from −Y toward +Y, Z up). */
 enum class StandardView { Front, Back, Left, Right, Top, Bottom, Iso };
@@ -123,4 +125,4 @@ private:
     Eigen::AlignedBox3d m_bounds;
 };
 
-} // namespace stylos::widgets
+} // namespace stylos::core::view

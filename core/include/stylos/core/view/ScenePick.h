@@ -3,10 +3,13 @@
  * @brief Questions the 3D view asks of its fragments without drawing: their bounds in the scene frame
  *        (from the cells of a coarse level, so tighter than the root boxes) and the surface point under
  *        a pixel (core::octree::pickRay against each visible fragment's leaves, in its own frame).
- *        Units: metres, pixels. Reentrant; reads the shared octrees only.
+ *
+ * Units: metres (scene frame), pixels (the camera's viewport, y downwards). Thread-safety: reentrant;
+ * reads the shared octrees only. Failure modes: none; fragments without an octree or hidden are skipped,
+ * and "nothing" is an empty box or an empty optional.
  */
-#include "stylos/widgets/Camera.h"
-#include "stylos/widgets/RenderFragment.h"
+#include "stylos/core/view/Camera.h"
+#include "stylos/core/view/ViewFragment.h"
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
@@ -15,7 +18,7 @@
 #include <optional>
 #include <vector>
 
-namespace stylos::widgets {
+namespace stylos::core::view {
 
 /** @brief A surface point under a pixel. */
 struct ScenePick {
@@ -26,13 +29,13 @@ struct ScenePick {
 };
 
 /** @brief Bounds of the visible fragments (only the selected ones with @p selectedOnly); empty if none. */
-Eigen::AlignedBox3d sceneBounds(const std::vector<RenderFragment>& fragments, bool selectedOnly = false);
+Eigen::AlignedBox3d sceneBounds(const std::vector<ViewFragment>& fragments, bool selectedOnly = false);
 
 /**
  * @brief The nearest leaf along the ray through the pixel (@p x, @p y) of @p camera among the visible
  *        fragments, within @p radiusPixels of the ray (the pixel footprint at each depth).
  */
-std::optional<ScenePick> pickScene(const std::vector<RenderFragment>& fragments, const Camera& camera, double x,
+std::optional<ScenePick> pickScene(const std::vector<ViewFragment>& fragments, const Camera& camera, double x,
                                    double y, double radiusPixels = 3.0);
 
-} // namespace stylos::widgets
+} // namespace stylos::core::view
