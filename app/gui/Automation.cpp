@@ -1,5 +1,7 @@
 #include "Automation.h"
 
+#include "stylos/core/scene/SceneEigen.h"
+
 #include "LogDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
@@ -140,10 +142,7 @@ void poseWhenReady(MainWindow& window, int frames, int timeoutMs)
         options.frames = frames;
         auto continuing = std::make_shared<bool>(false);
         options.setPose = [&window, continuing](std::uint64_t id, const Eigen::Matrix4d& pose) {
-            std::array<double, 16> rowMajor{};
-            for (int row = 0; row < 4; ++row)
-                for (int col = 0; col < 4; ++col) rowMajor[std::size_t(4 * row + col)] = pose(row, col);
-            window.document().setFragmentPose(id, core::scene::Pose(rowMajor), *continuing); // one undo step
+            window.document().setFragmentPose(id, core::scene::poseFromEigen(pose), *continuing); // one undo step
             *continuing = true;
             window.viewportSync()->pushNow(); // what the next turn of the event loop would push
         };

@@ -1,5 +1,7 @@
 #include "ViewportSync.h"
 
+#include "stylos/core/scene/SceneEigen.h"
+
 #include "stylos/core/view/ViewFragment.h"
 #include "stylos/widgets/SceneDocument.h"
 #include "stylos/widgets/ViewportWidget.h"
@@ -45,8 +47,7 @@ void ViewportSync::pushNow()
         core::view::ViewFragment r;
         r.id = f.id;
         r.octree = std::move(octree);
-        for (int row = 0; row < 4; ++row)
-            for (int col = 0; col < 4; ++col) r.pose(row, col) = f.pose(row, col);
+        r.pose = core::scene::toEigen(f.pose);
         r.colour = {f.colour.r, f.colour.g, f.colour.b};
         r.visible = f.visible;
         r.selected = m_selection.contains(f.id);

@@ -1,5 +1,7 @@
 #include "stylos/core/view/ScenePick.h"
 
+#include "stylos/core/scene/SceneEigen.h"
+
 #include "stylos/core/octree/CellPick.h"
 
 #include <algorithm>
@@ -17,7 +19,7 @@ Eigen::AlignedBox3d fragmentBounds(const ViewFragment& f)
     const Eigen::Matrix3d r = f.pose.topLeftCorner<3, 3>();
     const Eigen::Vector3d t = f.pose.topRightCorner<3, 1>();
     f.octree->forEachCell(std::min(BoundsLevel, f.octree->depth()), [&](const octree::CellView& cell) {
-        const Eigen::Vector3d c = r * Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]) + t;
+        const Eigen::Vector3d c = r * scene::toEigen(cell.centre) + t;
         const Eigen::Vector3d half = Eigen::Vector3d::Constant(0.8660254037844386 * cell.size); // any rotation
         box.extend(c - half);
         box.extend(c + half);
@@ -52,7 +54,7 @@ std::optional<ScenePick> pickScene(const std::vector<ViewFragment>& fragments, c
         const auto hit = octree::pickRay(*f.octree, {o.x(), o.y(), o.z()}, {d.x(), d.y(), d.z()},
                                                radiusAtOrigin, radiusPerMetre);
         if (!hit) continue;
-        const Eigen::Vector3d point = r * Eigen::Vector3d(hit->cell.centre[0], hit->cell.centre[1], hit->cell.centre[2]) + t;
+        const Eigen::Vector3d point = r * scene::toEigen(hit->cell.centre) + t;
         const double along = (point - ray.origin).dot(ray.direction);
         if (!best || along < best->along) best = ScenePick{point, f.id, hit->cell.size, along};
     }
