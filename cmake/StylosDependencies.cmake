@@ -6,6 +6,8 @@ find_package(nlohmann_json 3.10 REQUIRED)
 find_package(PkgConfig REQUIRED)
 # Debian's OpenImageIO CMake config is broken (wants /usr/bin/iconvert and OpenCV headers): use pkg-config.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+# XXH64, the .poct section checksum: Debian's libxxhash (libxxhash-dev ships libxxhash.pc).
+pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp REQUIRED)
 add_library(stylos_nanoflann INTERFACE)
 target_include_directories(stylos_nanoflann SYSTEM INTERFACE ${NANOFLANN_INCLUDE_DIR})
