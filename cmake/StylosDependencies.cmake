@@ -3,6 +3,7 @@ find_package(Threads REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 2.1 CONFIG REQUIRED) # stylos-cli's argument parser (header-only, libcli11-dev)
 find_package(PkgConfig REQUIRED)
 # Debian's OpenImageIO CMake config is broken (wants /usr/bin/iconvert and OpenCV headers): use pkg-config.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
