@@ -3,9 +3,12 @@ find_package(Threads REQUIRED)
 find_package(Eigen3 3.4 REQUIRED NO_MODULE)
 find_package(glm REQUIRED)
 find_package(nlohmann_json 3.10 REQUIRED)
+find_package(CLI11 2.1 CONFIG REQUIRED) # stylos-cli's argument parser (header-only, libcli11-dev)
 find_package(PkgConfig REQUIRED)
 # Debian's OpenImageIO CMake config is broken (wants /usr/bin/iconvert and OpenCV headers): use pkg-config.
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
+# XXH64, the .poct section checksum: Debian's libxxhash (libxxhash-dev ships libxxhash.pc).
+pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
 find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp REQUIRED)
 add_library(stylos_nanoflann INTERFACE)
 target_include_directories(stylos_nanoflann SYSTEM INTERFACE ${NANOFLANN_INCLUDE_DIR})

@@ -24,7 +24,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</source>
+        <source>A project (.stylos), or scans to import (%1).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -822,7 +822,7 @@
 <context>
     <name>stylos::widgets::ScanImporter</name>
     <message>
-        <source>Scans and octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</source>
+        <source>Scans and octrees (%1)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

@@ -24,8 +24,8 @@
         <translation>images</translation>
     </message>
     <message>
-        <source>A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</source>
-        <translation>Un projet (.stylos), ou des relevés à importer (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, OBJ, POCT).</translation>
+        <source>A project (.stylos), or scans to import (%1).</source>
+        <translation>Un projet (.stylos), ou des relevés à importer (%1).</translation>
     </message>
     <message>
         <source>--orbit-benchmark: &apos;%1&apos; is not a frame count (1 to 100000)</source>
@@ -822,8 +822,8 @@
 <context>
     <name>stylos::widgets::ScanImporter</name>
     <message>
-        <source>Scans and octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</source>
-        <translation>Relevés et octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)</translation>
+        <source>Scans and octrees (%1)</source>
+        <translation>Relevés et octrees (%1)</translation>
     </message>
     <message>
         <source>Packed octrees (*.poct)</source>

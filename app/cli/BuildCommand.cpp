@@ -6,6 +6,7 @@
 #include "ConsoleProgress.h"
 #include "PoctInfo.h"
 
+#include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/synth/SyntheticStream.h"
 
@@ -14,7 +15,6 @@
 #include <sys/resource.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cstdio>
 #include <iostream>
 
@@ -30,14 +30,6 @@ std::uint64_t peakRssBytes()
     struct rusage usage {};
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
-}
-
-bool endsWithPoct(const std::string& path)
-{
-    if (path.size() < 5) return false;
-    std::string ext = path.substr(path.size() - 5);
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".poct";
 }
 
 /** The build's options from the command line; false (with @p problem set) on a usage error. */
@@ -149,7 +141,7 @@ int runBuild(const std::vector<std::string>& args)
         return usageError(cl, "--seed and --ordered apply to --synthetic-drum only");
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "build needs -o OUT.poct");
-    if (!endsWithPoct(*output)) return usageError(cl, "the output must be a .poct file, not \"" + *output + "\"");
+    if (!core::io::hasPoctExtension(*output)) return usageError(cl, "the output must be a .poct file, not \"" + *output + "\"");
 
     oct::BuildOptions options;
     core::synth::SyntheticStreamOptions stream;

@@ -1,18 +1,79 @@
 #include "CommandLine.h"
 
+#include <CLI/CLI.hpp>
+
+#include <algorithm>
 #include <charconv>
 #include <iostream>
 
 namespace stylos::cli {
 
-CommandLine::CommandLine(std::string command, std::string synopsis, std::vector<OptionSpec> options)
-    : m_command(std::move(command)), m_synopsis(std::move(synopsis)), m_options(std::move(options))
+namespace {
+
+/** The help's layout: "usage: stylos-cli COMMAND SYNOPSIS", then "options:" with "-o, --output OUT". */
+class UsageFormatter : public CLI::Formatter {
+public:
+    explicit UsageFormatter(std::string synopsis) : m_synopsis(std::move(synopsis)) { column_width(30); }
+
+    std::string make_help(const CLI::App* app, std::string, CLI::AppFormatMode mode) const override
+    {
+        return make_usage(app, {}) + make_groups(app, mode);
+    }
+    std::string make_usage(const CLI::App*, std::string) const override { return "usage: " + m_synopsis + "\n"; }
+    std::string make_option_name(const CLI::Option* option, bool) const override
+    {
+        std::string name;
+        for (const auto& s : option->get_snames()) name += "-" + s + ", ";
+        for (const auto& l : option->get_lnames()) name += "--" + l + ", ";
+        return name.substr(0, name.size() - 2);
+    }
+
+private:
+    std::string m_synopsis;
+};
+
+/** "-o=VALUE" as "-o VALUE" (CLI11 would keep the "=" in the value). */
+std::vector<std::string> splitShortAssignments(const std::vector<std::string>& args)
 {
-    m_options.push_back({"help", "", "show this help and exit", "h"});
+    std::vector<std::string> out;
+    for (const std::string& a : args) {
+        if (a.size() > 3 && a[0] == '-' && a[1] != '-' && a[2] == '=') {
+            out.push_back(a.substr(0, 2));
+            out.push_back(a.substr(3));
+        } else {
+            out.push_back(a);
+        }
+    }
+    return out;
 }
 
-const OptionSpec* CommandLine::find(const std::string& name) const
+} // namespace
+
+CommandLine::CommandLine(std::string command, std::string synopsis, std::vector<OptionSpec> options)
+    : m_command(std::move(command)), m_synopsis(std::move(synopsis)), m_options(std::move(options)),
+      m_app(std::make_unique<CLI::App>())
 {
+    m_options.push_back({"help", "", "show this help and exit", "h"});
+    m_app->formatter(std::make_shared<UsageFormatter>(this->synopsis()));
+    m_app->set_help_flag(); // --help is an ordinary flag here: the command prints its own introduction
+    m_app->allow_extras();  // unknown options come back in remaining(), named in our message
+    m_app->option_defaults()->group("options");
+    m_app->add_option("positionals", m_positionals)->group("");
+    for (const OptionSpec& o : m_options) {
+        const std::string names = (o.shortName.empty() ? "" : "-" + o.shortName + ",") + "--" + o.name;
+        if (o.valueName.empty())
+            m_app->add_flag(names, o.help);
+        else
+            m_app->add_option(names, o.help)->type_name(o.valueName)->multi_option_policy(
+                CLI::MultiOptionPolicy::TakeLast);
+    }
+}
+
+CommandLine::~CommandLine() = default;
+
+const OptionSpec* CommandLine::find(const std::string& argument) const
+{
+    const std::string name = argument.substr(std::min(argument.find_first_not_of('-'), argument.size()));
     for (const auto& o : m_options)
         if (o.name == name || (!o.shortName.empty() && o.shortName == name)) return &o;
     return nullptr;
@@ -20,48 +81,39 @@ const OptionSpec* CommandLine::find(const std::string& name) const
 
 bool CommandLine::parse(const std::vector<std::string>& args)
 {
-    for (std::size_t i = 0; i < args.size(); ++i) {
-        const std::string& a = args[i];
-        if (a == "--") {
-            m_positionals.insert(m_positionals.end(), args.begin() + i + 1, args.end());
-            break;
-        }
-        if (a.size() < 2 || a[0] != '-' || (a[1] != '-' && a.size() != 2)) {
-            m_positionals.push_back(a);
-            continue;
-        }
-        std::string name = a.substr(a[1] == '-' ? 2 : 1);
-        std::optional<std::string> inlineValue;
-        if (const auto eq = name.find('='); eq != std::string::npos) {
-            inlineValue = name.substr(eq + 1);
-            name = name.substr(0, eq);
-        }
-        const OptionSpec* spec = find(name);
-        if (!spec) {
-            m_error = "unknown option " + a;
-            return false;
-        }
-        if (spec->name == "help") {
-            m_help = true;
-            continue;
-        }
-        if (spec->valueName.empty()) {
-            if (inlineValue) {
-                m_error = "option --" + spec->name + " takes no value";
-                return false;
-            }
-            m_values[spec->name] = "";
-            continue;
-        }
-        if (inlineValue) {
-            m_values[spec->name] = *inlineValue;
-        } else if (i + 1 < args.size()) {
-            m_values[spec->name] = args[++i];
-        } else {
-            m_error = "option --" + spec->name + " needs a value (" + spec->valueName + ")";
-            return false;
-        }
+    std::vector<std::string> reversed = splitShortAssignments(args);
+    std::reverse(reversed.begin(), reversed.end()); // CLI11 takes the arguments last first
+    m_app->clear();
+    m_positionals.clear();
+    m_values.clear();
+    try {
+        m_app->parse(reversed);
+    } catch (const CLI::ArgumentMismatch& e) {
+        // An option that takes a value takes the next argument whatever it is: only the last can lack one.
+        const OptionSpec* spec = args.empty() ? nullptr : find(args.back());
+        m_error = spec ? "option --" + spec->name + " needs a value (" + spec->valueName + ")" : std::string(e.what());
+        return false;
+    } catch (const CLI::ParseError& e) {
+        m_error = e.what();
+        return false;
     }
+    for (const std::string& extra : m_app->remaining()) {
+        if (extra == "--") continue;
+        m_error = "unknown option " + extra;
+        return false;
+    }
+    for (const OptionSpec& o : m_options) {
+        const CLI::Option* option = m_app->get_option("--" + o.name);
+        if (option->count() == 0) continue;
+        const std::vector<std::string>& results = option->results();
+        if (o.valueName.empty() &&
+            std::any_of(results.begin(), results.end(), [](const std::string& r) { return r != "true"; })) {
+            m_error = "option --" + o.name + " takes no value";
+            return false;
+        }
+        m_values[o.name] = o.valueName.empty() ? std::string() : results.back();
+    }
+    m_help = flag("help");
     return true;
 }
 
@@ -98,22 +150,17 @@ bool CommandLine::integer(const std::string& name, long long& out)
 
 std::string CommandLine::usage() const
 {
-    std::string u = "usage: stylos-cli " + m_command + " " + m_synopsis + "\n\noptions:\n";
-    for (const auto& o : m_options) {
-        std::string left = "  ";
-        if (!o.shortName.empty()) left += "-" + o.shortName + ", ";
-        left += "--" + o.name;
-        if (!o.valueName.empty()) left += " " + o.valueName;
-        if (left.size() < 30) left.resize(30, ' ');
-        else left += "  ";
-        u += left + o.help + "\n";
-    }
-    return u;
+    return m_app->help();
+}
+
+std::string CommandLine::synopsis() const
+{
+    return "stylos-cli " + m_command + " " + m_synopsis;
 }
 
 int usageError(const CommandLine& cl, const std::string& message)
 {
-    std::cerr << "stylos-cli: " << message << "\n" << cl.usage();
+    std::cerr << "stylos-cli: " << message << " (usage: " << cl.synopsis() << "; --help for the options)\n";
     return ExitUsage;
 }
 

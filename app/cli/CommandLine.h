@@ -1,10 +1,18 @@
 #pragma once
-// A small argument parser for stylos-cli commands: positionals, --flags and --options VALUE
-// (or --option=VALUE). Usage errors end the program with exit code 2, per the command-line contract.
+// The argument parser of every stylos-cli command, a facade over CLI11 (Debian's libcli11-dev):
+// positionals, --flags and --options VALUE (or --option=VALUE; short forms -o VALUE, -oVALUE, -o=VALUE),
+// "--" ending the options; a repeated option keeps its last value. The commands read the values as
+// text and convert them here (number(), integer()) so that each bad value is named in one message.
+// Usage errors print one line and end the program with exit code 2, per the command-line contract.
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
+
+namespace CLI {
+class App;
+}
 
 namespace stylos::cli {
 
@@ -18,12 +26,18 @@ struct OptionSpec {
 class CommandLine {
 public:
     CommandLine(std::string command, std::string synopsis, std::vector<OptionSpec> options);
+    ~CommandLine();
+    CommandLine(const CommandLine&) = delete;
+    CommandLine& operator=(const CommandLine&) = delete;
 
     /** Parses @p args (after the command word). Returns false with error() set on a usage error. */
     bool parse(const std::vector<std::string>& args);
     const std::string& error() const { return m_error; }
     bool helpRequested() const { return m_help; }
+    /** "usage: stylos-cli COMMAND SYNOPSIS", then every option with its help: what --help prints. */
     std::string usage() const;
+    /** "stylos-cli COMMAND SYNOPSIS", one line. */
+    std::string synopsis() const;
 
     const std::vector<std::string>& positionals() const { return m_positionals; }
     bool flag(const std::string& name) const { return m_values.count(name) > 0; }
@@ -34,10 +48,11 @@ public:
     bool integer(const std::string& name, long long& out);
 
 private:
-    const OptionSpec* find(const std::string& name) const;
+    const OptionSpec* find(const std::string& argument) const;
     std::string m_command;
     std::string m_synopsis;
     std::vector<OptionSpec> m_options;
+    std::unique_ptr<CLI::App> m_app;
     std::vector<std::string> m_positionals;
     std::map<std::string, std::string> m_values;
     std::string m_error;
@@ -47,7 +62,10 @@ private:
 /** Exit codes of the command-line contract. */
 enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2 };
 
-/** Prints "stylos-cli COMMAND: message" and the usage hint to stderr; returns ExitUsage. */
+/**
+ * Prints one line to stderr, "stylos-cli: message (usage: stylos-cli COMMAND SYNOPSIS; --help for the
+ * options)", and returns ExitUsage.
+ */
 int usageError(const CommandLine& cl, const std::string& message);
 
 } // namespace stylos::cli

@@ -4,6 +4,7 @@
 #include "ConsoleProgress.h"
 #include "PoctInfo.h"
 
+#include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/io/PointFileSummary.h"
 
 #include <nlohmann/json.hpp>
@@ -48,6 +49,15 @@ void printText(const std::string& file, const core::io::PointFileSummary& s)
     std::printf("attributes: %s\n", attrs.empty() ? "(none)" : attrs.c_str());
 }
 
+/** " .ply .las ..." : the extensions the readers open (@p readable) or recognise and refuse. */
+std::string extensionList(bool readable)
+{
+    std::string list;
+    for (const auto& e : core::io::pointFileExtensions())
+        if (core::io::isReadable(e.format) == readable) list += " ." + std::string(e.extension);
+    return list;
+}
+
 } // namespace
 
 int runInfo(const std::vector<std::string>& args)
@@ -59,6 +69,8 @@ int runInfo(const std::vector<std::string>& args)
     if (cl.helpRequested()) {
         std::cout << "Format, point count, bounds and attributes of a point file; for a .poct octree: depth,\n"
                      "normal code, root box, cells per level, bytes per cell and attribute layers.\n"
+                  << "Point files:" << extensionList(true) << " (recognised and refused:" << extensionList(false)
+                  << ").\n"
                   << cl.usage();
         return ExitOk;
     }

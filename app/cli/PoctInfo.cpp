@@ -3,13 +3,13 @@
 #include "CommandLine.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/octree/PackedOctree.h"
 
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <cstdio>
 #include <fstream>
 #include <iostream>
@@ -118,9 +118,7 @@ void printText(const nlohmann::json& j)
 
 bool isPoctFile(const std::filesystem::path& path)
 {
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext == ".poct" || core::cloud::isPoctPath(path);
+    return core::io::hasPoctExtension(path) || core::cloud::isPoctPath(path);
 }
 
 int runPoctInfo(const std::string& file, bool json)

@@ -4,53 +4,63 @@
 #include "ConsoleProgress.h"
 
 #include <cstdio>
-#include <cstring>
 #include <string>
 #include <vector>
 
 namespace {
 
-void printUsage(std::FILE* out)
+using namespace stylos::cli;
+
+struct Command {
+    const char* name;
+    int (*run)(const std::vector<std::string>&);
+    const char* synopsis; ///< the left column of the command list
+    const char* summary;
+};
+
+constexpr Command Commands[] = {
+    {"info", runInfo, "info FILE", "format, point count, bounds and attributes of a point file;\n"
+                                   "                         depth, cells per level and bytes of a .poct octree"},
+    {"generate", runGenerate, "generate KIND -o OUT", "synthetic scan with known truth: drum, omphalos or fragment"},
+    {"normals", runNormals, "normals IN -o OUT.ply", "estimate normals (k-nearest PCA) for a scan that has none"},
+    {"build", runBuild, "build IN -o OUT.poct", "build the packed point octree of a scan (or of --synthetic-drum N)"},
+    {"unroll", runUnroll, "unroll IN -o OUT.png", "the développée of a drum: fit, unroll, fill holes, shade (skydome)"},
+    {"ao", runAo, "ao IN -o OUT.ply|poct", "3D skydome (ambient occlusion) of the octree's cells"},
+};
+
+void printUsage()
 {
-    std::fputs("usage: stylos-cli COMMAND [ARGS] (stylos-cli COMMAND --help for details)\n\n"
-               "commands:\n"
-               "  info FILE              format, point count, bounds and attributes of a point file;\n"
-               "                         depth, cells per level and bytes of a .poct octree\n"
-               "  generate KIND -o OUT   synthetic scan with known truth: drum, omphalos or fragment\n"
-               "  normals IN -o OUT.ply  estimate normals (k-nearest PCA) for a scan that has none\n"
-               "  build IN -o OUT.poct   build the packed point octree of a scan (or of --synthetic-drum N)\n"
-               "  unroll IN -o OUT.png   the développée of a drum: fit, unroll, fill holes, shade (skydome)\n"
-               "  ao IN -o OUT.ply|poct  3D skydome (ambient occlusion) of the octree's cells\n",
-               out);
+    std::puts("usage: stylos-cli COMMAND [ARGS] (stylos-cli COMMAND --help for details)\n\ncommands:");
+    for (const Command& c : Commands) std::printf("  %-23s%s\n", c.synopsis, c.summary);
+}
+
+/** One line on stderr naming the problem and the commands; the usage-error exit code. */
+int commandError(const std::string& problem)
+{
+    std::string names;
+    for (const Command& c : Commands) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    std::fprintf(stderr, "stylos-cli: %s (commands: %s; stylos-cli --help for details)\n", problem.c_str(),
+                 names.c_str());
+    return ExitUsage;
 }
 
 } // namespace
 
 int main(int argc, char** argv)
 {
-    using namespace stylos::cli;
-    if (argc < 2) {
-        printUsage(stderr);
-        return ExitUsage;
-    }
+    if (argc < 2) return commandError("no command given");
     const std::string command = argv[1];
     const std::vector<std::string> args(argv + 2, argv + argc);
     installInterruptHandler();
     if (command == "--help" || command == "-h" || command == "help") {
-        printUsage(stdout);
+        printUsage();
         return ExitOk;
     }
     if (command == "--version") {
         std::printf("stylos-cli %s\n", STYLOS_VERSION);
         return ExitOk;
     }
-    if (command == "info") return runInfo(args);
-    if (command == "generate") return runGenerate(args);
-    if (command == "normals") return runNormals(args);
-    if (command == "build") return runBuild(args);
-    if (command == "unroll") return runUnroll(args);
-    if (command == "ao") return runAo(args);
-    std::fprintf(stderr, "stylos-cli: unknown command \"%s\"\n", command.c_str());
-    printUsage(stderr);
-    return ExitUsage;
+    for (const Command& c : Commands)
+        if (command == c.name) return c.run(args);
+    return commandError("unknown command \"" + command + "\"");
 }

@@ -1,5 +1,7 @@
 #include "CommandLine.h"
 
+#include "stylos/core/io/PointFileFormat.h"
+
 #include <QCommandLineParser>
 #include <QCoreApplication>
 
@@ -41,10 +43,12 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     parser.addOption(grab);
     parser.addOption(orbit);
     parser.addOption(pose);
-    parser.addPositionalArgument(QStringLiteral("files"),
-                                 tr("A project (.stylos), or scans to import (PLY, LAS, XYZ, ASC, CSV, PTS, TXT, "
-                                    "OBJ, POCT)."),
-                                 QStringLiteral("[files...]"));
+    QStringList formats;
+    for (const std::string& extension : core::io::importableExtensions())
+        formats << QString::fromStdString(extension).toUpper();
+    parser.addPositionalArgument(
+        QStringLiteral("files"), tr("A project (.stylos), or scans to import (%1).").arg(formats.join(QStringLiteral(", "))),
+        QStringLiteral("[files...]"));
     parser.process(app);
 
     CommandLine result;

@@ -325,14 +325,12 @@ void MainWindow::changeEvent(QEvent* event)
 
 void MainWindow::dragEnterEvent(QDragEnterEvent* event)
 {
-    if (event->mimeData()->hasUrls()) event->acceptProposedAction();
+    if (!ProjectActions::openableFiles(event->mimeData()->urls()).isEmpty()) event->acceptProposedAction();
 }
 
 void MainWindow::dropEvent(QDropEvent* event)
 {
-    QStringList paths;
-    for (const QUrl& url : event->mimeData()->urls())
-        if (url.isLocalFile()) paths << url.toLocalFile();
+    const QStringList paths = ProjectActions::openableFiles(event->mimeData()->urls());
     if (paths.isEmpty()) return;
     event->acceptProposedAction();
     m_projectActions->openPaths(paths);

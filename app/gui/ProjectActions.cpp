@@ -100,6 +100,16 @@ void ProjectActions::openPaths(const QStringList& paths)
     if (!scans.isEmpty()) m_importer.importFiles(scans);
 }
 
+QStringList ProjectActions::openableFiles(const QList<QUrl>& urls)
+{
+    QStringList files;
+    for (const QUrl& url : urls) {
+        const QString path = url.toLocalFile();
+        if (url.isLocalFile() && (isProject(path) || widgets::ScanImporter::canImport(path))) files << path;
+    }
+    return files;
+}
+
 bool ProjectActions::openProject(const QString& path)
 {
     if (!maybeSave()) return false;

@@ -7,6 +7,7 @@
  */
 #include <QObject>
 #include <QStringList>
+#include <QUrl>
 
 class QAction;
 class QMenu;
@@ -37,6 +38,11 @@ public:
      *        one), or point files and `.poct` octrees, imported into the current project.
      */
     void openPaths(const QStringList& paths);
+    /**
+     * @brief The local files among @p urls that openPaths() takes by their extension: `.stylos` projects,
+     *        and the point files and octrees of core::io::importableExtensions() (what a drop accepts).
+     */
+    static QStringList openableFiles(const QList<QUrl>& urls);
     /** @brief Opens the project @p path (after asking to save changes); false when it failed or was declined. */
     bool openProject(const QString& path);
     /** @brief Saves (asking for a file when never saved); false when it failed or was cancelled. */

@@ -1,4 +1,5 @@
-// XXH64 against published test vectors, incremental hashing in arbitrary pieces, and its speed.
+// XXH64 (libxxhash behind our API) against published test vectors, incremental hashing in arbitrary
+// pieces, copies, and its speed. Golden digests of real files: Hash64FixtureTest.cpp.
 #include "stylos/core/util/Hash64.h"
 
 #include <gtest/gtest.h>
@@ -77,6 +78,24 @@ TEST(Hash64, IncrementalEqualsOneShotForAnySplit)
     EXPECT_EQ(h.digest(), ofString("ab"));
     h.update("c", 1);
     EXPECT_EQ(h.digest(), ofString("abc"));
+}
+
+TEST(Hash64, CopiesHashOnIndependently)
+{
+    Hash64 a(7);
+    a.update("abc", 3);
+    Hash64 b = a;
+    b.update("def", 3);
+    EXPECT_EQ(a.digest(), ofString("abc", 7));
+    EXPECT_EQ(b.digest(), ofString("abcdef", 7));
+    EXPECT_EQ(b.length(), 6u);
+    a = b;
+    a.update("g", 1);
+    EXPECT_EQ(a.digest(), ofString("abcdefg", 7));
+    EXPECT_EQ(b.digest(), ofString("abcdef", 7));
+    const Hash64 moved = std::move(a);
+    EXPECT_EQ(moved.digest(), ofString("abcdefg", 7));
+    EXPECT_EQ(moved.length(), 7u);
 }
 
 TEST(Hash64, EveryByteMatters)

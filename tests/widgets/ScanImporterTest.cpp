@@ -1,7 +1,10 @@
 // ScanImporter: scans become packed octrees in background tasks and fragments through the undo stack;
-// a broken file gives one message naming it; a cancelled import adds nothing and leaves no file.
+// a broken file gives one message naming it; a cancelled import adds nothing and leaves no file; the
+// file dialog's filter and what a drop accepts come from core::io's one list of extensions.
 #include "SceneTestSupport.h"
 #include "WidgetTestSupport.h"
+
+#include "ProjectActions.h"
 
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/widgets/ScanImporter.h"
@@ -29,6 +32,7 @@ private Q_SLOTS:
     void opensAPoctDirectly();
     void aBrokenFileIsNamedAndNothingIsAdded();
     void cancelLeavesNothing();
+    void dialogsAndDropsUseTheCoreListOfExtensions();
 
 private:
     /** A fresh folder for one test's outputs. */
@@ -221,6 +225,25 @@ void ScanImporterTest::cancelLeavesNothing()
     QCOMPARE(doc.undoStack()->count(), 0);
     QCOMPARE(stylos::test::filesUnder(cache), QStringList());
     QCOMPARE(stylos::test::filesUnder(folder), inputs);
+}
+
+void ScanImporterTest::dialogsAndDropsUseTheCoreListOfExtensions()
+{
+    QCOMPARE(ScanImporter::fileFilter(),
+             QStringLiteral("Scans and octrees (*.ply *.las *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.poct);;"
+                            "Packed octrees (*.poct);;All files (*)"));
+    QVERIFY(ScanImporter::canImport(QStringLiteral("/data/Drum.PLY")));
+    QVERIFY(ScanImporter::canImport(QStringLiteral("scan.neu")));
+    QVERIFY(ScanImporter::canImport(QStringLiteral("drum.poct")));
+    QVERIFY(!ScanImporter::canImport(QStringLiteral("scan.laz")));
+    QVERIFY(!ScanImporter::canImport(QStringLiteral("notes.pdf")));
+    // A drop takes projects and importable files, local ones only, in their order.
+    auto local = [](const char* path) { return QUrl::fromLocalFile(QString::fromLatin1(path)); };
+    const QList<QUrl> urls{local("/d/a.las"), local("/d/b.pdf"), QUrl(QStringLiteral("https://example.org/c.ply")),
+                           local("/d/p.stylos"), local("/d/e.e57"), local("/d/f.Poct")};
+    QCOMPARE(stylos::app::ProjectActions::openableFiles(urls),
+             (QStringList{QStringLiteral("/d/a.las"), QStringLiteral("/d/p.stylos"), QStringLiteral("/d/f.Poct")}));
+    QVERIFY(stylos::app::ProjectActions::openableFiles({local("/d/b.pdf")}).isEmpty());
 }
 
 STYLOS_WIDGET_TEST_MAIN(ScanImporterTest)

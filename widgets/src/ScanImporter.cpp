@@ -1,5 +1,6 @@
 #include "stylos/widgets/ScanImporter.h"
 
+#include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/widgets/ErrorText.h"
 #include "stylos/widgets/SceneDocument.h"
@@ -24,7 +25,7 @@ struct ImportResult {
 
 bool isPoct(const QString& path)
 {
-    return QFileInfo(path).suffix().compare(QStringLiteral("poct"), Qt::CaseInsensitive) == 0;
+    return core::io::hasPoctExtension(path.toStdString());
 }
 
 } // namespace
@@ -47,8 +48,16 @@ QString ScanImporter::outputDirectory() const
 
 QString ScanImporter::fileFilter()
 {
-    return tr("Scans and octrees (*.ply *.las *.xyz *.asc *.csv *.pts *.txt *.obj *.poct)") + QStringLiteral(";;") +
+    QStringList patterns;
+    for (const std::string& extension : core::io::importableExtensions())
+        patterns << QStringLiteral("*.") + QString::fromStdString(extension);
+    return tr("Scans and octrees (%1)").arg(patterns.join(QLatin1Char(' '))) + QStringLiteral(";;") +
            tr("Packed octrees (*.poct)") + QStringLiteral(";;") + tr("All files (*)");
+}
+
+bool ScanImporter::canImport(const QString& path)
+{
+    return core::io::hasImportableExtension(path.toStdString());
 }
 
 int ScanImporter::importFiles(const QStringList& paths)

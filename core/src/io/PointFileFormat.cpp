@@ -16,6 +16,13 @@ namespace fs = std::filesystem;
 
 namespace {
 
+constexpr PointFileExtension Extensions[] = {
+    {"ply", PointFormat::Ply}, {"las", PointFormat::Las},   {"xyz", PointFormat::Text}, {"xyzn", PointFormat::Text},
+    {"asc", PointFormat::Text}, {"csv", PointFormat::Text}, {"pts", PointFormat::Text}, {"txt", PointFormat::Text},
+    {"neu", PointFormat::Text}, {"obj", PointFormat::Obj},  {"laz", PointFormat::Laz},  {"e57", PointFormat::E57},
+};
+
+/** ".PLY" → ".ply" (with the dot, as the magic-byte checks compare it). */
 std::string lowerExtension(const fs::path& path)
 {
     std::string ext = path.extension().string();
@@ -23,7 +30,19 @@ std::string lowerExtension(const fs::path& path)
     return ext;
 }
 
-PointFormat formatFromMagic(const char* bytes, std::size_t n, const std::string& ext)
+/** The readable formats' names for a message: "ply, las, ..., neu or obj". */
+std::string readableExtensionsText()
+{
+    std::vector<std::string> names;
+    for (const auto& e : Extensions)
+        if (isReadable(e.format)) names.emplace_back(e.extension);
+    std::string text;
+    for (std::size_t i = 0; i < names.size(); ++i)
+        text += (i == 0 ? "" : i + 1 == names.size() ? " or " : ", ") + ("." + names[i]);
+    return text;
+}
+
+PointFormat formatFromMagic(const char* bytes, std::size_t n, PointFormat byExtension)
 {
     auto startsWith = [&](const char* magic) {
         const std::size_t m = std::strlen(magic);
@@ -33,38 +52,64 @@ PointFormat formatFromMagic(const char* bytes, std::size_t n, const std::string&
     if (startsWith("ASTM-E57")) return PointFormat::E57;
     if (startsWith("LASF")) {
         // LAZ keeps the LAS header but sets bit 7 (or 6) of the point data format byte (offset 104).
-        if (ext == ".laz") return PointFormat::Laz;
+        if (byExtension == PointFormat::Laz) return PointFormat::Laz;
         if (n > 104 && (static_cast<unsigned char>(bytes[104]) & 0xC0) != 0) return PointFormat::Laz;
         return PointFormat::Las;
     }
     return PointFormat::Unknown;
 }
 
-PointFormat formatFromExtension(const std::string& ext)
+} // namespace
+
+std::span<const PointFileExtension> pointFileExtensions()
 {
-    if (ext == ".ply") return PointFormat::Ply;
-    if (ext == ".las") return PointFormat::Las;
-    if (ext == ".laz") return PointFormat::Laz;
-    if (ext == ".e57") return PointFormat::E57;
-    if (ext == ".obj") return PointFormat::Obj;
-    if (ext == ".xyz" || ext == ".asc" || ext == ".csv" || ext == ".pts" || ext == ".txt" || ext == ".xyzn" ||
-        ext == ".neu")
-        return PointFormat::Text;
+    return Extensions;
+}
+
+bool isReadable(PointFormat format)
+{
+    return format == PointFormat::Ply || format == PointFormat::Las || format == PointFormat::Text ||
+           format == PointFormat::Obj;
+}
+
+std::vector<std::string> importableExtensions()
+{
+    std::vector<std::string> out;
+    for (const auto& e : Extensions)
+        if (isReadable(e.format)) out.emplace_back(e.extension);
+    out.emplace_back(PoctExtension);
+    return out;
+}
+
+PointFormat formatFromExtension(const fs::path& path)
+{
+    const std::string ext = lowerExtension(path);
+    for (const auto& e : Extensions)
+        if (ext.size() == e.extension.size() + 1 && std::string_view(ext).substr(1) == e.extension) return e.format;
     return PointFormat::Unknown;
 }
 
-} // namespace
+bool hasPoctExtension(const fs::path& path)
+{
+    const std::string ext = lowerExtension(path);
+    return ext.size() == PoctExtension.size() + 1 && std::string_view(ext).substr(1) == PoctExtension;
+}
+
+bool hasImportableExtension(const fs::path& path)
+{
+    return hasPoctExtension(path) || isReadable(formatFromExtension(path));
+}
 
 PointFormat detectPointFormat(const fs::path& path)
 {
-    const std::string ext = lowerExtension(path);
+    const PointFormat byExtension = formatFromExtension(path);
     auto file = BufferedFile::open(path, 4096);
     if (file) {
         const std::size_t n = file->fill(128);
-        const PointFormat byMagic = formatFromMagic(file->data(), n, ext);
+        const PointFormat byMagic = formatFromMagic(file->data(), n, byExtension);
         if (byMagic != PointFormat::Unknown) return byMagic;
     }
-    return formatFromExtension(ext);
+    return byExtension;
 }
 
 Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const ReadOptions& options)
@@ -73,11 +118,11 @@ Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const
     if (!file) return file.error();
     if (file->size() == 0) return Error::at(ErrorCode::Empty, path.string(), "", "the file is empty (0 bytes)");
 
-    const std::string ext = lowerExtension(path);
+    const PointFormat byExtension = formatFromExtension(path);
     const std::size_t n = file->fill(128);
-    PointFormat format = formatFromMagic(file->data(), n, ext);
+    PointFormat format = formatFromMagic(file->data(), n, byExtension);
     if (format == PointFormat::Unknown) {
-        format = formatFromExtension(ext);
+        format = byExtension;
         // A file named .ply/.las that lacks the magic is corrupt, not another format.
         if (format == PointFormat::Ply)
             return Error::at(ErrorCode::Malformed, path.string(), "byte 0",
@@ -104,7 +149,8 @@ Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const
     case PointFormat::Unknown: break;
     }
     return Error::at(ErrorCode::UnknownFormat, path.string(), "",
-                     "unknown point file format (Stylos reads PLY, LAS, XYZ/ASC/CSV/PTS/TXT text and OBJ)");
+                     "unknown point file format (Stylos reads PLY, LAS, text and OBJ files: " +
+                         readableExtensionsText() + ")");
 }
 
 } // namespace stylos::core::io

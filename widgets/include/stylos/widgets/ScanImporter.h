@@ -47,8 +47,13 @@ public:
     /** @brief Imports still running or waiting. */
     int pending() const { return static_cast<int>(m_pending.size()); }
 
-    /** @brief The file dialog's name filter: every supported point format and `.poct`. */
+    /**
+     * @brief The file dialog's name filter: every importable extension (core::io::importableExtensions(),
+     *        the readable point formats and `.poct`), then `.poct` alone, then all files.
+     */
     static QString fileFilter();
+    /** @brief Whether @p path's extension is importable (what a drop onto the window accepts). */
+    static bool canImport(const QString& path);
 
 Q_SIGNALS:
     /** @brief A fragment was added (one undo step). */

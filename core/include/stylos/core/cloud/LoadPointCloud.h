@@ -3,7 +3,7 @@
  * @brief Reads a whole cloud into memory from any supported point file or from the cells of a packed
  *        octree (.poct), for whole-cloud algorithms (the surface fit, unrolling).
  *
- * Point files (PLY, LAS, XYZ/PTS/TXT, OBJ) are streamed through io::openPointReader; positions are
+ * Point files (io::pointFileExtensions()) are streamed through io::openPointReader; positions are
  * kept relative to the first point (rounded to the metre, so the origin is a round number) and the
  * file's normals are kept when it has them. A `.poct` (recognised by its signature, whatever its
  * extension) gives one point per cell of the chosen level — its centre and its averaged normal —

@@ -1,17 +1,55 @@
 #pragma once
 /** @file
  * @brief Recognising a point file's format (by its first bytes, then its extension) and opening the
- *        right streaming reader for it.
+ *        right streaming reader for it; the one list of point-file extensions that the readers, the
+ *        workbench's file dialogs and drops, and stylos-cli use. Pure functions, thread-safe.
  */
 #include "stylos/core/io/PointReader.h"
 
 #include <filesystem>
 #include <memory>
+#include <span>
 #include <string>
+#include <string_view>
+#include <vector>
 
 namespace stylos::core::io {
 
 enum class PointFormat { Ply, Las, Laz, E57, Text, Obj, Unknown };
+
+/** @brief A file name extension of point files (lower case, no dot) and the format it names. */
+struct PointFileExtension {
+    std::string_view extension;
+    PointFormat format;
+};
+
+/**
+ * @brief Every point-file extension Stylos knows, in the order the file dialogs list them: first those
+ *        the readers open (ply las xyz xyzn asc csv pts txt neu obj), then laz and e57, recognised so
+ *        that openPointReader() can say how to convert them.
+ */
+std::span<const PointFileExtension> pointFileExtensions();
+
+/** @brief Whether the readers open @p format (PLY, LAS, text, OBJ). */
+bool isReadable(PointFormat format);
+
+/** @brief The extension of packed octree files (`.poct`), lower case, no dot. */
+inline constexpr std::string_view PoctExtension = "poct";
+
+/**
+ * @brief What a user can import or give wherever a cloud is read: the readable point-file extensions,
+ *        then "poct" (lower case, no dot).
+ */
+std::vector<std::string> importableExtensions();
+
+/** @brief The format that @p path's extension names (any case), Unknown for any other (.poct included). */
+PointFormat formatFromExtension(const std::filesystem::path& path);
+
+/** @brief Whether @p path ends in .poct (any case). Says nothing of its content (see cloud::isPoctPath). */
+bool hasPoctExtension(const std::filesystem::path& path);
+
+/** @brief Whether @p path's extension is importable: a readable point format or .poct (any case). */
+bool hasImportableExtension(const std::filesystem::path& path);
 
 /** @brief Options that some readers take. */
 struct ReadOptions {

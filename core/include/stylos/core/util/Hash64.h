@@ -1,15 +1,17 @@
 #pragma once
 /** @file
- * @brief XXH64, the 64-bit xxHash of Yann Collet (published specification, "xxHash fast digest
- *        algorithm", version 0.1.1): a fast non-cryptographic checksum, used for the sections of
- *        `.poct` files. Implemented here from the specification; agrees with the reference on its
- *        published test vectors (tests/core/Hash64Test.cpp). Several GB/s on one core.
+ * @brief XXH64, the 64-bit xxHash of Yann Collet: a fast non-cryptographic checksum, used for the
+ *        sections of `.poct` files. Computed by Debian's libxxhash (linked privately to stylos_core);
+ *        the digests are those of the published specification, golden values and the published test
+ *        vectors in tests/core/Hash64Test.cpp. Several GB/s on one core.
  *        Pure functions and a small value type; thread-safe (one Hash64 object per thread).
  */
-#include <array>
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <span>
+
+struct XXH64_state_s; // libxxhash's streaming state, opaque here
 
 namespace stylos::core {
 
@@ -25,11 +27,17 @@ inline std::uint64_t xxh64(std::span<const std::uint8_t> bytes, std::uint64_t se
 /**
  * @brief Incremental XXH64: feed the input in pieces of any size with update(); digest() gives the
  *        same value as xxh64() of the concatenation (and may be called at any point; update() may
- *        continue after it).
+ *        continue after it). Copies hash on independently. Throws std::bad_alloc when the state
+ *        cannot be allocated.
  */
 class Hash64 {
 public:
     explicit Hash64(std::uint64_t seed = 0);
+    ~Hash64();
+    Hash64(const Hash64& other);
+    Hash64& operator=(const Hash64& other);
+    Hash64(Hash64&& other) noexcept = default;
+    Hash64& operator=(Hash64&& other) noexcept = default;
 
     /** @brief Appends @p size bytes at @p data (null allowed when @p size is 0). */
     void update(const void* data, std::size_t size);
@@ -42,10 +50,10 @@ public:
     std::uint64_t length() const { return m_length; }
 
 private:
-    std::uint64_t m_seed;
-    std::array<std::uint64_t, 4> m_acc;
-    std::array<std::uint8_t, 32> m_buffer{};
-    std::size_t m_buffered = 0;
+    struct FreeState {
+        void operator()(XXH64_state_s* state) const;
+    };
+    std::unique_ptr<XXH64_state_s, FreeState> m_state;
     std::uint64_t m_length = 0;
 };
 
