@@ -329,14 +329,6 @@
         <translation>Κύρια γραμμή εργαλείων</translation>
     </message>
     <message>
-        <source>Tasks</source>
-        <translation>Εργασίες</translation>
-    </message>
-    <message>
-        <source>Développée</source>
-        <translation>Ανάπτυγμα</translation>
-    </message>
-    <message>
         <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
         <translation>Η τρισδιάστατη προβολή απαιτεί OpenGL 3.3 (core profile), το οποίο δεν παρέχει αυτή η οθόνη.</translation>
     </message>
@@ -500,7 +492,7 @@
     </message>
 </context>
 <context>
-    <name>stylos::widgets::DeveloppeeDock</name>
+    <name>stylos::widgets::DeveloppeePanel</name>
     <message>
         <source>%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s</source>
         <translation>%1: %2, ακτίνα %3 mm, RMS %4 mm, %5 % σημεία εντός ανοχής· %6 × %7 εικονοστοιχεία των %8 mm· %9 s</translation>
@@ -952,6 +944,20 @@
     <message>
         <source>The 3D view needs OpenGL 3.3: %1</source>
         <translation>Η τρισδιάστατη προβολή απαιτεί OpenGL 3.3: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::TasksDock</name>
+    <message>
+        <source>Tasks</source>
+        <translation>Εργασίες</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DeveloppeeDock</name>
+    <message>
+        <source>Développée</source>
+        <translation>Ανάπτυγμα</translation>
     </message>
 </context>
 </TS>

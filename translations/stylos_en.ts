@@ -329,14 +329,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Tasks</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Développée</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
         <translation type="unfinished"></translation>
     </message>
@@ -500,7 +492,7 @@
     </message>
 </context>
 <context>
-    <name>stylos::widgets::DeveloppeeDock</name>
+    <name>stylos::widgets::DeveloppeePanel</name>
     <message>
         <source>%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s</source>
         <translation type="unfinished"></translation>
@@ -951,6 +943,20 @@
     <name>stylos::widgets::ViewportWidget</name>
     <message>
         <source>The 3D view needs OpenGL 3.3: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::TasksDock</name>
+    <message>
+        <source>Tasks</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DeveloppeeDock</name>
+    <message>
+        <source>Développée</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -329,14 +329,6 @@
         <translation>Barre d’outils principale</translation>
     </message>
     <message>
-        <source>Tasks</source>
-        <translation>Tâches</translation>
-    </message>
-    <message>
-        <source>Développée</source>
-        <translation>Développée</translation>
-    </message>
-    <message>
         <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
         <translation>La vue 3D nécessite OpenGL 3.3 (profil core), que cet affichage ne fournit pas.</translation>
     </message>
@@ -500,7 +492,7 @@
     </message>
 </context>
 <context>
-    <name>stylos::widgets::DeveloppeeDock</name>
+    <name>stylos::widgets::DeveloppeePanel</name>
     <message>
         <source>%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s</source>
         <translation>%1 : %2, rayon %3 mm, RMS %4 mm, %5 % de points retenus ; %6 × %7 pixels de %8 mm ; %9 s</translation>
@@ -952,6 +944,20 @@
     <message>
         <source>The 3D view needs OpenGL 3.3: %1</source>
         <translation>La vue 3D nécessite OpenGL 3.3 : %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::TasksDock</name>
+    <message>
+        <source>Tasks</source>
+        <translation>Tâches</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DeveloppeeDock</name>
+    <message>
+        <source>Développée</source>
+        <translation>Développée</translation>
     </message>
 </context>
 </TS>

@@ -2,7 +2,7 @@
 
 #include "stylos/core/scene/SceneEigen.h"
 
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/DeveloppeeView.h"
 #include "stylos/widgets/SceneDocument.h"
@@ -25,7 +25,7 @@ std::optional<core::unroll::Axis> axisGuide(const core::scene::Fragment& fragmen
 } // namespace
 
 DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks,
-                               widgets::DeveloppeeDock& dock, widgets::ViewportWidget* viewport, QObject* parent)
+                               widgets::DeveloppeePanel& dock, widgets::ViewportWidget* viewport, QObject* parent)
     : QObject(parent), m_document(document), m_jobs(document), m_dock(dock), m_viewport(viewport)
 {
     Q_ASSERT_X(&tasks == &document.tasks(), "DeveloppeeLink", "the jobs run on the document's TaskManager");
@@ -33,7 +33,7 @@ DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskMa
     connect(&m_jobs, &widgets::FragmentJobs::ended, this, [this](quint64 id, bool) {
         if (m_dock.fragmentId() == id) m_dock.setBusy(m_jobs.isRunning(id));
     });
-    connect(&dock, &widgets::DeveloppeeDock::computeRequested, this, &DeveloppeeLink::compute);
+    connect(&dock, &widgets::DeveloppeePanel::computeRequested, this, &DeveloppeeLink::compute);
     connect(dock.view(), &widgets::DeveloppeeView::pointPicked, this, &DeveloppeeLink::markInView);
     if (viewport)
         connect(viewport, &widgets::ViewportWidget::pointPicked, this,
@@ -83,7 +83,7 @@ void DeveloppeeLink::compute()
         const widgets::DeveloppeeResult result = future.result();
         if (result.ok()) m_document.setDeveloppee(key, std::make_shared<const widgets::DeveloppeeResult>(result));
         if (m_dock.fragmentId() == key) m_dock.showResult(result);
-        if (result.ok()) Q_EMIT finished(widgets::DeveloppeeDock::fitSummary(result), false);
+        if (result.ok()) Q_EMIT finished(widgets::DeveloppeePanel::fitSummary(result), false);
         else Q_EMIT finished(result.error, true);
     };
     if (m_jobs.start<widgets::DeveloppeeResult>(id, job.label(), job, deliver)) m_dock.setBusy(true);

@@ -20,7 +20,7 @@
 
 
 namespace stylos::widgets {
-class DeveloppeeDock;
+class DeveloppeePanel;
 struct DeveloppeeResult;
 class SceneDocument;
 class TaskManager;
@@ -34,7 +34,7 @@ class DeveloppeeLink : public QObject {
 
 public:
     /** None owned; @p viewport may be null (no OpenGL: no 3D markers); @p tasks must be the document's. */
-    DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks, widgets::DeveloppeeDock& dock,
+    DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks, widgets::DeveloppeePanel& dock,
                    widgets::ViewportWidget* viewport, QObject* parent = nullptr);
 
     /** @brief The fragment Compute works on (the Scene dock's current one); NoFragment for none. */
@@ -58,7 +58,7 @@ private:
 
     widgets::SceneDocument& m_document;
     widgets::FragmentJobs m_jobs;
-    widgets::DeveloppeeDock& m_dock;
+    widgets::DeveloppeePanel& m_dock;
     QPointer<widgets::ViewportWidget> m_viewport;
     core::scene::FragmentId m_fragment = core::scene::NoFragment;
 };

@@ -1,23 +1,24 @@
 #include "MainWindow.h"
 
 #include "DeveloppeeLink.h"
+#include "DeveloppeeDock.h"
 #include "LogDock.h"
 #include "MainActions.h"
 #include "ProjectActions.h"
 #include "PropertiesDock.h"
 #include "SceneDock.h"
+#include "TasksDock.h"
 #include "StatusReadout.h"
 #include "Translations.h"
 #include "ViewportSync.h"
 #include "DisplaySettingsWidget.h"
 #include "stylos/widgets/DemoScene.h"
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 #include "stylos/widgets/DeveloppeeSettings.h"
 #include "stylos/widgets/ScanImporter.h"
 #include "stylos/widgets/SceneDocument.h"
 #include "stylos/widgets/SceneTreeModel.h"
 #include "stylos/widgets/SkydomeRunner.h"
-#include "stylos/widgets/TaskListWidget.h"
 #include "stylos/widgets/TaskManager.h"
 #include "stylos/widgets/ViewportWidget.h"
 
@@ -102,21 +103,13 @@ void MainWindow::createDocks()
     m_propertiesDock = new PropertiesDock(*m_document, m_viewport, this);
     addDockWidget(Qt::LeftDockWidgetArea, m_propertiesDock);
 
-    m_developpee = new widgets::DeveloppeeDock;
-    m_developpee->setObjectName(QStringLiteral("developpee"));
-    QSettings settings;
-    m_developpee->setSettings(widgets::DeveloppeeSettings::load(settings));
-    m_developpeeDock = new QDockWidget(this);
-    m_developpeeDock->setObjectName(QStringLiteral("developpeeDock"));
-    m_developpeeDock->setWidget(m_developpee);
+    m_developpeeDock = new DeveloppeeDock(this);
     // A développée is wide (a drum's circumference by its height): it gets the bottom, under the 3D view.
     addDockWidget(Qt::BottomDockWidgetArea, m_developpeeDock);
-    m_developpeeLink = new DeveloppeeLink(*m_document, *m_tasks, *m_developpee, m_viewport, this);
+    m_developpeeLink = new DeveloppeeLink(*m_document, *m_tasks, m_developpeeDock->panel(), m_viewport, this);
     connect(m_developpeeLink, &DeveloppeeLink::finished, this, &MainWindow::report);
 
-    m_tasksDock = new QDockWidget(this);
-    m_tasksDock->setObjectName(QStringLiteral("tasksDock"));
-    m_tasksDock->setWidget(new widgets::TaskListWidget(*m_tasks));
+    m_tasksDock = new TasksDock(*m_tasks, this);
     splitDockWidget(m_developpeeDock, m_tasksDock, Qt::Horizontal);
     m_logDock = new LogDock(this);
     tabifyDockWidget(m_tasksDock, m_logDock);
@@ -139,7 +132,8 @@ void MainWindow::createMenus()
     m_actions = new MainActions(*m_document, m_viewport, m_translations, *this);
     QMenu* viewMenu = m_actions->populate(*menuBar());
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_propertiesDock),
-                              m_developpeeDock, m_tasksDock, static_cast<QDockWidget*>(m_logDock)})
+                              static_cast<QDockWidget*>(m_developpeeDock), static_cast<QDockWidget*>(m_tasksDock),
+                              static_cast<QDockWidget*>(m_logDock)})
         viewMenu->addAction(dock->toggleViewAction());
 
     m_toolBar = addToolBar(QString());
@@ -297,6 +291,8 @@ void MainWindow::updateTitle()
     setWindowModified(m_document->isModified());
 }
 
+widgets::DeveloppeePanel& MainWindow::developpeePanel() const { return m_developpeeDock->panel(); }
+
 void MainWindow::closeEvent(QCloseEvent* event)
 {
     if (!m_projectActions->maybeSave()) {
@@ -306,7 +302,7 @@ void MainWindow::closeEvent(QCloseEvent* event)
     QSettings settings;
     settings.setValue(GeometryKey, saveGeometry());
     settings.setValue(StateKey, saveState());
-    m_developpee->settings().save(settings);
+    m_developpeeDock->saveSettings();
     // Every job checks for Cancel between steps: this returns within a fraction of a second.
     m_tasks->cancelAllAndWait();
     event->accept();
@@ -340,8 +336,6 @@ void MainWindow::retranslateUi()
 {
     m_fileMenu->setTitle(tr("&File"));
     m_toolBar->setWindowTitle(tr("Main toolbar"));
-    m_tasksDock->setWindowTitle(tr("Tasks"));
-    m_developpeeDock->setWindowTitle(tr("Développée"));
     if (auto* message = findChild<QLabel*>(QStringLiteral("noViewport")))
         message->setText(tr("The 3D view needs OpenGL 3.3 (core profile), which this display does not offer."));
 }

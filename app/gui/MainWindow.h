@@ -13,7 +13,7 @@ class QToolBar;
 
 namespace stylos::widgets {
 class DemoScene;
-class DeveloppeeDock;
+class DeveloppeePanel;
 class ScanImporter;
 class SceneDocument;
 class SkydomeRunner;
@@ -23,6 +23,7 @@ class ViewportWidget;
 
 namespace stylos::app {
 
+class DeveloppeeDock;
 class DeveloppeeLink;
 class LogDock;
 class MainActions;
@@ -30,6 +31,7 @@ class ProjectActions;
 class PropertiesDock;
 class SceneDock;
 class StatusReadout;
+class TasksDock;
 class Translations;
 class ViewportSync;
 
@@ -53,7 +55,7 @@ public:
     ViewportSync* viewportSync() const { return m_sync; }
     SceneDock& sceneDock() const { return *m_sceneDock; }
     PropertiesDock& propertiesDock() const { return *m_propertiesDock; }
-    widgets::DeveloppeeDock& developpeeDock() const { return *m_developpee; }
+    widgets::DeveloppeePanel& developpeePanel() const;
     DeveloppeeLink& developpeeLink() const { return *m_developpeeLink; }
     LogDock& logDock() const { return *m_logDock; }
     ProjectActions& projectActions() const { return *m_projectActions; }
@@ -97,9 +99,8 @@ private:
     ViewportSync* m_sync = nullptr;
     SceneDock* m_sceneDock = nullptr;
     PropertiesDock* m_propertiesDock = nullptr;
-    QDockWidget* m_tasksDock = nullptr;
-    QDockWidget* m_developpeeDock = nullptr;
-    widgets::DeveloppeeDock* m_developpee = nullptr;
+    TasksDock* m_tasksDock = nullptr;
+    DeveloppeeDock* m_developpeeDock = nullptr;
     DeveloppeeLink* m_developpeeLink = nullptr;
     LogDock* m_logDock = nullptr;
     ProjectActions* m_projectActions = nullptr;

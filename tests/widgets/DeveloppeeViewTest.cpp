@@ -1,10 +1,10 @@
-// DeveloppeeView and DeveloppeeDock on a hand-made développée (a cylinder's map, a height field with known
+// DeveloppeeView and DeveloppeePanel on a hand-made développée (a cylinder's map, a height field with known
 // heights and holes): a click emits the 3D point of the pixel's centre exactly, setMarker puts it back on
 // that pixel, the wheel zooms about the cursor, the readout reads the pixel, drags pan without picking; the
 // dock's Compute carries the bar's settings and its status shows the fit or the error.
 #include "WidgetTestSupport.h"
 
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/DeveloppeeView.h"
 
@@ -21,7 +21,7 @@ using stylos::core::shading::HeightField;
 using stylos::core::unroll::Axis;
 using stylos::core::unroll::Surface;
 using stylos::core::unroll::UnrollMap;
-using stylos::widgets::DeveloppeeDock;
+using stylos::widgets::DeveloppeePanel;
 using stylos::widgets::DeveloppeeResult;
 using stylos::widgets::DeveloppeeSettings;
 using stylos::widgets::DeveloppeeShading;
@@ -305,14 +305,14 @@ void DeveloppeeViewTest::readoutOfAKnownPixel()
 
 void DeveloppeeViewTest::dockComputeCarriesTheBarSettings()
 {
-    DeveloppeeDock dock;
+    DeveloppeePanel dock;
     auto* compute = dock.findChild<QPushButton*>(QStringLiteral("developpeeCompute"));
     auto* surface = dock.findChild<QComboBox*>(QStringLiteral("developpeeSurface"));
     auto* shading = dock.findChild<QComboBox*>(QStringLiteral("developpeeShading"));
     auto* directions = dock.findChild<QSpinBox*>(QStringLiteral("developpeeDirections"));
     auto* pixel = dock.findChild<QDoubleSpinBox*>(QStringLiteral("developpeePixelSize"));
     QVERIFY(compute && surface && shading && directions && pixel);
-    QSignalSpy requested(&dock, &DeveloppeeDock::computeRequested);
+    QSignalSpy requested(&dock, &DeveloppeePanel::computeRequested);
     QVERIFY(!compute->isEnabled()); // no fragment yet
     dock.setFragment(5, QStringLiteral("drum"), m_fixture->axis);
     QVERIFY(compute->isEnabled());
@@ -353,7 +353,7 @@ void DeveloppeeViewTest::dockComputeCarriesTheBarSettings()
 
 void DeveloppeeViewTest::dockShowsTheFitOrTheError()
 {
-    DeveloppeeDock dock;
+    DeveloppeePanel dock;
     dock.setFragment(FragmentId, QStringLiteral("drum"));
     dock.setBusy(true);
     DeveloppeeResult failed;

@@ -7,7 +7,7 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/scene/ProjectFile.h"
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 #include "stylos/widgets/DeveloppeeView.h"
 #include "stylos/widgets/FragmentJobs.h"
 #include "stylos/widgets/SceneDocument.h"
@@ -21,7 +21,7 @@
 #include <atomic>
 #include <memory>
 
-using stylos::widgets::DeveloppeeDock;
+using stylos::widgets::DeveloppeePanel;
 using stylos::widgets::FragmentJobs;
 using stylos::widgets::SceneDocument;
 using stylos::widgets::TaskManager;
@@ -155,7 +155,7 @@ void FragmentJobsTest::aDeveloppeeNeverAttachesToTheNextProject()
     TaskManager tasks;
     SceneDocument document(tasks);
     QVERIFY(openAndWait(document, m_projectA));
-    DeveloppeeDock dock;
+    DeveloppeePanel dock;
     stylos::app::DeveloppeeLink link(document, tasks, dock, nullptr);
     link.setFragment(1);
     auto slow = dock.settings();

@@ -13,7 +13,7 @@
 #include "Translations.h"
 #include "WidgetTestSupport.h"
 #include "stylos/core/scene/ProjectFile.h"
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 #include "stylos/widgets/DeveloppeeView.h"
 #include "stylos/widgets/ScanImporter.h"
 #include "stylos/widgets/SceneDocument.h"
@@ -279,14 +279,14 @@ void MainWindowTest::developpeeClickMarksThe3dPointAndBack()
     const core::scene::Pose pose = core::scene::Pose().withTranslation({2.0, 0.5, -1.0}).withAngles({0, 0, 90});
     QVERIFY(doc.setFragmentPose(id, pose));
     window->sceneDock().selectFragment(id);
-    QCOMPARE(window->developpeeDock().fragmentId(), quint64(id));
+    QCOMPARE(window->developpeePanel().fragmentId(), quint64(id));
     QVERIFY(window->actions().developpeeAction()->isEnabled());
 
     window->actions().developpeeAction()->trigger();
-    QVERIFY(window->developpeeDock().isBusy());
+    QVERIFY(window->developpeePanel().isBusy());
     QVERIFY(window->tasks().waitForIdle(60000));
-    widgets::DeveloppeeView* view = window->developpeeDock().view();
-    QVERIFY2(view->hasDeveloppee(), qPrintable(window->developpeeDock().statusText()));
+    widgets::DeveloppeeView* view = window->developpeePanel().view();
+    QVERIFY2(view->hasDeveloppee(), qPrintable(window->developpeePanel().statusText()));
 
     // A click at the développée's centre marks a point of the drum's surface, in the octree's frame…
     const QSize size = view->map()->width() > 0 ? QSize(view->map()->width(), view->map()->height()) : QSize();

@@ -1,6 +1,6 @@
 #include "stylos/widgets/SceneTreeModel.h"
 
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 #include "stylos/widgets/DeveloppeeJob.h"
 #include "stylos/widgets/SceneDocument.h"
 
@@ -151,7 +151,7 @@ QVariant SceneTreeModel::developpeeData(const Fragment& f, int role) const
             .arg(DeveloppeeSettings::surfaceName(result->fit.surface.kind()))
             .arg(result->image.width())
             .arg(result->image.height());
-    case Qt::ToolTipRole: return DeveloppeeDock::fitSummary(*result);
+    case Qt::ToolTipRole: return DeveloppeePanel::fitSummary(*result);
     case FragmentIdRole: return QVariant::fromValue<quint64>(f.id);
     case GuideIndexRole: return -1;
     case DeveloppeeRole: return true;

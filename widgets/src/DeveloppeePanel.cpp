@@ -1,4 +1,4 @@
-#include "stylos/widgets/DeveloppeeDock.h"
+#include "stylos/widgets/DeveloppeePanel.h"
 
 #include "stylos/widgets/DeveloppeeView.h"
 
@@ -27,14 +27,14 @@ constexpr DeveloppeeShading Shadings[] = {DeveloppeeShading::Skydome, Developpee
 
 } // namespace
 
-DeveloppeeDock::DeveloppeeDock(QWidget* parent)
+DeveloppeePanel::DeveloppeePanel(QWidget* parent)
     : QWidget(parent), m_view(new DeveloppeeView(this)), m_surfaceLabel(new QLabel(this)),
       m_surface(new QComboBox(this)), m_shadingLabel(new QLabel(this)), m_shading(new QComboBox(this)),
       m_directionsLabel(new QLabel(this)), m_directions(new QSpinBox(this)), m_pixelLabel(new QLabel(this)),
       m_pixelSize(new QDoubleSpinBox(this)), m_useAxis(new QCheckBox(this)), m_fit(new QToolButton(this)),
       m_compute(new QPushButton(this)), m_status(new QLabel(this))
 {
-    setObjectName(QStringLiteral("DeveloppeeDock"));
+    setObjectName(QStringLiteral("DeveloppeePanel"));
     m_surface->setObjectName(QStringLiteral("developpeeSurface"));
     m_shading->setObjectName(QStringLiteral("developpeeShading"));
     m_directions->setObjectName(QStringLiteral("developpeeDirections"));
@@ -81,7 +81,7 @@ DeveloppeeDock::DeveloppeeDock(QWidget* parent)
     layout->addWidget(m_status);
 
     setSettings(DeveloppeeSettings{});
-    connect(m_shading, &QComboBox::currentIndexChanged, this, &DeveloppeeDock::updateEnabled);
+    connect(m_shading, &QComboBox::currentIndexChanged, this, &DeveloppeePanel::updateEnabled);
     connect(m_fit, &QToolButton::clicked, m_view, &DeveloppeeView::fitToWindow);
     connect(m_compute, &QPushButton::clicked, this, [this] {
         if (m_fragmentId != 0 && !m_busy) Q_EMIT computeRequested(settings());
@@ -90,7 +90,7 @@ DeveloppeeDock::DeveloppeeDock(QWidget* parent)
     updateEnabled();
 }
 
-DeveloppeeSettings DeveloppeeDock::settings() const
+DeveloppeeSettings DeveloppeePanel::settings() const
 {
     DeveloppeeSettings s = m_hidden;
     s.surface = static_cast<SurfaceKind>(m_surface->currentData().toInt());
@@ -102,7 +102,7 @@ DeveloppeeSettings DeveloppeeDock::settings() const
     return s;
 }
 
-void DeveloppeeDock::setSettings(const DeveloppeeSettings& settings)
+void DeveloppeePanel::setSettings(const DeveloppeeSettings& settings)
 {
     m_hidden = settings;
     m_hidden.axis.reset();
@@ -113,7 +113,7 @@ void DeveloppeeDock::setSettings(const DeveloppeeSettings& settings)
     updateEnabled();
 }
 
-void DeveloppeeDock::setFragment(quint64 id, const QString& name, const std::optional<core::unroll::Axis>& axisGuide)
+void DeveloppeePanel::setFragment(quint64 id, const QString& name, const std::optional<core::unroll::Axis>& axisGuide)
 {
     m_fragmentId = id;
     m_fragmentName = name;
@@ -123,14 +123,14 @@ void DeveloppeeDock::setFragment(quint64 id, const QString& name, const std::opt
     refreshStatus();
 }
 
-void DeveloppeeDock::setBusy(bool busy)
+void DeveloppeePanel::setBusy(bool busy)
 {
     m_busy = busy;
     updateEnabled();
     refreshStatus();
 }
 
-void DeveloppeeDock::showResult(const DeveloppeeResult& result)
+void DeveloppeePanel::showResult(const DeveloppeeResult& result)
 {
     m_busy = false;
     m_last = result;
@@ -139,7 +139,7 @@ void DeveloppeeDock::showResult(const DeveloppeeResult& result)
     refreshStatus();
 }
 
-void DeveloppeeDock::clearResult()
+void DeveloppeePanel::clearResult()
 {
     m_last.reset();
     m_view->clear();
@@ -147,9 +147,9 @@ void DeveloppeeDock::clearResult()
     refreshStatus();
 }
 
-QString DeveloppeeDock::statusText() const { return m_status->text(); }
+QString DeveloppeePanel::statusText() const { return m_status->text(); }
 
-QString DeveloppeeDock::fitSummary(const DeveloppeeResult& result)
+QString DeveloppeePanel::fitSummary(const DeveloppeeResult& result)
 {
     if (!result.ok()) return result.error;
     const QLocale locale;
@@ -162,7 +162,7 @@ QString DeveloppeeDock::fitSummary(const DeveloppeeResult& result)
              locale.toString(result.timings.total, 'f', 1));
 }
 
-void DeveloppeeDock::retranslateUi()
+void DeveloppeePanel::retranslateUi()
 {
     m_surfaceLabel->setText(tr("Surface"));
     m_shadingLabel->setText(tr("Shading"));
@@ -188,20 +188,20 @@ void DeveloppeeDock::retranslateUi()
     refreshStatus();
 }
 
-void DeveloppeeDock::changeEvent(QEvent* event)
+void DeveloppeePanel::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) retranslateUi();
     QWidget::changeEvent(event);
 }
 
-void DeveloppeeDock::updateEnabled()
+void DeveloppeePanel::updateEnabled()
 {
     m_directions->setEnabled(static_cast<DeveloppeeShading>(m_shading->currentData().toInt()) ==
                              DeveloppeeShading::Skydome);
     m_compute->setEnabled(m_fragmentId != 0 && !m_busy);
 }
 
-void DeveloppeeDock::refreshStatus()
+void DeveloppeePanel::refreshStatus()
 {
     QString text;
     bool error = false;

@@ -30,11 +30,11 @@ namespace stylos::widgets {
 
 class DeveloppeeView;
 
-class DeveloppeeDock : public QWidget {
+class DeveloppeePanel : public QWidget {
     Q_OBJECT
 
 public:
-    explicit DeveloppeeDock(QWidget* parent = nullptr);
+    explicit DeveloppeePanel(QWidget* parent = nullptr);
 
     DeveloppeeView* view() const { return m_view; }
 
