@@ -57,6 +57,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::app::DeveloppeeDock</name>
+    <message>
+        <source>Développée</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::DeveloppeeLink</name>
     <message>
         <source>Développée of %1 cancelled</source>
@@ -450,6 +457,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::app::TasksDock</name>
+    <message>
+        <source>Tasks</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::AddFragmentCommand</name>
     <message>
         <source>Add %1</source>
@@ -488,6 +502,17 @@
     </message>
     <message>
         <source>Could not prepare the demo scene: %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not compute the développée of %1: %2.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -575,17 +600,6 @@
     </message>
     <message>
         <source>Press Compute for the développée of %1.</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>stylos::widgets::DeveloppeeJob</name>
-    <message>
-        <source>Développée of %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Could not compute the développée of %1: %2.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -943,20 +957,6 @@
     <name>stylos::widgets::ViewportWidget</name>
     <message>
         <source>The 3D view needs OpenGL 3.3: %1</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>stylos::app::TasksDock</name>
-    <message>
-        <source>Tasks</source>
-        <translation type="unfinished"></translation>
-    </message>
-</context>
-<context>
-    <name>stylos::app::DeveloppeeDock</name>
-    <message>
-        <source>Développée</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -57,6 +57,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::app::DeveloppeeDock</name>
+    <message>
+        <source>Développée</source>
+        <translation>Développée</translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::DeveloppeeLink</name>
     <message>
         <source>Développée of %1 cancelled</source>
@@ -450,6 +457,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::app::TasksDock</name>
+    <message>
+        <source>Tasks</source>
+        <translation>Tâches</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::AddFragmentCommand</name>
     <message>
         <source>Add %1</source>
@@ -489,6 +503,17 @@
     <message>
         <source>Could not prepare the demo scene: %1: %2.</source>
         <translation>Impossible de préparer la scène de démonstration : %1 : %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation>Développée de %1</translation>
+    </message>
+    <message>
+        <source>Could not compute the développée of %1: %2.</source>
+        <translation>Impossible de calculer la développée de %1 : %2.</translation>
     </message>
 </context>
 <context>
@@ -576,17 +601,6 @@
     <message>
         <source>Press Compute for the développée of %1.</source>
         <translation>Cliquez sur Calculer pour obtenir la développée de %1.</translation>
-    </message>
-</context>
-<context>
-    <name>stylos::widgets::DeveloppeeJob</name>
-    <message>
-        <source>Développée of %1</source>
-        <translation>Développée de %1</translation>
-    </message>
-    <message>
-        <source>Could not compute the développée of %1: %2.</source>
-        <translation>Impossible de calculer la développée de %1 : %2.</translation>
     </message>
 </context>
 <context>
@@ -944,20 +958,6 @@
     <message>
         <source>The 3D view needs OpenGL 3.3: %1</source>
         <translation>La vue 3D nécessite OpenGL 3.3 : %1</translation>
-    </message>
-</context>
-<context>
-    <name>stylos::app::TasksDock</name>
-    <message>
-        <source>Tasks</source>
-        <translation>Tâches</translation>
-    </message>
-</context>
-<context>
-    <name>stylos::app::DeveloppeeDock</name>
-    <message>
-        <source>Développée</source>
-        <translation>Développée</translation>
     </message>
 </context>
 </TS>

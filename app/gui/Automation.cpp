@@ -5,10 +5,10 @@
 #include "LogDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
-#include "stylos/widgets/OrbitBenchmark.h"
-#include "stylos/widgets/PoseBenchmark.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/view3d/OrbitBenchmark.h"
+#include "stylos/widgets/view3d/PoseBenchmark.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QApplication>
 #include <QDockWidget>

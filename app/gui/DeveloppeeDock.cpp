@@ -1,6 +1,6 @@
 #include "DeveloppeeDock.h"
 
-#include "stylos/widgets/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
 
 #include <QEvent>
 #include <QSettings>

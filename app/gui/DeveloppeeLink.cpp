@@ -2,11 +2,11 @@
 
 #include "stylos/core/scene/SceneEigen.h"
 
-#include "stylos/widgets/DeveloppeePanel.h"
-#include "stylos/widgets/DeveloppeeJob.h"
-#include "stylos/widgets/DeveloppeeView.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QFuture>
 

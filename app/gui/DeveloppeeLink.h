@@ -11,7 +11,7 @@
  *        longer the one it was computed for is dropped. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
-#include "stylos/widgets/FragmentJobs.h"
+#include "stylos/widgets/tasks/FragmentJobs.h"
 
 #include <QObject>
 #include <QPointer>

@@ -1,6 +1,6 @@
 #include "DisplaySettingsWidget.h"
 
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

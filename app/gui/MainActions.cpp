@@ -1,8 +1,8 @@
 #include "MainActions.h"
 
 #include "Translations.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QAction>
 #include <QActionGroup>

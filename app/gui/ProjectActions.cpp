@@ -1,7 +1,7 @@
 #include "ProjectActions.h"
 
-#include "stylos/widgets/ScanImporter.h"
-#include "stylos/widgets/SceneDocument.h"
+#include "stylos/widgets/document/ScanImporter.h"
+#include "stylos/widgets/document/SceneDocument.h"
 
 #include <QAction>
 #include <QDir>

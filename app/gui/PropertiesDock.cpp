@@ -1,7 +1,7 @@
 #include "PropertiesDock.h"
 
 #include "DisplaySettingsWidget.h"
-#include "stylos/widgets/FragmentPropertiesWidget.h"
+#include "stylos/widgets/document/FragmentPropertiesWidget.h"
 
 #include <QEvent>
 #include <QGroupBox>

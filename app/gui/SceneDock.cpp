@@ -1,7 +1,7 @@
 #include "SceneDock.h"
 
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/SceneTreeModel.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/document/SceneTreeModel.h"
 
 #include <QEvent>
 #include <QHeaderView>

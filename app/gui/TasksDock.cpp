@@ -1,6 +1,6 @@
 #include "TasksDock.h"
 
-#include "stylos/widgets/TaskListWidget.h"
+#include "stylos/widgets/tasks/TaskListWidget.h"
 
 #include <QEvent>
 

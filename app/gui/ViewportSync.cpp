@@ -3,8 +3,8 @@
 #include "stylos/core/scene/SceneEigen.h"
 
 #include "stylos/core/view/ViewFragment.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QTimer>
 

@@ -6,8 +6,8 @@
 #include "stylos/core/ao/AoExport.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/scene/ProjectFile.h"
-#include "stylos/widgets/DemoScene.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/document/DemoScene.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QDateTime>
 #include <QDir>

@@ -6,8 +6,8 @@
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/octree/PackedOctree.h"
-#include "stylos/widgets/DeveloppeeJob.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QDir>
 #include <QImage>

@@ -4,9 +4,9 @@
 // dock's Compute carries the bar's settings and its status shows the fit or the error.
 #include "WidgetTestSupport.h"
 
-#include "stylos/widgets/DeveloppeePanel.h"
-#include "stylos/widgets/DeveloppeeJob.h"
-#include "stylos/widgets/DeveloppeeView.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
 
 #include <QComboBox>
 #include <QDoubleSpinBox>

@@ -7,11 +7,11 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/scene/ProjectFile.h"
-#include "stylos/widgets/DeveloppeePanel.h"
-#include "stylos/widgets/DeveloppeeView.h"
-#include "stylos/widgets/FragmentJobs.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/tasks/FragmentJobs.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QDir>
 #include <QSemaphore>

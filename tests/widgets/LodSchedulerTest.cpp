@@ -7,7 +7,7 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/view/SceneCut.h"
-#include "stylos/widgets/LodScheduler.h"
+#include "stylos/widgets/view3d/LodScheduler.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -13,14 +13,14 @@
 #include "Translations.h"
 #include "WidgetTestSupport.h"
 #include "stylos/core/scene/ProjectFile.h"
-#include "stylos/widgets/DeveloppeePanel.h"
-#include "stylos/widgets/DeveloppeeView.h"
-#include "stylos/widgets/ScanImporter.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/SceneTreeModel.h"
-#include "stylos/widgets/SkydomeRunner.h"
-#include "stylos/widgets/TaskManager.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/document/ScanImporter.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/document/SceneTreeModel.h"
+#include "stylos/widgets/skydome/SkydomeRunner.h"
+#include "stylos/widgets/tasks/TaskManager.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QAction>
 #include <QMenu>

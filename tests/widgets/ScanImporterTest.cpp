@@ -7,10 +7,10 @@
 #include "ProjectActions.h"
 
 #include "stylos/core/octree/PackedOctree.h"
-#include "stylos/widgets/ScanImporter.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/SceneTreeModel.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/document/ScanImporter.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/document/SceneTreeModel.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -5,8 +5,8 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/octree/PackedOctree.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QSignalSpy>
 #include <QTemporaryDir>

@@ -4,11 +4,11 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/octree/PackedOctree.h"
-#include "stylos/widgets/DeveloppeeJob.h"
-#include "stylos/widgets/FragmentPropertiesWidget.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/SceneTreeModel.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
+#include "stylos/widgets/document/FragmentPropertiesWidget.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/document/SceneTreeModel.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QAbstractItemModelTester>
 #include <QCheckBox>

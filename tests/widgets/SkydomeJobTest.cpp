@@ -7,10 +7,10 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/ao/AoCells.h"
-#include "stylos/widgets/SceneDocument.h"
-#include "stylos/widgets/SkydomeJob.h"
-#include "stylos/widgets/SkydomeRunner.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/skydome/SkydomeJob.h"
+#include "stylos/widgets/skydome/SkydomeRunner.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QFile>
 #include <QFileInfo>

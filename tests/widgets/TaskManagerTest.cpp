@@ -2,8 +2,8 @@
 // the GUI thread; queued jobs wait for a worker; waitForIdle for automation.
 #include "WidgetTestSupport.h"
 
-#include "stylos/widgets/TaskListWidget.h"
-#include "stylos/widgets/TaskManager.h"
+#include "stylos/widgets/tasks/TaskListWidget.h"
+#include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QLabel>
 #include <QProgressBar>

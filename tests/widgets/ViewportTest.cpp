@@ -8,9 +8,9 @@
 #include "stylos/core/ao/AoExport.h"
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/io/PointReader.h"
-#include "stylos/widgets/OrbitBenchmark.h"
-#include "stylos/widgets/PoseBenchmark.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/view3d/OrbitBenchmark.h"
+#include "stylos/widgets/view3d/PoseBenchmark.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <Eigen/Geometry>
 

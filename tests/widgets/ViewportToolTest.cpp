@@ -5,9 +5,9 @@
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
-#include "stylos/widgets/ViewOverlay.h"
-#include "stylos/widgets/ViewportTool.h"
-#include "stylos/widgets/ViewportWidget.h"
+#include "stylos/widgets/view3d/ViewOverlay.h"
+#include "stylos/widgets/view3d/ViewportTool.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QKeyEvent>
 #include <QMouseEvent>

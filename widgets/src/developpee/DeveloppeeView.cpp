@@ -1,0 +1,325 @@
+#include "stylos/widgets/developpee/DeveloppeeView.h"
+
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
+
+#include <QKeyEvent>
+#include <QLocale>
+#include <QMouseEvent>
+#include <QPainter>
+#include <QPainterPath>
+#include <QWheelEvent>
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+
+namespace stylos::widgets {
+
+namespace {
+
+constexpr int ClickSlop = 4;          ///< logical pixels a press may move and still be a click
+constexpr double FitMargin = 8.0;     ///< logical pixels left around a fitted image
+constexpr double WheelStep = 1.25;    ///< zoom factor of one wheel notch (120 eighths of a degree)
+const QColor Background(48, 48, 48);
+const QColor MarkerColour(255, 96, 32);
+
+/** 1, 2 or 5 × a power of ten, the largest not over @p value (> 0). */
+double niceLength(double value)
+{
+    const double decade = std::pow(10.0, std::floor(std::log10(value)));
+    for (double step : {5.0, 2.0, 1.0})
+        if (step * decade <= value) return step * decade;
+    return decade;
+}
+
+} // namespace
+
+DeveloppeeView::DeveloppeeView(QWidget* parent) : QWidget(parent)
+{
+    setObjectName(QStringLiteral("DeveloppeeView"));
+    setMouseTracking(true);
+    setFocusPolicy(Qt::StrongFocus);
+    setCursor(Qt::CrossCursor);
+    setMinimumSize(160, 120);
+    m_placeholder = tr("No développée yet: select a fragment and press Compute.");
+}
+
+void DeveloppeeView::setDeveloppee(quint64 fragmentId, const QImage& image,
+                                   std::shared_ptr<const core::shading::HeightField> heights,
+                                   const core::unroll::UnrollMap& map)
+{
+    assert(heights && heights->width() == image.width() && heights->height() == image.height() &&
+           map.width() == image.width() && map.height() == image.height() &&
+           "DeveloppeeView::setDeveloppee(): the image, heights and map differ in size");
+    if (fragmentId != m_fragmentId) m_marker.reset(); // a point of another fragment's frame
+    m_fragmentId = fragmentId;
+    m_image = image;
+    m_pixmap = QPixmap::fromImage(image);
+    m_heights = std::move(heights);
+    m_map = map;
+    fitToWindow();
+    setReadout({});
+}
+
+bool DeveloppeeView::setResult(const DeveloppeeResult& result)
+{
+    if (!result.ok() || !result.heights) return false;
+    setDeveloppee(result.fragmentId, result.image, result.heights, *result.map);
+    return true;
+}
+
+void DeveloppeeView::clear()
+{
+    m_fragmentId = 0;
+    m_image = {};
+    m_pixmap = {};
+    m_heights.reset();
+    m_map.reset();
+    m_autoFit = true;
+    setReadout({});
+    update();
+}
+
+void DeveloppeeView::setPlaceholderText(const QString& text)
+{
+    m_placeholder = text;
+    if (!hasDeveloppee()) update();
+}
+
+void DeveloppeeView::setTransform(double zoom, const QPointF& offset)
+{
+    m_zoom = std::clamp(zoom, MinZoom, MaxZoom);
+    m_offset = offset;
+    m_autoFit = false;
+    update();
+}
+
+void DeveloppeeView::zoomAbout(const QPointF& widget, double factor)
+{
+    const QPointF anchor = widgetToImage(widget);
+    m_zoom = std::clamp(m_zoom * factor, MinZoom, MaxZoom);
+    m_offset = widget - anchor * m_zoom;
+    m_autoFit = false;
+    update();
+}
+
+void DeveloppeeView::fitToWindow()
+{
+    m_autoFit = true;
+    if (m_image.isNull()) return;
+    const double w = std::max(1.0, width() - 2.0 * FitMargin);
+    const double h = std::max(1.0, height() - 2.0 * FitMargin);
+    m_zoom = std::clamp(std::min(w / m_image.width(), h / m_image.height()), MinZoom, MaxZoom);
+    m_offset = QPointF((width() - m_image.width() * m_zoom) / 2.0, (height() - m_image.height() * m_zoom) / 2.0);
+    update();
+}
+
+std::optional<Eigen::Vector3d> DeveloppeeView::pointAtPixel(int column, int row) const
+{
+    if (!m_map || !m_heights || !m_heights->contains(column, row) || !m_heights->hasHeight(column, row))
+        return std::nullopt;
+    return m_map->worldAtPixel(column + 0.5, row + 0.5, double(m_heights->heightAt(column, row)));
+}
+
+void DeveloppeeView::setMarker(const std::optional<Eigen::Vector3d>& point)
+{
+    m_marker = point;
+    update();
+}
+
+std::optional<QPointF> DeveloppeeView::markerPixel() const
+{
+    if (!m_marker || !m_map) return std::nullopt;
+    const auto hit = m_map->pixelOf(*m_marker);
+    if (!hit) return std::nullopt;
+    return QPointF(hit->column, hit->row);
+}
+
+QString DeveloppeeView::formatReadout(double uMetres, double vMetres, std::optional<double> hMetres)
+{
+    const QLocale locale;
+    const QString u = locale.toString(uMetres * 1e3, 'f', 1);
+    const QString v = locale.toString(vMetres * 1e3, 'f', 1);
+    if (!hMetres) return tr("u %1 mm   v %2 mm   (no data)").arg(u, v);
+    return tr("u %1 mm   v %2 mm   h %3 mm").arg(u, v, locale.toString(*hMetres * 1e3, 'f', 2));
+}
+
+QString DeveloppeeView::readoutAt(const QPointF& image) const
+{
+    if (!m_map || !m_heights) return {};
+    const int column = static_cast<int>(std::floor(image.x()));
+    const int row = static_cast<int>(std::floor(image.y()));
+    if (!m_heights->contains(column, row)) return {};
+    const double s = m_map->pixelSize();
+    std::optional<double> h;
+    if (m_heights->hasHeight(column, row)) h = m_heights->heightAt(column, row);
+    return formatReadout(image.x() * s, m_map->vTop() - image.y() * s, h);
+}
+
+void DeveloppeeView::setReadout(const QString& text)
+{
+    if (text == m_readout) return;
+    m_readout = text;
+    update();
+    Q_EMIT readoutChanged(m_readout);
+}
+
+void DeveloppeeView::updateReadout(const QPointF& widget) { setReadout(readoutAt(widgetToImage(widget))); }
+
+void DeveloppeeView::paintEvent(QPaintEvent*)
+{
+    QPainter painter(this);
+    painter.fillRect(rect(), Background);
+    if (!hasDeveloppee() || m_pixmap.isNull()) {
+        painter.setPen(QColor(200, 200, 200));
+        painter.drawText(rect().adjusted(12, 12, -12, -12), Qt::AlignCenter | Qt::TextWordWrap, m_placeholder);
+        return;
+    }
+    // Only the visible part of the image, whole pixels, so that deep zooms stay cheap.
+    const QRectF visible = QRectF(widgetToImage(QPointF(0, 0)), widgetToImage(QPointF(width(), height())))
+                               .intersected(QRectF(m_pixmap.rect()));
+    if (!visible.isEmpty()) {
+        const QRect source(QPoint(int(std::floor(visible.left())), int(std::floor(visible.top()))),
+                           QPoint(int(std::ceil(visible.right())) - 1, int(std::ceil(visible.bottom())) - 1));
+        const QRectF target(imageToWidget(source.topLeft()), QSizeF(source.width(), source.height()) * m_zoom);
+        painter.setRenderHint(QPainter::SmoothPixmapTransform, m_zoom < 1.0);
+        painter.drawPixmap(target, m_pixmap, QRectF(source));
+    }
+    painter.setPen(QColor(96, 96, 96));
+    painter.drawRect(QRectF(m_offset, QSizeF(m_pixmap.size()) * m_zoom));
+    drawMarker(painter);
+    drawOverlays(painter);
+}
+
+void DeveloppeeView::drawMarker(QPainter& painter) const
+{
+    const auto pixel = markerPixel();
+    if (!pixel) return;
+    const QPointF c = imageToWidget(*pixel);
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    for (const auto& [colour, width] : {std::pair{QColor(0, 0, 0, 160), 4.0}, std::pair{MarkerColour, 2.0}}) {
+        painter.setPen(QPen(colour, width));
+        painter.setBrush(Qt::NoBrush);
+        painter.drawEllipse(c, 7.0, 7.0);
+        painter.drawLine(c + QPointF(-14, 0), c + QPointF(-4, 0));
+        painter.drawLine(c + QPointF(4, 0), c + QPointF(14, 0));
+        painter.drawLine(c + QPointF(0, -14), c + QPointF(0, -4));
+        painter.drawLine(c + QPointF(0, 4), c + QPointF(0, 14));
+    }
+    painter.setRenderHint(QPainter::Antialiasing, false);
+}
+
+void DeveloppeeView::drawOverlays(QPainter& painter) const
+{
+    const QFontMetrics metrics = painter.fontMetrics();
+    const int pad = 4;
+    const int boxHeight = metrics.height() + 2 * pad;
+    if (!m_readout.isEmpty()) {
+        const QRect box(6, height() - 6 - boxHeight, metrics.horizontalAdvance(m_readout) + 2 * pad, boxHeight);
+        painter.fillRect(box, QColor(0, 0, 0, 170));
+        painter.setPen(Qt::white);
+        painter.drawText(box.adjusted(pad, 0, -pad, 0), Qt::AlignVCenter | Qt::AlignLeft, m_readout);
+    }
+    // Scale bar: the longest 1-2-5 length that fits in 120 logical pixels.
+    const double metresPerWidgetPixel = m_map->pixelSize() / m_zoom;
+    const double length = niceLength(120.0 * metresPerWidgetPixel);
+    const double barPixels = length / metresPerWidgetPixel;
+    const QLocale locale;
+    const QString label = length >= 1.0 ? tr("%1 m").arg(locale.toString(length, 'g', 3))
+                                        : tr("%1 mm").arg(locale.toString(length * 1e3, 'g', 4));
+    const int boxWidth = int(std::ceil(std::max<double>(barPixels, metrics.horizontalAdvance(label)))) + 2 * pad;
+    const QRect box(width() - 6 - boxWidth, height() - 6 - boxHeight - 8, boxWidth, boxHeight + 8);
+    painter.fillRect(box, QColor(0, 0, 0, 170));
+    painter.setPen(Qt::white);
+    painter.drawText(QRect(box.left(), box.top() + 2, box.width(), metrics.height()), Qt::AlignHCenter, label);
+    const double y = box.bottom() - pad - 1;
+    const double x0 = box.left() + (box.width() - barPixels) / 2.0;
+    painter.setPen(QPen(Qt::white, 2.0));
+    painter.drawLine(QPointF(x0, y), QPointF(x0 + barPixels, y));
+    painter.drawLine(QPointF(x0, y - 4), QPointF(x0, y));
+    painter.drawLine(QPointF(x0 + barPixels, y - 4), QPointF(x0 + barPixels, y));
+}
+
+void DeveloppeeView::resizeEvent(QResizeEvent* event)
+{
+    QWidget::resizeEvent(event);
+    if (m_autoFit) fitToWindow();
+}
+
+void DeveloppeeView::mousePressEvent(QMouseEvent* event)
+{
+    m_pressPosition = m_lastPosition = event->position().toPoint();
+    m_pressButtons = event->buttons();
+    m_dragged = false;
+    setFocus(Qt::MouseFocusReason);
+    event->accept();
+}
+
+void DeveloppeeView::mouseMoveEvent(QMouseEvent* event)
+{
+    const QPoint position = event->position().toPoint();
+    if (event->buttons() != Qt::NoButton && m_pressButtons != Qt::NoButton) {
+        if (!m_dragged && (position - m_pressPosition).manhattanLength() > ClickSlop) {
+            m_dragged = true;
+            setCursor(Qt::ClosedHandCursor);
+        }
+        if (m_dragged && hasDeveloppee()) {
+            m_offset += QPointF(position - m_lastPosition);
+            m_autoFit = false;
+            update();
+        }
+    }
+    m_lastPosition = position;
+    updateReadout(event->position());
+}
+
+void DeveloppeeView::mouseReleaseEvent(QMouseEvent* event)
+{
+    const bool click = !m_dragged && event->button() == Qt::LeftButton && m_pressButtons == Qt::LeftButton;
+    m_pressButtons = Qt::NoButton;
+    m_dragged = false;
+    setCursor(Qt::CrossCursor);
+    if (!click || !hasDeveloppee()) return;
+    const QPointF image = widgetToImage(event->position());
+    const auto point = pointAtPixel(int(std::floor(image.x())), int(std::floor(image.y())));
+    if (!point) return;
+    m_marker = point;
+    update();
+    Q_EMIT pointPicked(m_fragmentId, *point);
+}
+
+void DeveloppeeView::mouseDoubleClickEvent(QMouseEvent* event)
+{
+    if (event->button() == Qt::LeftButton) fitToWindow();
+}
+
+void DeveloppeeView::wheelEvent(QWheelEvent* event)
+{
+    const QPoint delta = event->angleDelta();
+    const int steps = delta.y() != 0 ? delta.y() : delta.x();
+    if (steps == 0 || !hasDeveloppee()) return;
+    zoomAbout(event->position(), std::pow(WheelStep, steps / 120.0));
+    updateReadout(event->position());
+    event->accept();
+}
+
+void DeveloppeeView::keyPressEvent(QKeyEvent* event)
+{
+    const QPointF centre(width() / 2.0, height() / 2.0);
+    switch (event->key()) {
+    case Qt::Key_F: fitToWindow(); break;
+    case Qt::Key_Plus:
+    case Qt::Key_Equal: zoomAbout(centre, WheelStep); break;
+    case Qt::Key_Minus: zoomAbout(centre, 1.0 / WheelStep); break;
+    default: QWidget::keyPressEvent(event); return;
+    }
+    event->accept();
+}
+
+void DeveloppeeView::leaveEvent(QEvent* event)
+{
+    QWidget::leaveEvent(event);
+    setReadout({});
+}
+
+} // namespace stylos::widgets

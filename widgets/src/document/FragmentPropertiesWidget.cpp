@@ -1,0 +1,205 @@
+#include "stylos/widgets/document/FragmentPropertiesWidget.h"
+
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/widgets/document/SceneDocument.h"
+
+#include <QCheckBox>
+#include <QColorDialog>
+#include <QDoubleSpinBox>
+#include <QEvent>
+#include <QFormLayout>
+#include <QLabel>
+#include <QLineEdit>
+#include <QLocale>
+#include <QPushButton>
+
+#include <cmath>
+#include <numbers>
+
+namespace stylos::widgets {
+
+namespace {
+
+using core::scene::Fragment;
+
+constexpr double DegreesPerRadian = 180.0 / std::numbers::pi;
+
+QDoubleSpinBox* makeSpin(QWidget* parent, bool angle)
+{
+    auto* spin = new QDoubleSpinBox(parent);
+    spin->setKeyboardTracking(false); // one edit per Enter, arrow step or focus change
+    if (angle) {
+        spin->setRange(-180.0, 180.0);
+        spin->setDecimals(3);
+        spin->setWrapping(true);
+        spin->setSuffix(QStringLiteral("°"));
+    } else {
+        spin->setRange(-1e7, 1e7);
+        spin->setDecimals(4); // 0.1 mm
+        spin->setSingleStep(0.001);
+        spin->setSuffix(QStringLiteral(" m"));
+    }
+    return spin;
+}
+
+} // namespace
+
+FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWidget* parent)
+    : QWidget(parent), m_document(document), m_form(new QFormLayout(this)), m_name(new QLineEdit(this)),
+      m_visible(new QCheckBox(this)), m_colour(new QPushButton(this)), m_points(new QLabel(this)),
+      m_leafCells(new QLabel(this)), m_totalCells(new QLabel(this)), m_depth(new QLabel(this)),
+      m_file(new QLabel(this))
+{
+    setObjectName(QStringLiteral("FragmentPropertiesWidget"));
+    m_name->setObjectName(QStringLiteral("fragmentName"));
+    m_visible->setObjectName(QStringLiteral("fragmentVisible"));
+    m_colour->setObjectName(QStringLiteral("fragmentColour"));
+    m_file->setWordWrap(true);
+    m_file->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    for (int i = 0; i < 6; ++i) {
+        m_pose[static_cast<std::size_t>(i)] = makeSpin(this, i >= 3);
+        m_pose[static_cast<std::size_t>(i)]->setObjectName(QStringLiteral("fragmentPose%1").arg(i));
+        connect(m_pose[static_cast<std::size_t>(i)], &QDoubleSpinBox::valueChanged, this, [this, i] { applyPose(i); });
+    }
+    QWidget* fields[RowCount] = {m_name,     m_visible,   m_colour,    m_pose[0],     m_pose[1],
+                                 m_pose[2],  m_pose[3],   m_pose[4],   m_pose[5],     m_points,
+                                 m_leafCells, m_totalCells, m_depth,  m_file};
+    for (std::size_t row = 0; row < RowCount; ++row) {
+        m_labels[row] = new QLabel(this);
+        m_form->addRow(m_labels[row], fields[row]);
+    }
+
+    connect(m_name, &QLineEdit::editingFinished, this, &FragmentPropertiesWidget::applyName);
+    connect(m_visible, &QCheckBox::toggled, this, [this](bool on) {
+        if (!m_updating) m_document.setFragmentVisible(m_id, on);
+    });
+    connect(m_colour, &QPushButton::clicked, this, &FragmentPropertiesWidget::chooseColour);
+    connect(&m_document, &SceneDocument::fragmentChanged, this, [this](quint64 id) {
+        if (id == m_id) refresh();
+    });
+    connect(&m_document, &SceneDocument::octreeChanged, this, [this](quint64 id) {
+        if (id == m_id) refresh();
+    });
+    connect(&m_document, &SceneDocument::fragmentRemoved, this, [this](quint64 id) {
+        if (id == m_id) setFragment(core::scene::NoFragment);
+    });
+    connect(&m_document, &SceneDocument::sceneReset, this, [this] { setFragment(core::scene::NoFragment); });
+    retranslateUi();
+    refresh();
+}
+
+void FragmentPropertiesWidget::setFragment(core::scene::FragmentId id)
+{
+    m_id = m_document.fragment(id) ? id : core::scene::NoFragment;
+    refresh();
+}
+
+void FragmentPropertiesWidget::changeEvent(QEvent* event)
+{
+    if (event->type() == QEvent::LanguageChange) retranslateUi();
+    QWidget::changeEvent(event);
+}
+
+void FragmentPropertiesWidget::retranslateUi()
+{
+    const QString labels[RowCount] = {tr("Name"),        tr("Visible"),    tr("Colour"),      tr("X"),
+                              tr("Y"),           tr("Z"),          tr("Rotation X"),  tr("Rotation Y"),
+                              tr("Rotation Z"),  tr("Points"),     tr("Leaf cells"),  tr("Total cells"),
+                              tr("Depth"),       tr("File")};
+    for (std::size_t row = 0; row < RowCount; ++row) m_labels[row]->setText(labels[row]);
+    m_visible->setText(tr("Shown in the 3D view"));
+    m_colour->setToolTip(tr("Choose the fragment's display colour"));
+    m_pose[0]->setToolTip(tr("Translation along the scene's x axis, in metres"));
+    m_pose[3]->setToolTip(tr("Rotation about the x axis, applied first, in degrees"));
+    refresh();
+}
+
+void FragmentPropertiesWidget::refresh()
+{
+    const Fragment* f = m_document.fragment(m_id);
+    m_updating = true;
+    for (QWidget* w : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_visible), static_cast<QWidget*>(m_colour)})
+        w->setEnabled(f != nullptr);
+    for (QDoubleSpinBox* spin : m_pose) spin->setEnabled(f != nullptr);
+    const QLocale locale;
+    const QString none = QStringLiteral("–");
+    if (!f) {
+        m_name->clear();
+        m_visible->setChecked(false);
+        m_colour->setText(QString());
+        m_colour->setStyleSheet(QString());
+        for (QDoubleSpinBox* spin : m_pose) spin->setValue(0.0);
+        for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth, m_file}) label->setText(none);
+        m_updating = false;
+        return;
+    }
+    if (!m_name->hasFocus() || m_name->text() != QString::fromStdString(f->name))
+        m_name->setText(QString::fromStdString(f->name));
+    m_visible->setChecked(f->visible);
+    const QString hex = QString::fromStdString(f->colour.toHex());
+    m_colour->setText(hex);
+    m_colour->setStyleSheet(QStringLiteral("QPushButton { background-color: %1; }").arg(hex));
+    const auto value = f->pose.toTranslationAngles();
+    for (int i = 0; i < 3; ++i) {
+        m_pose[static_cast<std::size_t>(i)]->setValue(value.translation[static_cast<std::size_t>(i)]);
+        m_pose[static_cast<std::size_t>(3 + i)]->setValue(value.angles[static_cast<std::size_t>(i)] * DegreesPerRadian);
+    }
+    const auto octree = m_document.octree(m_id);
+    if (octree) {
+        m_points->setText(locale.toString(static_cast<qulonglong>(octree->description().points)));
+        m_leafCells->setText(locale.toString(static_cast<qulonglong>(octree->cellCount(octree->depth()))));
+        m_totalCells->setText(locale.toString(static_cast<qulonglong>(octree->totalCells())));
+        m_depth->setText(locale.toString(octree->depth()));
+    } else {
+        const QString state = f->octreeMissing ? tr("missing") : tr("opening…");
+        for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth}) label->setText(state);
+    }
+    m_file->setText(QString::fromStdString(f->octreePath.string()));
+    m_updating = false;
+}
+
+void FragmentPropertiesWidget::applyName()
+{
+    if (m_updating) return;
+    const QString name = m_name->text().trimmed();
+    const Fragment* f = m_document.fragment(m_id);
+    if (!f) return;
+    if (name.isEmpty()) {
+        m_name->setText(QString::fromStdString(f->name)); // a fragment keeps a name
+        return;
+    }
+    m_document.renameFragment(m_id, name);
+}
+
+void FragmentPropertiesWidget::applyPose(int component)
+{
+    if (m_updating) return;
+    const Fragment* f = m_document.fragment(m_id);
+    if (!f) return;
+    // Only the edited component changes; the others keep their exact values, not the spin boxes' rounding.
+    core::scene::Pose pose = f->pose;
+    const double value = m_pose[static_cast<std::size_t>(component)]->value();
+    if (component < 3) {
+        auto t = pose.translationPart();
+        t[static_cast<std::size_t>(component)] = value;
+        pose = pose.withTranslation(t);
+    } else {
+        auto angles = pose.toTranslationAngles().angles;
+        angles[static_cast<std::size_t>(component - 3)] = value / DegreesPerRadian;
+        pose = pose.withAngles(angles);
+    }
+    m_document.setFragmentPose(m_id, pose);
+}
+
+void FragmentPropertiesWidget::chooseColour()
+{
+    const Fragment* f = m_document.fragment(m_id);
+    if (!f) return;
+    const QColor chosen = QColorDialog::getColor(QColor(f->colour.r, f->colour.g, f->colour.b), this, tr("Fragment colour"));
+    if (!chosen.isValid()) return;
+    m_document.setFragmentColour(m_id, core::scene::Rgb{static_cast<std::uint8_t>(chosen.red()),
+                                                       static_cast<std::uint8_t>(chosen.green()),
+                                                       static_cast<std::uint8_t>(chosen.blue())});
+}
+
+} // namespace stylos::widgets

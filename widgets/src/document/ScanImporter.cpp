@@ -1,0 +1,161 @@
+#include "stylos/widgets/document/ScanImporter.h"
+
+#include "stylos/core/io/PointFileFormat.h"
+#include "stylos/core/octree/PackedOctree.h"
+#include "tasks/ErrorText.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/tasks/TaskManager.h"
+
+#include <QDir>
+#include <QFile>
+#include <QFileInfo>
+#include <QStandardPaths>
+
+#include <optional>
+
+namespace stylos::widgets {
+
+namespace {
+
+/** What an import task hands back (nothing at all when cancelled). */
+struct ImportResult {
+    SceneDocument::OctreePtr octree;
+    std::optional<core::Error> error;
+};
+
+bool isPoct(const QString& path)
+{
+    return core::io::hasPoctExtension(path.toStdString());
+}
+
+} // namespace
+
+ScanImporter::ScanImporter(SceneDocument& document, TaskManager& tasks, QObject* parent)
+    : QObject(parent), m_document(document), m_tasks(tasks),
+      m_cacheDirectory(QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/octrees"))
+{
+    // An import that ends after the project was replaced must not land in the new one.
+    connect(&document, &SceneDocument::sceneAboutToBeReset, this, [this] {
+        for (QFutureWatcherBase* watcher : std::as_const(m_pending)) watcher->cancel();
+    });
+}
+
+QString ScanImporter::outputDirectory() const
+{
+    const QString folder = m_document.projectFolder();
+    return folder.isEmpty() ? m_cacheDirectory : folder;
+}
+
+QString ScanImporter::fileFilter()
+{
+    QStringList patterns;
+    for (const std::string& extension : core::io::importableExtensions())
+        patterns << QStringLiteral("*.") + QString::fromStdString(extension);
+    return tr("Scans and octrees (%1)").arg(patterns.join(QLatin1Char(' '))) + QStringLiteral(";;") +
+           tr("Packed octrees (*.poct)") + QStringLiteral(";;") + tr("All files (*)");
+}
+
+bool ScanImporter::canImport(const QString& path)
+{
+    return core::io::hasImportableExtension(path.toStdString());
+}
+
+int ScanImporter::importFiles(const QStringList& paths)
+{
+    int started = 0;
+    for (const QString& path : paths) {
+        const QString input = QFileInfo(path).absoluteFilePath();
+        const bool direct = isPoct(input);
+        QString output;
+        if (!direct) {
+            output = reserveOutput(input);
+            if (output.isEmpty()) {
+                fail(input, tr("Could not import %1: the folder %2 cannot be created.")
+                                .arg(QFileInfo(input).fileName(), QDir::toNativeSeparators(outputDirectory())));
+                continue;
+            }
+        }
+        const std::filesystem::path in = input.toStdString();
+        const std::filesystem::path out = output.toStdString();
+        const core::octree::BuildOptions options = m_options;
+        auto* watcher = m_tasks.start<ImportResult>(
+            tr("Importing %1").arg(QFileInfo(input).fileName()),
+            [in, out, options, direct](QPromise<ImportResult>& promise, core::ProgressSink& progress) {
+                ImportResult result;
+                if (!direct) {
+                    auto built = core::octree::buildOctreeFile(in, out, options, &progress);
+                    if (!built && built.error().code == core::ErrorCode::Cancelled) return;
+                    if (!built) {
+                        result.error = built.error();
+                        promise.addResult(std::move(result));
+                        return;
+                    }
+                }
+                auto opened = core::octree::PackedOctree::open(direct ? in : out);
+                if (progress.isCancelRequested()) return; // the GUI side removes the file
+                if (opened) result.octree = std::make_shared<const core::octree::PackedOctree>(std::move(opened).value());
+                else result.error = opened.error();
+                progress.update(1.0);
+                promise.addResult(std::move(result));
+            });
+        m_pending.insert(watcher);
+        connect(watcher, &QFutureWatcherBase::finished, this,
+                [this, input, output, watcher] { importEnded(input, output, watcher); });
+        ++started;
+    }
+    if (m_pending.isEmpty() && !m_errors.isEmpty()) {
+        // Only failures that could not even start: still report the batch's end after this returns.
+        QMetaObject::invokeMethod(this, [this] {
+            if (m_pending.isEmpty() && !m_errors.isEmpty()) Q_EMIT importsFinished(std::exchange(m_errors, {}));
+        }, Qt::QueuedConnection);
+    }
+    return started;
+}
+
+QString ScanImporter::reserveOutput(const QString& input)
+{
+    const QString folder = outputDirectory();
+    if (!QDir().mkpath(folder)) return {};
+    const QString stem = QFileInfo(input).completeBaseName();
+    QString candidate = QDir(folder).absoluteFilePath(stem + QStringLiteral(".poct"));
+    for (int n = 2; QFileInfo::exists(candidate) || m_reserved.contains(candidate); ++n)
+        candidate = QDir(folder).absoluteFilePath(QStringLiteral("%1-%2.poct").arg(stem).arg(n));
+    m_reserved.insert(candidate);
+    return candidate;
+}
+
+void ScanImporter::importEnded(const QString& input, const QString& output, QFutureWatcherBase* watcher)
+{
+    m_pending.remove(watcher);
+    m_reserved.remove(output);
+    auto* typed = static_cast<QFutureWatcher<ImportResult>*>(watcher);
+    const bool delivered = !typed->isCanceled() && typed->future().resultCount() > 0;
+    const ImportResult result = delivered ? typed->result() : ImportResult{};
+    if (!delivered || !result.octree) {
+        // Cancelled (possibly after the file was written) or failed: leave nothing behind.
+        if (!output.isEmpty() && QFileInfo::exists(output)) QFile::remove(output);
+    }
+    if (delivered && result.error) {
+        const core::Error& error = *result.error;
+        fail(input, tr("Could not import %1: %2.").arg(QFileInfo(input).fileName(), ErrorText::reason(error.code)) +
+                        QLatin1Char('\n') + QString::fromStdString(error.message));
+    } else if (delivered && result.octree) {
+        core::scene::Fragment fragment;
+        fragment.name = QFileInfo(input).completeBaseName().toStdString();
+        fragment.octreePath = (output.isEmpty() ? input : output).toStdString();
+        if (!output.isEmpty()) fragment.sourcePath = input.toStdString();
+        fragment.colour = core::scene::defaultFragmentColour(m_document.scene().size());
+        const auto id = m_document.addFragment(std::move(fragment), result.octree,
+                                               tr("Import %1").arg(QFileInfo(input).fileName()));
+        Q_EMIT fragmentImported(id);
+    }
+    if (m_pending.isEmpty()) Q_EMIT importsFinished(std::exchange(m_errors, {}));
+}
+
+void ScanImporter::fail(const QString& input, const QString& message)
+{
+    m_errors << message;
+    Q_EMIT importFailed(input, message);
+}
+
+} // namespace stylos::widgets

@@ -1,0 +1,299 @@
+#include "stylos/widgets/document/SceneDocument.h"
+
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/scene/ProjectFile.h"
+#include "document/commands/AddFragmentCommand.h"
+#include "tasks/ErrorText.h"
+#include "document/commands/RemoveFragmentCommand.h"
+#include "document/commands/RenameFragmentCommand.h"
+#include "document/commands/SetFragmentColourCommand.h"
+#include "document/commands/SetFragmentPoseCommand.h"
+#include "document/commands/SetFragmentVisibleCommand.h"
+#include "stylos/widgets/tasks/TaskManager.h"
+
+#include <QFileInfo>
+#include <QUndoStack>
+
+#include <optional>
+
+namespace stylos::widgets {
+
+namespace {
+
+using core::scene::Fragment;
+using core::scene::FragmentId;
+
+/** What an octree-opening job hands back. */
+struct OpenedOctree {
+    SceneDocument::OctreePtr octree;
+    std::optional<core::Error> error;
+};
+
+QString qtPath(const std::filesystem::path& path)
+{
+    return QString::fromStdString(path.string());
+}
+
+} // namespace
+
+SceneDocument::SceneDocument(TaskManager& tasks, QObject* parent)
+    : QObject(parent), m_tasks(tasks), m_undo(new QUndoStack(this))
+{
+    connect(m_undo, &QUndoStack::cleanChanged, this, [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
+}
+
+SceneDocument::~SceneDocument()
+{
+    cancelLoads();
+    // Commands refer to the document: delete them while it is whole.
+    delete m_undo;
+    m_undo = nullptr;
+}
+
+SceneDocument::OctreePtr SceneDocument::octree(FragmentId id) const
+{
+    const auto it = m_octrees.find(id);
+    return it == m_octrees.end() ? nullptr : it->second;
+}
+
+bool SceneDocument::replaceOctree(FragmentId id, OctreePtr octree)
+{
+    if (!octree || !m_scene.find(id)) return false;
+    m_octrees[id] = std::move(octree);
+    Q_EMIT octreeChanged(id);
+    return true;
+}
+
+SceneDocument::DeveloppeePtr SceneDocument::developpee(FragmentId id) const
+{
+    const auto it = m_developpees.find(id);
+    return it == m_developpees.end() ? nullptr : it->second;
+}
+
+bool SceneDocument::setDeveloppee(FragmentId id, DeveloppeePtr result)
+{
+    if (!m_scene.find(id)) return false;
+    if (result) m_developpees[id] = std::move(result);
+    else if (m_developpees.erase(id) == 0) return true;
+    Q_EMIT developpeeChanged(id);
+    return true;
+}
+
+QString SceneDocument::projectFolder() const
+{
+    return m_path.isEmpty() ? QString() : QFileInfo(m_path).absolutePath();
+}
+
+QString SceneDocument::displayName() const
+{
+    return m_path.isEmpty() ? tr("Untitled") : QFileInfo(m_path).fileName();
+}
+
+bool SceneDocument::isModified() const
+{
+    return !m_undo->isClean();
+}
+
+FragmentId SceneDocument::addFragment(Fragment fragment, OctreePtr octree, const QString& commandText)
+{
+    if (fragment.id != core::scene::NoFragment && m_scene.find(fragment.id)) return core::scene::NoFragment;
+    auto* command = new AddFragmentCommand(*this, std::move(fragment), std::move(octree), commandText);
+    const FragmentId id = command->fragmentId();
+    m_undo->push(command);
+    return id;
+}
+
+bool SceneDocument::removeFragment(FragmentId id)
+{
+    if (!m_scene.find(id)) return false;
+    m_undo->push(new RemoveFragmentCommand(*this, id));
+    return true;
+}
+
+bool SceneDocument::renameFragment(FragmentId id, const QString& name)
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || f->name == name.toStdString()) return false;
+    m_undo->push(new RenameFragmentCommand(*this, id, name));
+    return true;
+}
+
+bool SceneDocument::setFragmentPose(FragmentId id, const core::scene::Pose& pose, bool continuing)
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || f->pose == pose) return false;
+    m_undo->push(new SetFragmentPoseCommand(*this, id, pose, continuing));
+    return true;
+}
+
+bool SceneDocument::setFragmentColour(FragmentId id, core::scene::Rgb colour)
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || f->colour == colour) return false;
+    m_undo->push(new SetFragmentColourCommand(*this, id, colour));
+    return true;
+}
+
+bool SceneDocument::setFragmentVisible(FragmentId id, bool visible)
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || f->visible == visible) return false;
+    m_undo->push(new SetFragmentVisibleCommand(*this, id, visible));
+    return true;
+}
+
+void SceneDocument::newProject()
+{
+    resetScene(core::scene::Scene{});
+    setProjectPath({});
+}
+
+bool SceneDocument::save(QString* error)
+{
+    if (m_path.isEmpty()) {
+        if (error) *error = tr("The project has no file yet: choose one with Save as.");
+        return false;
+    }
+    return saveAs(m_path, error);
+}
+
+bool SceneDocument::saveAs(const QString& path, QString* error)
+{
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    const core::Status saved = core::scene::ProjectFile::save(m_scene, absolute.toStdString());
+    if (!saved) {
+        if (error)
+            *error = tr("Could not save %1: %2.").arg(QFileInfo(path).fileName(), ErrorText::reason(saved.error().code)) +
+                     QLatin1Char('\n') + QString::fromStdString(saved.error().message);
+        return false;
+    }
+    setProjectPath(absolute);
+    m_undo->setClean();
+    return true;
+}
+
+bool SceneDocument::open(const QString& path, QString* error)
+{
+    const QString absolute = QFileInfo(path).absoluteFilePath();
+    auto loaded = core::scene::ProjectFile::load(absolute.toStdString());
+    if (!loaded) {
+        if (error) *error = ErrorText::loadFailure(path, loaded.error());
+        return false;
+    }
+    resetScene(std::move(loaded->scene));
+    setProjectPath(absolute);
+    std::size_t problem = 0;
+    for (const Fragment& f : m_scene.fragments()) {
+        if (f.octreeMissing && problem < loaded->problems.size())
+            m_loadErrors << ErrorText::loadFailure(qtPath(f.octreePath), loaded->problems[problem++]);
+        else startLoad(f.id);
+    }
+    if (m_loads.empty()) {
+        // Nothing to open in the background: still report after open() returns, as when there is.
+        QMetaObject::invokeMethod(this, [this] {
+            if (m_loads.empty()) Q_EMIT loadingFinished(std::exchange(m_loadErrors, {}));
+        }, Qt::QueuedConnection);
+    }
+    return true;
+}
+
+void SceneDocument::insertFragment(int index, Fragment fragment, OctreePtr octree)
+{
+    if (m_scene.find(fragment.id)) return; // a programmer error: ids are unique
+    index = std::clamp(index, 0, static_cast<int>(m_scene.size()));
+    Q_EMIT fragmentAboutToBeAdded(index);
+    const FragmentId id = m_scene.insert(static_cast<std::size_t>(index), std::move(fragment));
+    if (octree) m_octrees[id] = std::move(octree);
+    Q_EMIT fragmentAdded(id);
+    if (!m_octrees.count(id)) startLoad(id);
+}
+
+std::pair<Fragment, SceneDocument::OctreePtr> SceneDocument::takeFragment(FragmentId id)
+{
+    if (!m_scene.find(id)) return {};
+    Q_EMIT fragmentAboutToBeRemoved(id);
+    Fragment fragment = m_scene.take(id).value();
+    m_developpees.erase(id);
+    OctreePtr octree;
+    if (const auto it = m_octrees.find(id); it != m_octrees.end()) {
+        octree = std::move(it->second);
+        m_octrees.erase(it);
+    }
+    bool loadDropped = false;
+    if (const auto it = m_loads.find(id); it != m_loads.end()) {
+        if (it->second) it->second->cancel();
+        m_loads.erase(it);
+        loadDropped = true;
+    }
+    Q_EMIT fragmentRemoved(id);
+    if (loadDropped && m_loads.empty()) Q_EMIT loadingFinished(std::exchange(m_loadErrors, {}));
+    return {std::move(fragment), std::move(octree)};
+}
+
+void SceneDocument::resetScene(core::scene::Scene scene)
+{
+    cancelLoads();
+    Q_EMIT sceneAboutToBeReset();
+    m_undo->clear();
+    m_scene = std::move(scene);
+    m_octrees.clear();
+    m_developpees.clear();
+    Q_EMIT sceneReset();
+}
+
+void SceneDocument::setProjectPath(const QString& path)
+{
+    if (path == m_path) return;
+    m_path = path;
+    Q_EMIT projectPathChanged(m_path);
+}
+
+void SceneDocument::startLoad(FragmentId id)
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || f->octreeMissing || m_loads.count(id) || m_octrees.count(id)) return;
+    const std::filesystem::path path = f->octreePath;
+    auto* watcher = m_tasks.start<OpenedOctree>(
+        tr("Opening %1").arg(QString::fromStdString(f->name)),
+        [path](QPromise<OpenedOctree>& promise, core::ProgressSink& progress) {
+            auto opened = core::octree::PackedOctree::open(path);
+            if (progress.isCancelRequested()) return;
+            OpenedOctree out;
+            if (opened) out.octree = std::make_shared<const core::octree::PackedOctree>(std::move(opened).value());
+            else out.error = opened.error();
+            progress.update(1.0);
+            promise.addResult(std::move(out));
+        });
+    m_loads[id] = watcher;
+    connect(watcher, &QFutureWatcherBase::finished, this, [this, id, watcher] { loadEnded(id, watcher); });
+}
+
+void SceneDocument::loadEnded(FragmentId id, QFutureWatcherBase* watcher)
+{
+    const auto it = m_loads.find(id);
+    if (it == m_loads.end() || it->second != watcher) return; // dropped by a reset or a removal
+    m_loads.erase(it);
+    auto* typed = static_cast<QFutureWatcher<OpenedOctree>*>(watcher);
+    const Fragment* f = m_scene.find(id);
+    if (f && !typed->isCanceled() && typed->future().resultCount() > 0) {
+        OpenedOctree opened = typed->result();
+        if (opened.octree) {
+            m_octrees[id] = std::move(opened.octree);
+        } else if (opened.error) {
+            m_loadErrors << ErrorText::loadFailure(qtPath(f->octreePath), *opened.error);
+            changeFragment(id, [](Fragment& fragment) { fragment.octreeMissing = true; });
+        }
+        Q_EMIT octreeChanged(id);
+    }
+    if (m_loads.empty()) Q_EMIT loadingFinished(std::exchange(m_loadErrors, {}));
+}
+
+void SceneDocument::cancelLoads()
+{
+    for (auto& entry : m_loads)
+        if (entry.second) entry.second->cancel();
+    m_loads.clear();
+    m_loadErrors.clear();
+}
+
+} // namespace stylos::widgets

@@ -1,0 +1,34 @@
+#pragma once
+/** @file
+ * @brief Undo command: adds a fragment (with its opened octree, if any) to a SceneDocument. The fragment's
+ *        id is allocated when the command is made and kept through undo and redo; redo puts it back at
+ *        the same position. GUI thread only.
+ */
+#include "stylos/widgets/document/SceneDocument.h"
+
+#include <QCoreApplication>
+#include <QUndoCommand>
+
+namespace stylos::widgets {
+
+class AddFragmentCommand : public QUndoCommand {
+    Q_DECLARE_TR_FUNCTIONS(stylos::widgets::AddFragmentCommand)
+
+public:
+    /** @p text names the step; empty: "Add NAME". */
+    AddFragmentCommand(SceneDocument& document, core::scene::Fragment fragment, SceneDocument::OctreePtr octree,
+                       const QString& text = {}, QUndoCommand* parent = nullptr);
+
+    core::scene::FragmentId fragmentId() const { return m_fragment.id; }
+
+    void redo() override;
+    void undo() override;
+
+private:
+    SceneDocument& m_document;
+    core::scene::Fragment m_fragment;  ///< as it was when last removed by undo()
+    SceneDocument::OctreePtr m_octree;
+    int m_index = -1;                  ///< position, fixed at the first redo()
+};
+
+} // namespace stylos::widgets
