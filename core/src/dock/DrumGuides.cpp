@@ -1,0 +1,169 @@
+#include "stylos/core/dock/DrumGuides.h"
+
+#include "FluteProfile.h"
+
+#include "stylos/core/unroll/SurfaceFit.h"
+#include "stylos/core/util/SubProgress.h"
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <numbers>
+#include <string>
+
+namespace stylos::core::dock {
+namespace {
+
+constexpr double kTwoPi = 2.0 * std::numbers::pi;
+constexpr std::size_t kMaxLateral = 2'000'000;  ///< lateral points kept (fixed stride over the cloud)
+constexpr std::size_t kMaxSpectrum = 200'000;   ///< of them in the frequency scan
+constexpr std::size_t kMinLateral = 1000;
+constexpr int kMinScan = 12, kMaxScan = 64;
+constexpr double kMinStrength = 6.0;            ///< |S_N| over the noise level
+constexpr double kMinOverMedian = 3.0;          ///< |S_N| over the median of the scan
+constexpr std::size_t kCancelEvery = 1u << 14;
+
+Error invalid(const cloud::PointCloud& cloud, const std::string& problem)
+{
+    return Error::at(ErrorCode::InvalidArgument, cloud.source, {}, problem);
+}
+
+/** e₁: the world axis least aligned with @p d, projected onto the plane ⊥ d. */
+Eigen::Vector3d referenceDirection(const Eigen::Vector3d& d)
+{
+    Eigen::Index least = 0;
+    d.cwiseAbs().minCoeff(&least);
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(least);
+    return (e - e.dot(d) * d).normalized();
+}
+
+double percentile(std::vector<double> v, double q)
+{
+    const auto at = v.begin() + std::ptrdiff_t(std::clamp(q, 0.0, 1.0) * double(v.size() - 1));
+    std::nth_element(v.begin(), at, v.end());
+    return *at;
+}
+
+struct Frame {
+    Eigen::Vector3d point, d, e1, e2; // point relative to the cloud's origin
+};
+
+/** The lateral points: within ±band of the radius, inside the drum away from the beds. */
+Result<LateralSamples> lateralSamples(const cloud::PointCloud& cloud, const Frame& f, double radius, double band,
+                                      ProgressSink* progress)
+{
+    const std::size_t n = cloud.size();
+    const std::size_t stride = std::max<std::size_t>(1, (n + kMaxLateral - 1) / kMaxLateral);
+    std::vector<double> t, theta, rho;
+    for (std::size_t i = 0; i < n; i += stride) {
+        if ((i / stride) % kCancelEvery == 0 && progress) {
+            if (progress->isCancelRequested()) return Error{ErrorCode::Cancelled, cloud.source + ": cancelled"};
+            progress->update(double(i) / double(n));
+        }
+        const Eigen::Vector3d w = cloud.local(i) - f.point;
+        const double x = w.dot(f.e1), y = w.dot(f.e2), r = std::hypot(x, y);
+        if (std::abs(r - radius) > band) continue;
+        t.push_back(w.dot(f.d));
+        theta.push_back(std::atan2(y, x));
+        rho.push_back(r);
+    }
+    if (t.size() < kMinLateral) return invalid(cloud, "too few points on the drum's lateral surface to find its flutes");
+    const double lo = percentile(t, 0.01), hi = percentile(t, 0.99);
+    const double margin = std::max(0.02 * (hi - lo), 0.005);
+    LateralSamples s;
+    for (std::size_t i = 0; i < t.size(); ++i)
+        if (t[i] > lo + margin && t[i] < hi - margin) {
+            s.theta.push_back(theta[i]);
+            s.rho.push_back(rho[i]);
+        }
+    return s;
+}
+
+} // namespace
+
+Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOptions& options, ProgressSink* progress)
+{
+    const auto start = std::chrono::steady_clock::now();
+    if (options.flutes != 0 && (options.flutes < 3 || options.flutes > 1000))
+        return invalid(cloud, "flute count " + std::to_string(options.flutes) + " outside 3..1000");
+    unroll::FitOptions fit;
+    fit.kind = unroll::SurfaceKind::Cylinder;
+    fit.axis = options.axis;
+    fit.threads = options.threads;
+    fit.seed = options.seed;
+    SubProgress fitProgress(progress, 0.0, 0.8);
+    auto report = unroll::fitSurface(cloud, fit, progress ? &fitProgress : nullptr);
+    if (!report) return report.error();
+
+    DrumGuides g;
+    g.axis = report->surface.axis();
+    g.fitRms = report->rmsResidual;
+    const double fitted = report->surface.radius();
+    Frame f{g.axis.point - cloud.origin, g.axis.direction, referenceDirection(g.axis.direction), {}};
+    f.e2 = f.d.cross(f.e1);
+    g.reference = f.e1;
+
+    SubProgress lateralProgress(progress, 0.8, 0.9);
+    auto lateral = lateralSamples(cloud, f, fitted, std::max(0.03 * fitted, 4.0 * g.fitRms),
+                                  progress ? &lateralProgress : nullptr);
+    if (!lateral) return lateral.error();
+    if (lateral->size() < kMinLateral)
+        return invalid(cloud, "too few points on the drum's lateral surface to find its flutes");
+    const LateralSamples& s = *lateral;
+    g.lateralPoints = s.size();
+
+    const double medianRho = percentile(s.rho, 0.5);
+    const int lo = options.flutes ? options.flutes : kMinScan, hi = options.flutes ? options.flutes : kMaxScan;
+    const FluteFrequency freq = strongestFrequency(s, medianRho, lo, hi, kMaxSpectrum);
+    g.strength = freq.noise > 0.0 ? freq.amplitude / freq.noise : 0.0;
+    const bool scanned = options.flutes == 0;
+    if (g.strength < kMinStrength || (scanned && freq.amplitude < kMinOverMedian * freq.medianAmplitude)) {
+        char text[200];
+        std::snprintf(text, sizeof text,
+                      "no flutes found: the strongest of %d..%d flutes stands %.1f times over the noise "
+                      "(at least %.0f needed)", lo, hi, g.strength, kMinStrength);
+        return invalid(cloud, text);
+    }
+    if (progress && progress->isCancelRequested()) return Error{ErrorCode::Cancelled, cloud.source + ": cancelled"};
+
+    g.flutes = freq.count;
+    const double pitch = kTwoPi / g.flutes;
+    double phase = freq.phase;
+    for (int round = 0; round < 2; ++round) phase += FluteProfile(s, g.flutes, phase).bottomOffset();
+    phase -= pitch * std::floor(phase / pitch);
+    const FluteProfile profile(s, g.flutes, phase);
+    g.phase = phase;
+    g.radius = profile.leadingRadius();
+    g.fluteDepth = g.radius - profile.bottomRadius();
+    if (!std::isfinite(g.radius) || !(g.fluteDepth > 0.0))
+        return invalid(cloud, "the flute profile has no depth (too few points per flute)");
+
+    std::vector<double> residual;
+    residual.reserve(s.size());
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const double r = s.rho[i] - profile.at(profile.fold(s.theta[i]));
+        if (std::isfinite(r)) residual.push_back(r);
+    }
+    std::vector<double> absolute(residual.size());
+    std::transform(residual.begin(), residual.end(), absolute.begin(), [](double r) { return std::abs(r); });
+    const double limit = 5.0 * 1.4826 * percentile(absolute, 0.5);
+    double sum = 0.0;
+    std::size_t kept = 0;
+    for (double r : residual)
+        if (std::abs(r) <= limit) sum += r * r, ++kept;
+    g.rms = kept ? std::sqrt(sum / double(kept)) : 0.0;
+
+    const double bottom = g.radius - g.fluteDepth;
+    for (int k = 0; k < g.flutes; ++k) {
+        const double a = phase + k * pitch;
+        g.fluteLines.push_back({g.axis.point + bottom * (std::cos(a) * f.e1 + std::sin(a) * f.e2), g.axis.direction});
+    }
+    if (progress) progress->update(1.0);
+    g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return g;
+}
+
+} // namespace stylos::core::dock
