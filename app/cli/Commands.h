@@ -11,5 +11,6 @@ int runNormals(const std::vector<std::string>& args);
 int runBuild(const std::vector<std::string>& args);
 int runUnroll(const std::vector<std::string>& args);
 int runAo(const std::vector<std::string>& args);
+int runGuides(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

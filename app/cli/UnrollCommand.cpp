@@ -1,6 +1,7 @@
 // stylos-cli unroll IN -o OUT.png|tif|exr [--surface cylinder|cone|revolution] [--axis PX,PY,PZ,DX,DY,DZ]
 //                    [--shading height|light|skydome] [--directions D] [--pixel-size M] [--cut-angle DEG]
 //                    [--heights OUT.tif|exr] [--bits 8|16] [--threads N] [--json]
+#include "AxisArgument.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
@@ -16,7 +17,6 @@
 #include <cstdio>
 #include <iostream>
 #include <numbers>
-#include <sstream>
 
 namespace stylos::cli {
 
@@ -27,35 +27,6 @@ namespace dev = core::developpee;
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-/** "PX,PY,PZ,DX,DY,DZ" → an axis with a unit direction; false with @p problem set otherwise. */
-bool parseAxis(const std::string& text, unroll::Axis& axis, std::string& problem)
-{
-    std::vector<double> values;
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v)) {
-            problem = "--axis: \"" + item + "\" is not a number";
-            return false;
-        }
-        values.push_back(v);
-    }
-    if (values.size() != 6) {
-        problem = "--axis needs six numbers PX,PY,PZ,DX,DY,DZ, got " + std::to_string(values.size());
-        return false;
-    }
-    axis.point = {values[0], values[1], values[2]};
-    axis.direction = {values[3], values[4], values[5]};
-    if (axis.direction.norm() < 1e-12) {
-        problem = "--axis: the direction is a zero vector";
-        return false;
-    }
-    axis.direction.normalize();
-    return true;
-}
 
 struct UnrollRequest {
     dev::DeveloppeeOptions options;

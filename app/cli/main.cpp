@@ -26,6 +26,7 @@ constexpr Command Commands[] = {
     {"build", runBuild, "build IN -o OUT.poct", "build the packed point octree of a scan (or of --synthetic-drum N)"},
     {"unroll", runUnroll, "unroll IN -o OUT.png", "the développée of a drum: fit, unroll, fill holes, shade (skydome)"},
     {"ao", runAo, "ao IN -o OUT.ply|poct", "3D skydome (ambient occlusion) of the octree's cells"},
+    {"guides", runGuides, "guides DRUM -o G.json", "guides of an intact drum: axis, leading radius, flutes and their lines"},
 };
 
 void printUsage()
