@@ -112,9 +112,9 @@ int runGuides(const std::vector<std::string>& args)
     } else {
         const dock::DrumGuides& g = *guides;
         std::printf("guides of %s in %s: %d flutes %.3f mm deep, phase %.4f deg, leading radius %.3f mm, "
-                    "RMS %.3f mm (%.2f s)\n",
+                    "RMS %.3f mm (read %.2f s, guides %.2f s, total %.2f s)\n",
                     r.input.c_str(), r.output.c_str(), g.flutes, g.fluteDepth * 1e3, g.phase * 180.0 / std::numbers::pi,
-                    g.radius * 1e3, g.rms * 1e3, seconds);
+                    g.radius * 1e3, g.rms * 1e3, seconds - g.seconds, g.seconds, seconds);
     }
     return ExitOk;
 }
