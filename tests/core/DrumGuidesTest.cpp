@@ -171,7 +171,9 @@ TEST(DrumGuidesTest, PlainCylinderHasNoFlutes)
     const auto g = fitDrumGuides(scan.cloud);
     ASSERT_FALSE(g.ok());
     EXPECT_EQ(g.error().code, ErrorCode::InvalidArgument);
-    EXPECT_NE(g.error().message.find("no flutes"), std::string::npos) << g.error().message;
+    EXPECT_NE(g.error().message.find("no flutes found: the strongest of 12..64"), std::string::npos)
+        << g.error().message;
+    std::printf("[ measured ] plain cylinder: %s\n", g.error().message.c_str());
     EXPECT_EQ(g.error().message.rfind(scan.cloud.source, 0), 0u) << g.error().message;
 }
 
@@ -183,6 +185,17 @@ TEST(DrumGuidesTest, BadFluteCountIsRefused)
     const auto g = fitDrumGuides(scan.cloud, options);
     ASSERT_FALSE(g.ok());
     EXPECT_EQ(g.error().code, ErrorCode::InvalidArgument);
+}
+
+TEST(DrumGuidesTest, WrongGivenCountIsRefused)
+{
+    const auto& scan = drum(48);
+    GuideOptions options;
+    options.flutes = 37;
+    const auto g = fitDrumGuides(scan.cloud, options);
+    ASSERT_FALSE(g.ok());
+    EXPECT_EQ(g.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(g.error().message.find("no flutes found: 37 flutes"), std::string::npos) << g.error().message;
 }
 
 TEST(DrumGuidesTest, CancelStops)

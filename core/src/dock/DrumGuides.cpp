@@ -22,8 +22,8 @@ constexpr std::size_t kMaxLateral = 2'000'000;  ///< lateral points kept (fixed 
 constexpr std::size_t kMaxSpectrum = 200'000;   ///< of them in the frequency scan
 constexpr std::size_t kMinLateral = 1000;
 constexpr int kMinScan = 12, kMaxScan = 64;
-constexpr double kMinStrength = 6.0;            ///< |S_N| over the noise level
-constexpr double kMinOverMedian = 3.0;          ///< |S_N| over the median of the scan
+constexpr double kMinStrength = 30.0;  ///< |S_N| over the noise level (generated drums 200–270, a plain one 11)
+constexpr double kMinOverMedian = 8.0; ///< |S_N| over the scan's median (generated drums 70–110, a plain one 2)
 constexpr std::size_t kCancelEvery = 1u << 14;
 
 Error invalid(const cloud::PointCloud& cloud, const std::string& problem)
@@ -122,9 +122,15 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
     const bool scanned = options.flutes == 0;
     if (g.strength < kMinStrength || (scanned && freq.amplitude < kMinOverMedian * freq.medianAmplitude)) {
         char text[200];
-        std::snprintf(text, sizeof text,
-                      "no flutes found: the strongest of %d..%d flutes stands %.1f times over the noise "
-                      "(at least %.0f needed)", lo, hi, g.strength, kMinStrength);
+        if (scanned)
+            std::snprintf(text, sizeof text,
+                          "no flutes found: the strongest of %d..%d flutes stands %.1f times over the noise and "
+                          "%.1f times over the median of the others (at least %.0f and %.0f needed)",
+                          lo, hi, g.strength, freq.amplitude / std::max(freq.medianAmplitude, 1e-300),
+                          kMinStrength, kMinOverMedian);
+        else
+            std::snprintf(text, sizeof text, "no flutes found: %d flutes stand %.1f times over the noise (at least %.0f needed)",
+                          lo, g.strength, kMinStrength);
         return invalid(cloud, text);
     }
     if (progress && progress->isCancelRequested()) return Error{ErrorCode::Cancelled, cloud.source + ": cancelled"};
