@@ -1,6 +1,7 @@
 // stylos-cli guides: a generated drum gives the contract's keys and types, the file holds the same object,
-// the flute count, leading radius and axis agree with the truth, a given axis and count are used; a
-// missing file and a plane of points exit 1 naming the file and write nothing; usage errors exit 2.
+// the flute count, leading radius and axis agree with the truth, a given axis and count are used, a .poct
+// gives the same flutes; a missing file and a plane of points exit 1 naming the file and write nothing;
+// usage errors exit 2.
 #include "CliRunner.h"
 #include "TestSupport.h"
 
@@ -155,4 +156,19 @@ TEST(CliGuides, UsageErrorsExitTwo)
     }
     EXPECT_FALSE(fs::exists(out));
     EXPECT_EQ(runCli({"guides", "--help"}).exitCode, 0);
+}
+
+TEST(CliGuides, PoctInputGivesTheSameFlutes)
+{
+    TempDir dir;
+    const auto scan = generateDrum(dir, "0.004");
+    const auto poct = (dir / "drum.poct").string();
+    ASSERT_EQ(runCli({"build", scan, "-o", poct}).exitCode, 0);
+    const auto run = runCli({"guides", poct, "-o", (dir / "g.json").string(), "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    const auto truth = nlohmann::json::parse(std::ifstream(dir / "drum.truth.json"));
+    EXPECT_EQ(j["flutes"], truth["grooves"]["count"]);
+    EXPECT_NEAR(j["radius"].get<double>(), truth["radius"].get<double>(), 0.0003);
+    EXPECT_NEAR(j["flute_depth"].get<double>(), truth["grooves"]["depth"].get<double>(), 0.0005);
 }
