@@ -1,6 +1,8 @@
 // stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
 //               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--json]
 #include "CommandLine.h"
+
+#include "stylos/core/util/Stopwatch.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
 
@@ -30,9 +32,8 @@ namespace {
 namespace ao = core::ao;
 namespace oct = core::octree;
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using core::Clock;
+using core::secondsSince;
 
 std::string lowerExtension(const fs::path& path)
 {

@@ -2,6 +2,8 @@
 //                    [--shading height|light|skydome] [--directions D] [--pixel-size M] [--cut-angle DEG]
 //                    [--heights OUT.tif|exr] [--bits 8|16] [--threads N] [--json]
 #include "AxisArgument.h"
+
+#include "stylos/core/util/Stopwatch.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
@@ -24,9 +26,8 @@ namespace {
 
 namespace unroll = core::unroll;
 namespace dev = core::developpee;
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using core::Clock;
+using core::secondsSince;
 
 struct UnrollRequest {
     dev::DeveloppeeOptions options;

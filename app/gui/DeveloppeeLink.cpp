@@ -24,11 +24,10 @@ std::optional<core::unroll::Axis> axisGuide(const core::scene::Fragment& fragmen
 
 } // namespace
 
-DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks,
-                               widgets::DeveloppeePanel& dock, widgets::ViewportWidget* viewport, QObject* parent)
+DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::DeveloppeePanel& dock,
+                               widgets::ViewportWidget* viewport, QObject* parent)
     : QObject(parent), m_document(document), m_jobs(document), m_dock(dock), m_viewport(viewport)
 {
-    Q_ASSERT_X(&tasks == &document.tasks(), "DeveloppeeLink", "the jobs run on the document's TaskManager");
     // Every job's end, delivered or dropped (stale, cancelled, fragment gone): the busy mark follows.
     connect(&m_jobs, &widgets::FragmentJobs::ended, this, [this](quint64 id, bool) {
         if (m_dock.fragmentId() == id) m_dock.setBusy(m_jobs.isRunning(id));

@@ -1,7 +1,7 @@
 #pragma once
 /** @file
  * @brief Makes the Développée dock and the 3D view one instrument: Compute in the dock runs a
- *        DeveloppeeJob for the dock's fragment on the TaskManager and shows its result; a click in the
+ *        DeveloppeeJob for the dock's fragment on the document's TaskManager and shows its result; a click in the
  *        développée marks the 3D point in the view (through the fragment's pose), and a pick in the 3D
  *        view on that fragment marks it in the développée (through the inverse pose). The dock follows the
  *        current fragment (setFragment), offering its axis guide and showing the développée last
@@ -23,7 +23,6 @@ namespace stylos::widgets {
 class DeveloppeePanel;
 struct DeveloppeeResult;
 class SceneDocument;
-class TaskManager;
 class ViewportWidget;
 } // namespace stylos::widgets
 
@@ -33,9 +32,10 @@ class DeveloppeeLink : public QObject {
     Q_OBJECT
 
 public:
-    /** None owned; @p viewport may be null (no OpenGL: no 3D markers); @p tasks must be the document's. */
-    DeveloppeeLink(widgets::SceneDocument& document, widgets::TaskManager& tasks, widgets::DeveloppeePanel& dock,
-                   widgets::ViewportWidget* viewport, QObject* parent = nullptr);
+    /** None owned; @p viewport may be null (no OpenGL: no 3D markers). The jobs run on the document's
+     *  TaskManager. */
+    DeveloppeeLink(widgets::SceneDocument& document, widgets::DeveloppeePanel& dock, widgets::ViewportWidget* viewport,
+                   QObject* parent = nullptr);
 
     /** @brief The fragment Compute works on (the Scene dock's current one); NoFragment for none. */
     void setFragment(core::scene::FragmentId id);

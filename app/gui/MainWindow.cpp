@@ -106,7 +106,7 @@ void MainWindow::createDocks()
     m_developpeeDock = new DeveloppeeDock(this);
     // A développée is wide (a drum's circumference by its height): it gets the bottom, under the 3D view.
     addDockWidget(Qt::BottomDockWidgetArea, m_developpeeDock);
-    m_developpeeLink = new DeveloppeeLink(*m_document, *m_tasks, m_developpeeDock->panel(), m_viewport, this);
+    m_developpeeLink = new DeveloppeeLink(*m_document, m_developpeeDock->panel(), m_viewport, this);
     connect(m_developpeeLink, &DeveloppeeLink::finished, this, &MainWindow::report);
 
     m_tasksDock = new TasksDock(*m_tasks, this);

@@ -156,7 +156,7 @@ void FragmentJobsTest::aDeveloppeeNeverAttachesToTheNextProject()
     SceneDocument document(tasks);
     QVERIFY(openAndWait(document, m_projectA));
     DeveloppeePanel dock;
-    stylos::app::DeveloppeeLink link(document, tasks, dock, nullptr);
+    stylos::app::DeveloppeeLink link(document, dock, nullptr);
     link.setFragment(1);
     auto slow = dock.settings();
     slow.directions = stylos::widgets::DeveloppeeSettings::MaxDirections; // seconds: still running below

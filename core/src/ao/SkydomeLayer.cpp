@@ -1,23 +1,16 @@
 #include "stylos/core/ao/SkydomeLayer.h"
 
+#include "stylos/core/util/Stopwatch.h"
+
 #include "stylos/core/ao/AoCells.h"
 #include "stylos/core/ao/AoExport.h"
 #include "stylos/core/util/SubProgress.h"
 
-#include <chrono>
 #include <numeric>
 #include <string>
 #include <vector>
 
 namespace stylos::core::ao {
-
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
-
-} // namespace
 
 Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,
                                                const SkydomeLayerOptions& options, ProgressSink* progress)

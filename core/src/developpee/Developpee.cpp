@@ -1,11 +1,12 @@
 #include "stylos/core/developpee/Developpee.h"
 
+#include "stylos/core/util/Stopwatch.h"
+
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/shading/ContrastStretch.h"
 #include "stylos/core/shading/SkydomeShading.h"
 #include "stylos/core/util/SubProgress.h"
 
-#include <chrono>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -15,9 +16,6 @@ namespace stylos::core::developpee {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /** Where each step ends in [0, 1] of the caller's progress. */
 struct Split {

@@ -1,5 +1,7 @@
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
 
+#include "stylos/core/util/Stopwatch.h"
+
 #include "stylos/core/image/ImageWriter.h"
 
 #include "tasks/ErrorText.h"
@@ -16,9 +18,8 @@ namespace stylos::widgets {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
-double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+using core::Clock;
+using core::secondsSince;
 
 core::Error cancelled(const QString& path)
 {
