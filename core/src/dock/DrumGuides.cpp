@@ -1,5 +1,7 @@
 #include "stylos/core/dock/DrumGuides.h"
 
+#include "stylos/core/unroll/UnrollMap.h"
+
 #include "FluteProfile.h"
 
 #include "stylos/core/unroll/SurfaceFit.h"
@@ -29,15 +31,6 @@ constexpr std::size_t kCancelEvery = 1u << 14;
 Error invalid(const cloud::PointCloud& cloud, const std::string& problem)
 {
     return Error::at(ErrorCode::InvalidArgument, cloud.source, {}, problem);
-}
-
-/** e₁: the world axis least aligned with @p d, projected onto the plane ⊥ d. */
-Eigen::Vector3d referenceDirection(const Eigen::Vector3d& d)
-{
-    Eigen::Index least = 0;
-    d.cwiseAbs().minCoeff(&least);
-    const Eigen::Vector3d e = Eigen::Vector3d::Unit(least);
-    return (e - e.dot(d) * d).normalized();
 }
 
 double percentile(std::vector<double> v, double q)
@@ -102,7 +95,7 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
     g.axis = report->surface.axis();
     g.fitRms = report->rmsResidual;
     const double fitted = report->surface.radius();
-    Frame f{g.axis.point - cloud.origin, g.axis.direction, referenceDirection(g.axis.direction), {}};
+    Frame f{g.axis.point - cloud.origin, g.axis.direction, unroll::defaultReferenceDir(g.axis.direction), {}};
     f.e2 = f.d.cross(f.e1);
     g.reference = f.e1;
 

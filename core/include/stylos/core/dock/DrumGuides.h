@@ -6,9 +6,9 @@
  *
  * Method. The axis comes from the cylinder fit (unroll/SurfaceFit.h), or is the one given (then only the
  * radius is fitted). Azimuths θ are measured about the axis direction d from the reference direction
- * e₁: the world axis (x, then y, then z on ties) least aligned with d, projected onto the plane ⊥ d;
- * e₂ = d × e₁. The lateral points are those within a band of ±max(3 %·R, 4 × fit RMS) of the fitted
- * radius R whose axial coordinate lies inside the drum, 2 % of its height (at least 5 mm) away from
+ * e₁ = unroll::defaultReferenceDir(d), the développée's own (so the phase reads the same on the
+ * développée of the same axis); e₂ = d × e₁. The lateral points are those within a band of
+ * ±max(3 %·R, 4 × fit RMS) of the fitted radius R whose axial coordinate lies inside the drum, 2 % of its height (at least 5 mm) away from
  * the bed faces (the 1st–99th percentile of the band's axial coordinates); at most 2 M of them, taken
  * with a fixed stride. Their radial heights h = ρ − median ρ feed the single-frequency sums
  * S_N = Σ h·e^(−iNθ) for N = 12..64 (or the given count); the count is the N with the largest
