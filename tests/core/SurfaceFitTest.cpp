@@ -244,6 +244,24 @@ TEST(SurfaceFitTest, GivenAxisFitsAFragmentsOuterFace)
     EXPECT_LT(report.rmsResidual, 0.004);
 }
 
+TEST(SurfaceFitTest, FindsAFragmentsOwnAxisWithoutHelp)
+{
+    // The outer face is a minority of the fragment's normals: the line complex alone leans towards the
+    // fracture planes (an axis 30° off was accepted); the seed from pairs of normals finds the drum's.
+    for (std::uint64_t seed : {3u, 5u, 8u}) {
+        const auto& scan = test::generatedScan("fragment-own-" + std::to_string(seed), SyntheticKind::Fragment,
+                                               test::coarse(0.004, seed));
+        const FitReport report = fitOk(scan.cloud, kindOptions(SurfaceKind::Cylinder));
+        const Axis truth = trueAxis(scan.truth);
+        const double angle = std::acos(std::min(1.0, std::abs(report.surface.axis().direction.dot(truth.direction))));
+        EXPECT_LT(angle * 180.0 / std::numbers::pi, 0.1) << "seed " << seed;
+        // An arc of 50° leaves the radius and the radial position of the axis weakly determined together
+        // (measured: 0.525–0.538 m and 7–20 mm off for these seeds); docking fixes them against the drum.
+        EXPECT_LT(test::distanceToLine(report.surface.axis().point, truth), 0.03) << "seed " << seed;
+        EXPECT_NEAR(report.surface.radius(), 0.545, 0.03) << "seed " << seed;
+    }
+}
+
 TEST(SurfaceFitTest, RefusesTooFewPoints)
 {
     const test::ConeCloud cone = test::coneCloud(0.5, 0.5, 0.5, 99, 0.0, 0.0, 3);

@@ -11,6 +11,7 @@ namespace stylos::core::unroll::detail {
 namespace {
 
 constexpr std::size_t kMinSamples = 5;
+constexpr double kMinArc = 0.08; ///< of the circle (29°): the shortest arc f is estimated on
 
 } // namespace
 
@@ -55,7 +56,21 @@ double FitAzimuthProfile::estimate(int bins, const std::vector<std::pair<std::ui
     }
     const std::vector<double> previous =
         m_values.size() == values.size() ? m_values : std::vector<double>(values.size(), 0.0);
-    if (count < coverage * bins) {
+    // The arc the points cover: the circle less its longest run of empty bins (a fragment's outer face
+    // covers one arc of 30–90°; a drum all of it). f is kept when that arc holds at least kMinArc of
+    // the circle and @p coverage of its bins hold samples.
+    int longestGap = 0;
+    if (count > 0) {
+        int first = 0;
+        while (!filled[std::size_t(first)]) ++first;
+        for (int k = 1, run = 0; k <= bins; ++k) {
+            const int b = (first + k) % bins;
+            run = filled[std::size_t(b)] ? 0 : run + 1;
+            longestGap = std::max(longestGap, run);
+        }
+    }
+    const int arc = bins - longestGap;
+    if (count == 0 || arc < kMinArc * bins || count < coverage * arc) {
         disable();
         double change = 0.0;
         for (double v : previous)

@@ -17,8 +17,8 @@ namespace stylos::core::unroll::detail {
  * and first harmonics (cos φ, sin φ) over the points removed — those are the radius and the axis position, which the
  * fit itself must find, so f cannot absorb them. A fluted drum's flutes are such a profile; subtracting it leaves the
  * noise, so the trimming threshold comes down to a few σ of the noise and the rim of a broken cavity (shallower than
- * the flutes) no longer passes as inliers and pulls the axis. Disabled (f = 0) unless nearly all bins hold points: on a
- * fragment's partial arc the harmonics are not separable. Immutable between estimate() calls; value() is thread-safe.
+ * the flutes) no longer passes as inliers and pulls the axis. Disabled (f = 0) unless nearly all bins of the covered
+ * arc (the circle less its longest run of empty bins; at least 8 % of it, a fragment's outer face) hold points. Immutable between estimate() calls; value() is thread-safe.
  */
 class FitAzimuthProfile {
   public:
@@ -67,7 +67,8 @@ class FitAzimuthProfile {
      *        than 5 samples) interpolated around the circle, then the least-squares fit of
      *        a + b·cos φ + c·sin φ weighted by the bins' samples removed (so that f sums to about zero
      *        over the points, and the radius stays their least-squares radius). Disables the profile
-     *        when fewer than @p coverage of the bins hold samples.
+     *        when the covered arc (the circle less its longest run of empty bins) is under 8 % of the
+     *        circle or fewer than @p coverage of its bins hold samples.
      * @return the RMS change of f over the bins, metres (the previous profile counting as 0 when disabled).
      */
     double estimate(int bins, const std::vector<std::pair<std::uint32_t, float>>& samples, double coverage);

@@ -3,6 +3,7 @@
 #include "FitBins.h"
 #include "FitCylinder.h"
 #include "FitMeridian.h"
+#include "FitPairSeed.h"
 #include "FitParallel.h"
 #include "FitSample.h"
 #include "FitSeed.h"
@@ -23,7 +24,10 @@ constexpr std::size_t kMinPoints = 100;
 constexpr std::size_t kSeedPoints = 100'000;     ///< the line-complex seed's sample
 constexpr std::size_t kRefinePoints = 1'000'000; ///< the cylinder / cone Gauss–Newton sample
 constexpr std::size_t kMeridianPoints = 200'000; ///< the principal-curve sample
-constexpr std::uint64_t kSeedStream = 1, kRefineStream = 2;
+constexpr std::uint64_t kSeedStream = 1, kRefineStream = 2, kPairStream = 3;
+constexpr int kPairTrials = 400;           ///< candidate axes from pairs of normals (cylinder, cone)
+constexpr double kPairBandOfSize = 0.03;   ///< their inlier band, ± this share of the cloud's size
+constexpr double kPairOverComplex = 1.2;   ///< the pair seed replaces the line complex's with this many times its inliers
 // Refusal: the RMS residual over the inliers against the (mean) radius and against the size of the
 // cloud (RMS distance of its points from their centroid); the measurements behind the values are in
 // SurfaceFit.h.
@@ -324,6 +328,19 @@ Result<FitReport> fitSurface(const cloud::PointCloud& cloud, const FitOptions& o
                 return s.error();
         }
         c.axis = lineComplexAxis(seed, c.frame.centre, c.frame.scale);
+        if (options.kind != SurfaceKind::Revolution) {
+            // A fragment's outer face is a minority of its normals: the line complex leans towards its
+            // fracture planes. Candidates from pairs of normals, scored by inliers, win when clearly better.
+            const double band = kPairBandOfSize * c.frame.scale;
+            AxisScore complexScore;
+            const FitLine complex = polishAxis(seed, c.frame.centre, c.axis, band, complexScore);
+            AxisScore pairScore;
+            const FitLine pair = pairSeedAxis(seed, c.frame.centre, band, kPairTrials,
+                                              splitMix64(options.seed, kPairStream), pairScore);
+            if (double(pairScore.inliers) > kPairOverComplex * double(complexScore.inliers) &&
+                normalsTurnWithTheArc(seed, c.frame.centre, pair, band, pairScore))
+                c.axis = pair;
+        }
     }
     if (c.stage.cancelled()) return cancelled(source);
     c.stage.update(0.2);

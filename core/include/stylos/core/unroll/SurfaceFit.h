@@ -25,7 +25,8 @@
  * (the whole sample) adds f, the median residual per azimuth bin with its mean and first harmonics
  * removed (those are R and the axis position): a fluted drum's flutes, 8 mm deep, leave only the noise, τ
  * comes down from ~10 mm to ~1 mm and the shallow rim of a broken cavity stops pulling the axis. f needs
- * points all round (≥ 98 % of the bins); on a fragment it stays 0. Last, one Gauss–Newton step over every
+ * ≥ 98 % of the bins of the arc the points cover (the circle less its longest empty run) to hold points,
+ * and that arc to be at least 8 % of the circle. Last, one Gauss–Newton step over every
  * point with τ and f fixed; the statistics below come from that pass (taken just before its step, which
  * moves the axis by micrometres). R is the least-squares radius of the inliers: for a fluted drum the
  * mean radius of the flutes as the scan samples them, not the fillet radius.
@@ -73,10 +74,22 @@
  * (51 %, 12 %; 61 %, 12 %); a thick spherical shell (38 %, 29 %; 20 %, 14 %); two spheres 1 m apart: a gap
  * of 0.59 m in 1.4 m.
  *
- * Limitation: the seed needs the surface to carry a good share of the normals. A drum fragment, whose
- * outer face holds about a quarter of its points among fracture and bed faces, gets a wrong axis
- * (accepted at 16 % RMS / radius): give the axis (FitOptions::axis), then only the radius is fitted,
- * and the radius start seeks the densest band of radii, so the outer face is found (test).
+ * Second seed (cylinder, cone): a drum fragment's outer face holds about a quarter of its normals among
+ * fracture and bed faces, and the line complex then leans towards the fracture planes (an axis 90° off,
+ * radius 0.14 m, was accepted). So 400 candidate axes are also drawn from pairs of sample normals
+ * (direction n₁ × n₂, through the crossing of the two normal lines projected ⊥ it), each scored by its
+ * inliers — points within ±3 % of the cloud's size of the densest band of distances from the axis whose
+ * normal is within 30° of radial —, the 8 best polished on their inliers (LO-RANSAC: the direction least
+ * aligned with their normals, the circle through their projections), and the line complex's axis
+ * polished and scored the same way. The pair seed replaces it when it holds 1.2 times its inliers and
+ * its inliers' normals turn with their azimuth as on a circle (regression slope 0.5–1.5: a terrain's
+ * normals stay vertical along a huge arc). On whole drums both agree; generated fragments (50° arcs)
+ * then fit their drum's axis direction within 0.04° (test). The flute profile f (below) is estimated on
+ * the covered arc when the points cover at least 8 % of the circle, so a fragment's flutes are removed
+ * from the residuals as a drum's are. An arc of 50° still leaves the radius and the radial position of
+ * the axis weakly determined together (7–20 mm): docking fixes them against the drum's guides.
+ * With a given axis (FitOptions::axis) only the radius is fitted, and the radius start seeks the densest
+ * band of radii, so a fragment's outer face is found (test).
  *
  * Determinism: the same cloud, options and seed give the same surface bit for bit, whatever the
  * thread count (samples from a counter-based generator; work in fixed chunks reduced in order; integer
