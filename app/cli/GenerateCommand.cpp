@@ -1,4 +1,4 @@
-// stylos-cli generate drum|omphalos|fragment -o OUT.ply [--spacing M] [--seed N] [--scans K] [--noise M]
+// stylos-cli generate drum|omphalos|fragment -o OUT.ply [--spacing M] [--seed N] [--design-seed N] [--scans K] [--noise M]
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
@@ -18,6 +18,7 @@ int runGenerate(const std::vector<std::string>& args)
                    {{"output", "OUT.ply", "the binary PLY to write (its truth goes to OUT.truth.json)", "o"},
                     {"spacing", "M", "sample spacing in metres (default 0.002; 0.0005 gives ~17 M points for the drum)"},
                     {"seed", "N", "random seed (default 1): the same seed gives the same file"},
+                    {"design-seed", "N", "seed of the drum's design (flutes, breaks): a drum and a fragment with the same design seed come from the same drum (default: --seed)"},
                     {"scans", "K", "number of overlapping scans (default 3)"},
                     {"noise", "M", "sensor noise sigma in metres (default 0.00033)"},
                     {"normals", "", "also write the true surface normals"},
@@ -34,13 +35,16 @@ int runGenerate(const std::vector<std::string>& args)
     if (!output || output->empty()) return usageError(cl, "generate needs -o OUT.ply");
 
     core::synth::SyntheticOptions options;
-    long long seed = static_cast<long long>(options.seed), scans = options.scans;
+    long long seed = static_cast<long long>(options.seed), scans = options.scans, designSeed = 0;
     if (!cl.number("spacing", options.spacing) || !cl.integer("seed", seed) || !cl.integer("scans", scans) ||
+        !cl.integer("design-seed", designSeed) ||
         !cl.number("noise", options.noise))
         return usageError(cl, cl.error());
     if (!(options.spacing > 0)) return usageError(cl, "--spacing must be a positive number of metres");
     if (!(options.noise >= 0)) return usageError(cl, "--noise must be zero or a positive number of metres");
     if (seed < 0) return usageError(cl, "--seed must be non-negative");
+    if (designSeed < 0) return usageError(cl, "--design-seed must be non-negative");
+    if (cl.value("design-seed")) options.designSeed = static_cast<std::uint64_t>(designSeed);
     if (scans < 1 || scans > 64) return usageError(cl, "--scans must be between 1 and 64");
     options.seed = static_cast<std::uint64_t>(seed);
     options.scans = static_cast<int>(scans);

@@ -19,6 +19,7 @@
 namespace stylos::core::dock {
 namespace {
 
+static_assert(FluteProfile::Bins == DrumGuides::ProfileBins);
 constexpr double kTwoPi = 2.0 * std::numbers::pi;
 constexpr std::size_t kMaxLateral = 2'000'000;  ///< lateral points kept (fixed stride over the cloud)
 constexpr std::size_t kMaxSpectrum = 200'000;   ///< of them in the frequency scan
@@ -139,6 +140,16 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
     g.fluteDepth = g.radius - profile.bottomRadius();
     if (!std::isfinite(g.radius) || !(g.fluteDepth > 0.0))
         return invalid(cloud, "the flute profile has no depth (too few points per flute)");
+
+    g.profile = profile.medians();
+    for (int b = 0; b < DrumGuides::ProfileBins; ++b) // an empty bin (a sparse scan): its neighbours' mean
+        if (std::isnan(g.profile[std::size_t(b)])) {
+            const double before = profile.medians()[std::size_t((b + DrumGuides::ProfileBins - 1) % DrumGuides::ProfileBins)];
+            const double after = profile.medians()[std::size_t((b + 1) % DrumGuides::ProfileBins)];
+            g.profile[std::size_t(b)] = std::isnan(before) ? after : std::isnan(after) ? before : 0.5 * (before + after);
+        }
+    for (double v : g.profile)
+        if (std::isnan(v)) return invalid(cloud, "the flute profile has empty stretches (too few points per flute)");
 
     std::vector<double> residual;
     residual.reserve(s.size());

@@ -46,6 +46,8 @@ public:
     double bottomRadius() const;
     /** The profile at folded offset @p phi from the bottom (linear between bin centres, periodic). */
     double at(double phi) const;
+    /** The median radius of each bin (NaN where a bin is empty), metres. */
+    const std::vector<double>& medians() const { return m_median; }
     /** Offset of azimuth @p theta from the nearest flute bottom, in [−pitch/2, pitch/2). */
     double fold(double theta) const;
 

@@ -30,6 +30,7 @@ nlohmann::json buildGroundTruth(const GroundTruthInput& input)
     t["units"] = "metres, radians";
     t["kind"] = input.kind;
     t["seed"] = o.seed;
+    if (o.designSeed) t["designSeed"] = *o.designSeed;
     t["spacing"] = o.spacing;
     t["noise"] = o.noise;
     t["noiseClamp"] = ScanSimulator::kNoiseClamp * o.noise;

@@ -49,15 +49,18 @@ std::string optionsProblem(const SyntheticOptions& o)
 
 std::unique_ptr<SyntheticObject> makeObject(SyntheticKind kind, const SyntheticOptions& options, Random& random)
 {
+    std::optional<Random> design;
+    if (options.designSeed) design.emplace(*options.designSeed);
+    Random& drumRandom = design ? *design : random;
     switch (kind) {
     case SyntheticKind::Omphalos: return std::make_unique<OmphalosShape>(OmphalosParameters::random(random));
     case SyntheticKind::Fragment: {
-        const DrumParameters drum = DrumParameters::fromOptions(options, random);
+        const DrumParameters drum = DrumParameters::fromOptions(options, drumRandom);
         return std::make_unique<FragmentShape>(drum, FragmentParameters::random(drum, random));
     }
     case SyntheticKind::Drum: break;
     }
-    return std::make_unique<DrumShape>(DrumParameters::fromOptions(options, random));
+    return std::make_unique<DrumShape>(DrumParameters::fromOptions(options, drumRandom));
 }
 
 Eigen::Affine3d randomPose(std::uint64_t seed)
@@ -94,7 +97,7 @@ Result<SyntheticReport> generateScan(SyntheticKind kind, const SyntheticOptions&
     if (std::string problem = optionsProblem(options); !problem.empty()) return invalid(output, problem);
     Random random(options.seed);
     if (kind != SyntheticKind::Omphalos) {
-        Random probe(options.seed);
+        Random probe(options.designSeed.value_or(options.seed));
         if (std::string problem = DrumParameters::fromOptions(options, probe).problem(); !problem.empty())
             return invalid(output, problem);
     }

@@ -333,7 +333,7 @@ Result<FitReport> fitSurface(const cloud::PointCloud& cloud, const FitOptions& o
             // fracture planes. Candidates from pairs of normals, scored by inliers, win when clearly better.
             const double band = kPairBandOfSize * c.frame.scale;
             AxisScore complexScore;
-            const FitLine complex = polishAxis(seed, c.frame.centre, c.axis, band, complexScore);
+            polishAxis(seed, c.frame.centre, c.axis, band, complexScore); // its score only: the axis stays the complex's
             AxisScore pairScore;
             const FitLine pair = pairSeedAxis(seed, c.frame.centre, band, kPairTrials,
                                               splitMix64(options.seed, kPairStream), pairScore);

@@ -70,6 +70,11 @@ struct DrumGuides {
     int flutes = 0;               ///< flute count
     double phase = 0.0;           ///< azimuth of flute 0's bottom from reference, radians, in [0, 2π/flutes)
     std::vector<FluteLine> fluteLines; ///< flute k's bottom line, k = 0..flutes−1 counter-clockwise about axis
+    /** The flute profile: the median distance from the axis in ProfileBins equal bins of one pitch centred
+     *  on a flute bottom (bin b's centre at (b + ½ − ProfileBins/2)·pitch/ProfileBins from it), metres;
+     *  what a fragment is registered against (FluteModel). Empty bins hold their neighbours' mean. */
+    std::vector<double> profile;
+    static constexpr int ProfileBins = 64;
     double rms = 0.0;             ///< RMS of the radial residual against the flute profile, metres
     double fitRms = 0.0;          ///< the cylinder fit's RMS residual, metres
     double strength = 0.0;        ///< |S_N| / Σ 1 over the noise level √(Σ h²) / Σ 1 (≥ 30 when accepted)

@@ -27,6 +27,10 @@ struct SyntheticOptions {
      *  2.1 M at 0.5 mm. Points scale as 1/spacing²; over about 2e9 is refused (InvalidArgument). */
     double spacing = 0.002;
     std::uint64_t seed = 1;        ///< same seed, same file, byte for byte
+    /** The seed of the drum's design (flute phase, broken region, fracture noise) when it differs from
+     *  the scan's: a drum and a fragment with the same design seed come from the same drum, scanned with
+     *  different noise, registration and pose (the fragment's sector then comes from @p seed). */
+    std::optional<std::uint64_t> designSeed;
     int scans = 3;                 ///< overlapping scans, each with its own small registration offset
     double noise = 0.00033;        ///< sensor noise σ in metres, along the line of sight
     bool writeNormals = false;     ///< also write the true surface normals (real scans have none)

@@ -1,0 +1,118 @@
+// dockFragment: generated fragments docked against the guides of a generated drum of the same design
+// (different noise, registration and pose) from perturbed starts; z reported unobservable and kept;
+// locks hold exactly; refusals (no flutes, too far) leave nothing half done.
+#include "DockTestSupport.h"
+
+#include "stylos/core/dock/DockRegistration.h"
+
+#include <gtest/gtest.h>
+
+
+namespace stylos::core::dock {
+namespace {
+
+const DrumGuides& guides()
+{
+    static const DrumGuides g = [] {
+        auto r = fitDrumGuides(test::dockDrum().cloud);
+        EXPECT_TRUE(r.ok()) << (r.ok() ? "" : r.error().message);
+        return r.ok() ? *r : DrumGuides{};
+    }();
+    return g;
+}
+
+TEST(DockRegistrationTest, DocksFromPerturbedStarts)
+{
+    const DrumFrame frame(guides());
+    for (std::uint64_t seed : {3u, 5u, 8u}) {
+        const auto& fragment = test::dockFragment(seed);
+        const Eigen::Isometry3d truth = test::truePose(fragment, test::dockDrum());
+        const Eigen::Vector3d centre = test::cloudCentre(fragment.cloud);
+        const Eigen::Vector3d centreInDrum = truth * centre;
+        for (const auto& [theta, tilt, radial] : {std::tuple{0.0, 0.0, 0.0}, std::tuple{3.0, 5.0, 0.015},
+                                                  std::tuple{-3.0, -5.0, -0.015}, std::tuple{2.0, -3.0, 0.01}}) {
+            const Eigen::Isometry3d start = test::perturbed(truth, frame, centreInDrum, theta * std::numbers::pi / 180.0,
+                                                            tilt * std::numbers::pi / 180.0, radial);
+            auto result = dockFragment(fragment.cloud, guides(), start);
+            ASSERT_TRUE(result.ok()) << result.error().message;
+            const auto e = test::dockErrors(result->pose, truth, frame, centre);
+            EXPECT_LT(e.thetaDeg, 0.01);
+            EXPECT_LT(e.tiltDeg, 0.02);
+            EXPECT_LT(e.radialMm, 0.05);
+            ASSERT_EQ(result->unobservable.size(), 1u);
+            EXPECT_EQ(result->unobservable[0], DockUnknown::Z);
+            EXPECT_EQ(result->uncertainty.size(), 5u);
+        }
+        // The RMS is what the noise alone leaves: the same measure at the true pose, nothing free.
+        DockOptions fixed;
+        fixed.locked.fill(true);
+        auto atTruth = dockFragment(fragment.cloud, guides(), truth, fixed);
+        ASSERT_TRUE(atTruth.ok()) << atTruth.error().message;
+        EXPECT_TRUE(atTruth->pose.isApprox(truth, 1e-12));
+        auto docked = dockFragment(fragment.cloud, guides(), truth);
+        ASSERT_TRUE(docked.ok());
+        EXPECT_NEAR(docked->rms / atTruth->rms, 1.0, 0.05) << docked->rms << " vs " << atTruth->rms;
+    }
+}
+
+TEST(DockRegistrationTest, LockedUnknownsDoNotMove)
+{
+    const DrumFrame frame(guides());
+    const auto& fragment = test::dockFragment(5);
+    const Eigen::Isometry3d truth = test::truePose(fragment, test::dockDrum());
+    const Eigen::Vector3d centre = test::cloudCentre(fragment.cloud);
+    const Eigen::Isometry3d start = test::perturbed(truth, frame, truth * centre, 0.02, 0.0, 0.004);
+    DockOptions options;
+    for (DockUnknown u : dockUnknownsFromName("theta")) options.locked[std::size_t(u)] = true;
+    for (DockUnknown u : dockUnknownsFromName("tilt")) options.locked[std::size_t(u)] = true;
+    auto result = dockFragment(fragment.cloud, guides(), start, options);
+    ASSERT_TRUE(result.ok()) << result.error().message;
+    // Rotation locked about the axis and in tilt: the rotation part is exactly the start's.
+    EXPECT_TRUE(result->pose.linear().isApprox(start.linear(), 1e-12));
+    EXPECT_EQ(result->snapRotation, 0.0);
+    // r is free: the 4 mm radial offset is taken back.
+    const auto e = test::dockErrors(result->pose, truth, frame, centre);
+    EXPECT_LT(e.radialMm, 0.5);
+    EXPECT_EQ(result->uncertainty.size(), 2u); // r and tangent
+}
+
+TEST(DockRegistrationTest, NamesUnknownsAndLocks)
+{
+    EXPECT_STREQ(dockUnknownName(DockUnknown::TiltRoll), "tilt_roll");
+    EXPECT_EQ(dockUnknownsFromName("tilt").size(), 2u);
+    EXPECT_EQ(dockUnknownsFromName("z"), std::vector<DockUnknown>{DockUnknown::Z});
+    EXPECT_TRUE(dockUnknownsFromName("yaw").empty());
+}
+
+TEST(DockRegistrationTest, RefusesAStartFarFromTheDrum)
+{
+    const auto& fragment = test::dockFragment(5);
+    Eigen::Isometry3d far = test::truePose(fragment, test::dockDrum());
+    far.translation() += Eigen::Vector3d(0.0, 0.0, 5.0); // 5 m off, along z of the file frame
+    far = Eigen::Translation3d(2.0, 2.0, 0.0) * far;
+    auto result = dockFragment(fragment.cloud, guides(), far);
+    ASSERT_FALSE(result.ok());
+    EXPECT_EQ(result.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(result.error().message.find("too far from the drum"), std::string::npos) << result.error().message;
+}
+
+TEST(DockRegistrationTest, RefusesAFragmentWithoutFlutes)
+{
+    auto o = test::allRound(0.004, 9, 0); // a plain drum's fragment
+    const auto& plain = test::generatedScan("dock-plain-fragment", synth::SyntheticKind::Fragment, o);
+    auto result = dockFragment(plain.cloud, guides(), Eigen::Isometry3d(test::truePose(plain, test::dockDrum())));
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(result.error().message.find("no readable flutes"), std::string::npos) << result.error().message;
+}
+
+TEST(DockRegistrationTest, RefusesGuidesWithoutAProfile)
+{
+    DrumGuides g = guides();
+    g.profile.clear();
+    auto result = dockFragment(test::dockFragment(5).cloud, g, Eigen::Isometry3d::Identity());
+    ASSERT_FALSE(result.ok());
+    EXPECT_NE(result.error().message.find("no flute profile"), std::string::npos) << result.error().message;
+}
+
+} // namespace
+} // namespace stylos::core::dock
