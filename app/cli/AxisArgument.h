@@ -1,13 +1,26 @@
 #pragma once
-// The --axis PX,PY,PZ,DX,DY,DZ argument shared by the commands that accept a given axis (unroll, guides).
+// The geometric arguments shared by the commands: --axis PX,PY,PZ,DX,DY,DZ (unroll, guides, dock) and
+// --pose R00,…,R22,TX,TY,TZ (dock), read from comma-separated numbers.
 #include "stylos/core/unroll/Surface.h"
 
+#include <Eigen/Geometry>
+
+#include <cstddef>
 #include <string>
+#include <vector>
 
 namespace stylos::cli {
+
+/** @p count comma-separated finite numbers; false with @p problem set (naming @p option) otherwise. */
+bool parseNumberList(const std::string& text, const std::string& option, std::size_t count, std::vector<double>& values,
+                     std::string& problem);
 
 /** "PX,PY,PZ,DX,DY,DZ" (metres) → an axis with a unit direction; false with @p problem set (naming
  *  --axis and what is wrong) otherwise. */
 bool parseAxis(const std::string& text, core::unroll::Axis& axis, std::string& problem);
+
+/** "R00,R01,R02,R10,R11,R12,R20,R21,R22,TX,TY,TZ" (row-major rotation, metres) → a rigid pose; the
+ *  rotation must be one (orthonormal within 1e-6, determinant +1): false with @p problem set otherwise. */
+bool parsePose(const std::string& text, Eigen::Isometry3d& pose, std::string& problem);
 
 } // namespace stylos::cli

@@ -12,5 +12,6 @@ int runBuild(const std::vector<std::string>& args);
 int runUnroll(const std::vector<std::string>& args);
 int runAo(const std::vector<std::string>& args);
 int runGuides(const std::vector<std::string>& args);
+int runDock(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

@@ -6,6 +6,7 @@
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/dock/DrumGuides.h"
+#include "stylos/core/dock/GuidesFile.h"
 #include "stylos/core/util/AtomicTextFile.h"
 
 #include <nlohmann/json.hpp>
@@ -55,25 +56,6 @@ int fail(const core::Error& error)
     return ExitFailure;
 }
 
-nlohmann::json vectorJson(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
-
-/** The command-line contract's object: exactly its keys. */
-nlohmann::json guidesJson(const dock::DrumGuides& g, double seconds)
-{
-    nlohmann::json lines = nlohmann::json::array();
-    for (const dock::FluteLine& l : g.fluteLines)
-        lines.push_back({{"point", vectorJson(l.point)}, {"direction", vectorJson(l.direction)}});
-    return {{"axis_point", vectorJson(g.axis.point)},
-            {"axis_dir", vectorJson(g.axis.direction)},
-            {"radius", g.radius},
-            {"flute_depth", g.fluteDepth},
-            {"flutes", g.flutes},
-            {"flute_lines", std::move(lines)},
-            {"phase_deg", g.phase * 180.0 / std::numbers::pi},
-            {"rms", g.rms},
-            {"seconds", seconds}};
-}
-
 } // namespace
 
 int runGuides(const std::vector<std::string>& args)
@@ -97,7 +79,7 @@ int runGuides(const std::vector<std::string>& args)
     if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
 
     const auto start = std::chrono::steady_clock::now();
-    auto cloud = core::cloud::loadPointCloud(r.input, {.keepNormals = true});
+    auto cloud = core::cloud::loadPointCloud(r.input);
     if (!cloud) return fail(cloud.error());
     cloud->source = r.input;
     ConsoleProgress progress("fitting the guides of " + r.input);
@@ -105,7 +87,7 @@ int runGuides(const std::vector<std::string>& args)
     if (!guides) return fail(guides.error());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-    const std::string text = guidesJson(*guides, seconds).dump();
+    const std::string text = dock::guidesToJson(*guides, seconds).dump();
     if (auto s = core::writeTextFileAtomically(r.output, text + "\n"); !s) return fail(s.error());
     if (r.json) {
         std::cout << text << "\n";

@@ -27,6 +27,7 @@ constexpr Command Commands[] = {
     {"unroll", runUnroll, "unroll IN -o OUT.png", "the développée of a drum: fit, unroll, fill holes, shade (skydome)"},
     {"ao", runAo, "ao IN -o OUT.ply|poct", "3D skydome (ambient occlusion) of the octree's cells"},
     {"guides", runGuides, "guides DRUM -o G.json", "guides of an intact drum: axis, leading radius, flutes and their lines"},
+    {"dock", runDock, "dock FRAGMENT --drum DRUM", "dock a fragment against a drum's guides: flute snap and registration"},
 };
 
 void printUsage()

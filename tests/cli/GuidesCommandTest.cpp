@@ -55,7 +55,7 @@ TEST(CliGuides, DrumGivesTheContractKeysAndTheFileEqualsTheJson)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
     const std::vector<std::string> keys{"axis_point", "axis_dir", "radius", "flute_depth", "flutes",
-                                        "flute_lines", "phase_deg", "rms", "seconds"};
+                                        "flute_lines", "phase_deg", "rms", "profile", "seconds"};
     EXPECT_EQ(j.size(), keys.size());
     for (const auto& key : keys) EXPECT_TRUE(j.contains(key)) << key;
     expectVector3(j["axis_point"]);
@@ -71,6 +71,8 @@ TEST(CliGuides, DrumGivesTheContractKeysAndTheFileEqualsTheJson)
         expectVector3(line["direction"]);
         EXPECT_EQ(line["direction"], j["axis_dir"]);
     }
+    ASSERT_TRUE(j["profile"].is_array());
+    EXPECT_EQ(j["profile"].size(), 64u);
     EXPECT_EQ(nlohmann::json::parse(readFile(out)), j);
 
     const auto truth = nlohmann::json::parse(std::ifstream(dir / "drum.truth.json"));

@@ -1,0 +1,146 @@
+// stylos-cli dock: a generated fragment docked against a generated drum of the same design gives the
+// contract's keys, a rotation, z unobservable, and lands on the true pose from a start turned by 2° about
+// the axis; --guides is used, locks hold; a missing drum, a plain fragment, a far start and bad options fail
+// naming the problem.
+#include "CliRunner.h"
+#include "TestSupport.h"
+
+#include <Eigen/Geometry>
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+using stylos::test::runCli;
+using stylos::test::TempDir;
+
+namespace {
+
+Eigen::Affine3d poseOf(const std::filesystem::path& truth)
+{
+    const auto j = nlohmann::json::parse(std::ifstream(truth));
+    Eigen::Matrix4d m;
+    for (int i = 0; i < 16; ++i) m(i / 4, i % 4) = j["pose"][std::size_t(i)].get<double>();
+    return Eigen::Affine3d(m);
+}
+
+std::string poseArgument(const Eigen::Affine3d& a)
+{
+    std::ostringstream s;
+    s.precision(17);
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) s << a.linear()(i, k) << ",";
+    s << a.translation().x() << "," << a.translation().y() << "," << a.translation().z();
+    return s.str();
+}
+
+struct Scene {
+    TempDir dir;
+    std::string drum, fragment, guides;
+    Eigen::Affine3d truth;
+    Eigen::Vector3d axisPoint, axisDir;
+
+    Scene()
+    {
+        drum = (dir / "drum.ply").string();
+        fragment = (dir / "fragment.ply").string();
+        guides = (dir / "guides.json").string();
+        EXPECT_EQ(runCli({"generate", "drum", "-o", drum, "--spacing", "0.004", "--seed", "101", "--design-seed", "21"}).exitCode, 0);
+        EXPECT_EQ(runCli({"generate", "fragment", "-o", fragment, "--spacing", "0.003", "--seed", "5", "--design-seed", "21"}).exitCode, 0);
+        const auto g = runCli({"guides", drum, "-o", guides, "--json"});
+        EXPECT_EQ(g.exitCode, 0) << g.err;
+        const auto j = nlohmann::json::parse(g.out);
+        for (int k = 0; k < 3; ++k) axisPoint[k] = j["axis_point"][std::size_t(k)], axisDir[k] = j["axis_dir"][std::size_t(k)];
+        truth = poseOf(dir / "drum.truth.json") * poseOf(dir / "fragment.truth.json").inverse();
+    }
+
+    /** The true pose turned by @p degrees about the drum's axis. */
+    Eigen::Affine3d turned(double degrees) const
+    {
+        return Eigen::Translation3d(axisPoint) * Eigen::AngleAxisd(degrees * std::numbers::pi / 180.0, axisDir) *
+               Eigen::Translation3d(-axisPoint) * truth;
+    }
+};
+
+const Scene& scene()
+{
+    static Scene s;
+    return s;
+}
+
+Eigen::Affine3d poseFromJson(const nlohmann::json& j)
+{
+    Eigen::Affine3d a = Eigen::Affine3d::Identity();
+    for (int i = 0; i < 9; ++i) a.linear()(i / 3, i % 3) = j["rotation"][std::size_t(i)].get<double>();
+    for (int k = 0; k < 3; ++k) a.translation()[k] = j["translation"][std::size_t(k)].get<double>();
+    return a;
+}
+
+double angleDeg(const Eigen::Matrix3d& a, const Eigen::Matrix3d& b)
+{
+    return Eigen::AngleAxisd(a * b.transpose()).angle() * 180.0 / std::numbers::pi;
+}
+
+} // namespace
+
+TEST(CliDock, DocksOnTheTruePoseWithTheContractKeys)
+{
+    const Scene& s = scene();
+    const auto run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose",
+                             poseArgument(s.turned(2.0)), "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    const std::vector<std::string> keys{"rotation", "translation", "rms_mm", "flute_shift", "unobservable",
+                                        "uncertainty", "iterations", "seconds"};
+    EXPECT_EQ(j.size(), keys.size());
+    for (const auto& key : keys) EXPECT_TRUE(j.contains(key)) << key;
+    ASSERT_EQ(j["rotation"].size(), 9u);
+    ASSERT_EQ(j["translation"].size(), 3u);
+    EXPECT_EQ(j["unobservable"], nlohmann::json::array({"z"}));
+    for (const char* u : {"theta", "r", "tangent", "tilt_lean", "tilt_roll"}) EXPECT_TRUE(j["uncertainty"].contains(u)) << u;
+    EXPECT_FALSE(j["uncertainty"].contains("z"));
+    const Eigen::Affine3d docked = poseFromJson(j);
+    EXPECT_TRUE((docked.linear().transpose() * docked.linear()).isApprox(Eigen::Matrix3d::Identity(), 1e-9));
+    // Three scans with registration offsets (≤ 0.05°, 0.3 mm) on each side: the nominal truth within 0.1°.
+    EXPECT_LT(angleDeg(docked.linear(), s.truth.linear()), 0.1);
+    EXPECT_NEAR(j["flute_shift"].get<double>(), -2.0 / 7.5, 0.02); // turned back by 2° of a 7.5° pitch
+    EXPECT_GT(j["rms_mm"].get<double>(), 0.1);
+    EXPECT_LT(j["rms_mm"].get<double>(), 0.4);
+}
+
+TEST(CliDock, LockedRotationStaysAndWithoutGuidesTheDrumIsFitted)
+{
+    const Scene& s = scene();
+    const Eigen::Affine3d start = s.turned(0.5);
+    const auto run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", poseArgument(start), "--lock", "theta,tilt", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    EXPECT_LT(angleDeg(poseFromJson(j).linear(), start.linear()), 1e-9);
+    EXPECT_EQ(j["uncertainty"].size(), 2u); // r and tangent
+}
+
+TEST(CliDock, BadInputFailsNamingTheProblem)
+{
+    const Scene& s = scene();
+    TempDir dir;
+    auto run = runCli({"dock", s.fragment, "--drum", (dir / "missing.ply").string()});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("missing.ply: no such file"), std::string::npos) << run.err;
+
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides}); // identity start: metres away
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("too far from the drum"), std::string::npos) << run.err;
+
+    std::ofstream(dir / "bad.json") << "{\"axis_point\": [0, 0]}";
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", (dir / "bad.json").string()});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("bad.json: axis_point must be 3 finite numbers"), std::string::npos) << run.err;
+
+    EXPECT_EQ(runCli({"dock", s.fragment}).exitCode, 2);
+    EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--lock", "yaw"}).exitCode, 2);
+    EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,2,0,0,0"}).exitCode, 2);
+    EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0"}).exitCode, 2);
+}
