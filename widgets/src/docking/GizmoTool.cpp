@@ -97,7 +97,7 @@ bool GizmoTool::mousePress(ViewportWidget& view, QMouseEvent& event)
     m_drag = core::view::GizmoDrag::begin(all[*index], view.camera(), pixel(event.position()), m_target->pose);
     if (!m_drag) return false;
     m_dragId = m_id;
-    m_dragMoved = false;
+    m_lastSent = m_target->pose;
     m_hovered = all[*index].role;
     showState(&view);
     return true;
@@ -107,10 +107,12 @@ bool GizmoTool::mouseMove(ViewportWidget&, QMouseEvent& event)
 {
     if (!m_drag) return false;
     const auto pose = m_drag->update(pixel(event.position()), dragModifiers(event.modifiers()));
-    if (pose && m_onPose) {
-        m_onPose(m_dragId, *pose, m_dragMoved);
-        m_dragMoved = true;
-    }
+    if (!pose || *pose == m_lastSent) return true;
+    // Continuing while the document holds this drag's step: a drag back to the press's pose ends that step
+    // (an obsolete merge), and the next pose starts a new one rather than merging into an older step.
+    const bool continuing = m_lastSent != m_drag->startPose();
+    m_lastSent = *pose;
+    if (m_onPose) m_onPose(m_dragId, *pose, continuing);
     return true;
 }
 
@@ -168,9 +170,8 @@ QCursor GizmoTool::cursor() const
 
 void GizmoTool::endDrag(bool cancel)
 {
-    if (cancel && m_dragMoved && m_onPose) m_onPose(m_dragId, m_drag->startPose(), true);
+    if (cancel && m_lastSent != m_drag->startPose() && m_onPose) m_onPose(m_dragId, m_drag->startPose(), true);
     m_drag.reset();
-    m_dragMoved = false;
 }
 
 void GizmoTool::showState(ViewportWidget* view)

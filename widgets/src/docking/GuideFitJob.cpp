@@ -49,7 +49,9 @@ core::Result<GuideFitResult> GuideFitJob::run(core::ProgressSink* progress) cons
 {
     const auto start = std::chrono::steady_clock::now();
     core::SubProgress reading(progress, 0.0, 0.3);
-    auto cloud = core::cloud::loadPointCloud(m_path.toStdString(), {.keepNormals = true}, &reading);
+    core::cloud::CloudLoadOptions load;
+    load.keepNormals = true; // one point per leaf, with its normal
+    auto cloud = core::cloud::loadPointCloud(m_path.toStdString(), load, &reading);
     if (!cloud) return cloud.error();
     cloud->source = m_path.toStdString();
     core::SubProgress fitting(progress, 0.3, 1.0);

@@ -5,9 +5,10 @@
  *        docking drum's axis is known (θ ring about the drum axis, z arrow along it, radial arrow; the two tilt
  *        rings while Alt is held) — core::view::gizmoHandles. A press on a handle (left button) starts a drag
  *        (core::view::GizmoDrag) that it consumes with the moves and the release that follow; a press elsewhere
- *        is left to navigation. Each move hands the new pose to the owner's PoseHandler, the first with
- *        `continuing` false and the others true, so the owner makes the drag one undo step; Escape during a
- *        drag hands back the pose of the press (continuing) and ends it. Shift: a tenth of the motion and the
+ *        is left to navigation. Each move that changes the pose hands it to the owner's PoseHandler, the first
+ *        with `continuing` false and the others true, so the owner makes the drag one undo step (a drag back to
+ *        the press's pose ends that step, and the next pose starts one again); Escape during a drag hands back
+ *        the pose of the press (continuing) and ends it. Shift: a tenth of the motion and the
  *        fine step; Ctrl: θ by degrees instead of flutes (see GizmoMath.h). L cycles the frame (World, Fragment,
  *        Drum when there is a drum). Hovering highlights the handle under the cursor (GizmoOverlay).
  *
@@ -82,7 +83,7 @@ private:
     std::optional<core::view::HandleRole> m_hovered;
     std::optional<core::view::GizmoDrag> m_drag;
     quint64 m_dragId = 0;
-    bool m_dragMoved = false;
+    Eigen::Matrix4d m_lastSent = Eigen::Matrix4d::Identity(); ///< the pose last handed to the owner in this drag
 };
 
 } // namespace stylos::widgets
