@@ -61,6 +61,22 @@ std::vector<GizmoHandle> gizmoHandles(const GizmoTarget& target, GizmoFrame fram
     return handles;
 }
 
+std::vector<GizmoHandle> visibleGizmoHandles(const GizmoTarget& target, GizmoFrame frame, bool tilts,
+                                             const Camera& camera, const GizmoSizes& sizes)
+{
+    const Eigen::Vector3d centre = target.centre();
+    const auto mpp = metresPerPixel(camera, centre);
+    if (!mpp) return {};
+    const Eigen::Vector3d sight = camera.isOrthographic() ? camera.forward() : Eigen::Vector3d((centre - camera.eye()).normalized());
+    std::vector<GizmoHandle> handles = gizmoHandles(target, frame, tilts, *mpp, sizes);
+    std::erase_if(handles, [&sight](const GizmoHandle& h) {
+        const double along = std::abs(sight.dot(h.direction));
+        if (h.translates()) return along > std::cos(8 * Degree);
+        return h.role != HandleRole::DrumTheta && along < std::sin(6 * Degree);
+    });
+    return handles;
+}
+
 Eigen::Matrix4d applyHandle(const GizmoHandle& handle, const Eigen::Matrix4d& start, double value)
 {
     Eigen::Matrix4d motion = Eigen::Matrix4d::Identity();
@@ -84,7 +100,7 @@ std::optional<std::size_t> pickHandle(const std::vector<GizmoHandle>& handles, c
         const double d = h.translates()
                              ? pixelDistanceToSegment(camera, h.origin, h.origin + h.size * h.direction, cursor)
                              : pixelDistanceToRing(camera, h.origin, h.direction, h.size, cursor);
-        if (d <= bestDistance) {
+        if (d < bestDistance || (!best && d <= bestDistance)) {
             bestDistance = d;
             best = i;
         }

@@ -1,6 +1,5 @@
 #include "docking/GizmoOverlay.h"
 
-#include "stylos/core/view/GizmoMath.h"
 
 namespace stylos::widgets {
 
@@ -32,9 +31,7 @@ void GizmoOverlay::draw(const OverlayFrame& frame)
 {
     if (!m_state.target) return;
     const Eigen::Vector3d centre = m_state.target->centre();
-    const auto mpp = core::view::metresPerPixel(frame.camera, centre);
-    if (!mpp) return;
-    const auto handles = core::view::gizmoHandles(*m_state.target, m_state.frame, m_state.tilts, *mpp);
+    const auto handles = core::view::visibleGizmoHandles(*m_state.target, m_state.frame, m_state.tilts, frame.camera);
     OverlayGeometry geometry(frame.camera, centre);
     // The highlighted handle last, over the others.
     for (int pass = 0; pass < 2; ++pass) {

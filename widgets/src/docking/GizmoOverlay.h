@@ -3,7 +3,7 @@
  * @brief Draws the docking gizmo (GizmoTool's handles) over the points: arrows and rings of a constant width
  *        on screen, coloured by axis (X red, Y green, Z blue; in the Drum frame θ gold, z blue, r magenta,
  *        tilts cyan), the hovered or dragged handle wider and light yellow. The handles are those of
- *        core::view::gizmoHandles for the frame's camera, so that they are where GizmoTool picks them.
+ *        core::view::visibleGizmoHandles for the frame's camera, so that they are where GizmoTool picks them.
  *        OpenGL 3.3 core; context current in initialize/draw/release; GUI thread only.
  */
 #include "stylos/core/view/GizmoHandles.h"

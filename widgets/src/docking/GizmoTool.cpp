@@ -59,9 +59,7 @@ void GizmoTool::setTiltsShown(bool shown)
 std::vector<core::view::GizmoHandle> GizmoTool::handles(const core::view::Camera& camera) const
 {
     if (!m_target) return {};
-    const auto mpp = core::view::metresPerPixel(camera, m_target->centre());
-    if (!mpp) return {};
-    return core::view::gizmoHandles(*m_target, effectiveFrame(), m_tilts, *mpp);
+    return core::view::visibleGizmoHandles(*m_target, effectiveFrame(), m_tilts, camera);
 }
 
 std::optional<core::view::HandleRole> GizmoTool::handleAt(const core::view::Camera& camera, const QPointF& position) const

@@ -82,11 +82,22 @@ struct GizmoHandle {
 std::vector<GizmoHandle> gizmoHandles(const GizmoTarget& target, GizmoFrame frame, bool tilts, double metresPerPixel,
                                       const GizmoSizes& sizes = {});
 
+/**
+ * @brief The handles of gizmoHandles() as @p camera shows them (at the metres per pixel at the centre), less
+ *        those that cannot be used from there (as ImGuizmo hides them): an arrow pointing within 8° of the line
+ *        of sight, a World/Fragment or tilt ring seen within 6° of edge-on (a line on screen, over the arrows).
+ *        The θ ring stays: seen edge-on in a side view it turns by its tangent (GizmoDrag). Empty when the
+ *        centre is behind the eye.
+ */
+std::vector<GizmoHandle> visibleGizmoHandles(const GizmoTarget& target, GizmoFrame frame, bool tilts,
+                                             const Camera& camera, const GizmoSizes& sizes = {});
+
 /** @brief @p start moved by @p value along an arrow (metres) or turned by @p value about a ring's axis line
  *         (radians, counter-clockwise about its direction), in the scene frame: M·start. */
 Eigen::Matrix4d applyHandle(const GizmoHandle& handle, const Eigen::Matrix4d& start, double value);
 
-/** @brief The index of the handle nearest @p cursor on screen within @p radius pixels; nullopt when none. */
+/** @brief The index of the handle nearest @p cursor on screen within @p radius pixels (the first of equals:
+ *         arrows before rings); nullopt when none. */
 std::optional<std::size_t> pickHandle(const std::vector<GizmoHandle>& handles, const Camera& camera,
                                       const Eigen::Vector2d& cursor, double radius);
 
