@@ -55,6 +55,14 @@
         <source>--pose-benchmark goes with neither --grab nor --orbit-benchmark</source>
         <translation>το --pose-benchmark δεν συνδυάζεται ούτε με το --grab ούτε με το --orbit-benchmark</translation>
     </message>
+    <message>
+        <source>With --grab: first fit the first fragment&apos;s drum guides, dock against it and show the Move tool on the second fragment, in the drum&apos;s frame.</source>
+        <translation>Με --grab: πρώτα προσαρμογή των οδηγών τυμπάνου του πρώτου θραύσματος, πρόσδεση σε αυτό και εμφάνιση του εργαλείου Μετακίνησης στο δεύτερο θραύσμα, στο σύστημα του τυμπάνου.</translation>
+    </message>
+    <message>
+        <source>--gizmo goes with --grab</source>
+        <translation>Το --gizmo χρησιμοποιείται με το --grab</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -127,6 +135,73 @@
     <message>
         <source>Level</source>
         <translation>Επίπεδο</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DockingActions</name>
+    <message>
+        <source>Docking against %1</source>
+        <translation>Πρόσδεση στο %1</translation>
+    </message>
+    <message>
+        <source>The guides of this fragment are being fitted already, or its octree is not open yet</source>
+        <translation>Οι οδηγοί αυτού του θραύσματος προσαρμόζονται ήδη, ή το octree του δεν έχει ανοίξει ακόμη</translation>
+    </message>
+    <message>
+        <source>Guides of %1: %2 flutes, leading radius %3 mm, flute depth %4 mm, RMS %5 mm, %6 s</source>
+        <translation>Οδηγοί του %1: %2 ραβδώσεις, κύρια ακτίνα %3 mm, βάθος ραβδώσεων %4 mm, RMS %5 mm, %6 s</translation>
+    </message>
+    <message>
+        <source>&amp;Move tool</source>
+        <translation>Εργαλείο &amp;Μετακίνησης</translation>
+    </message>
+    <message>
+        <source>Move the selected fragment with arrows and rings in the 3D view; Shift: finer, Ctrl: by degrees, Alt: tilts, L: the next frame, Escape: cancel the drag</source>
+        <translation>Μετακίνηση του επιλεγμένου θραύσματος με βέλη και δακτυλίους στην τρισδιάστατη προβολή· Shift: λεπτότερα, Ctrl: ανά μοίρα, Alt: κλίσεις, L: επόμενο σύστημα, Escape: ακύρωση της σύρσης</translation>
+    </message>
+    <message>
+        <source>Gizmo &amp;frame</source>
+        <translation>&amp;Σύστημα χειριστηρίου</translation>
+    </message>
+    <message>
+        <source>&amp;World</source>
+        <translation>&amp;Κόσμος</translation>
+    </message>
+    <message>
+        <source>&amp;Fragment</source>
+        <translation>&amp;Θραύσμα</translation>
+    </message>
+    <message>
+        <source>&amp;Drum</source>
+        <translation>&amp;Τύμπανο</translation>
+    </message>
+    <message>
+        <source>Dock against this &amp;drum</source>
+        <translation>Πρόσδεση σε αυτό το &amp;τύμπανο</translation>
+    </message>
+    <message>
+        <source>Use the axis and flutes of the selected fragment for the gizmo&apos;s Drum frame</source>
+        <translation>Χρήση του άξονα και των ραβδώσεων του επιλεγμένου θραύσματος για το σύστημα Τυμπάνου του χειριστηρίου</translation>
+    </message>
+    <message>
+        <source>Fit drum &amp;guides</source>
+        <translation>Προσαρμογή &amp;οδηγών τυμπάνου</translation>
+    </message>
+    <message>
+        <source>Fit the axis and the flute lines of the selected drum in the background</source>
+        <translation>Προσαρμογή στο παρασκήνιο του άξονα και των γραμμών ραβδώσεων του επιλεγμένου τυμπάνου</translation>
+    </message>
+    <message>
+        <source>De&amp;lete guides</source>
+        <translation>&amp;Διαγραφή οδηγών</translation>
+    </message>
+    <message>
+        <source>Remove the axis and flute guides of the selected fragment</source>
+        <translation>Αφαίρεση των οδηγών άξονα και ραβδώσεων του επιλεγμένου θραύσματος</translation>
+    </message>
+    <message>
+        <source>Show &amp;guides</source>
+        <translation>Εμφάνιση &amp;οδηγών</translation>
     </message>
 </context>
 <context>
@@ -812,6 +887,36 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::GuideFitJob</name>
+    <message>
+        <source>Drum guides of %1</source>
+        <translation>Οδηγοί τυμπάνου του %1</translation>
+    </message>
+    <message>
+        <source>Could not fit the guides of %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η προσαρμογή των οδηγών του %1: %2.</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Άξονας</translation>
+    </message>
+    <message>
+        <source>Flute %1</source>
+        <translation>Ράβδωση %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::GuideFitRunner</name>
+    <message>
+        <source>Delete the guides of %1</source>
+        <translation>Διαγραφή των οδηγών του %1</translation>
+    </message>
+    <message>
+        <source>Fit the guides of %1</source>
+        <translation>Προσαρμογή των οδηγών του %1</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>
@@ -903,6 +1008,13 @@
     <message>
         <source>Change the colour of %1</source>
         <translation>Αλλαγή χρώματος %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentGuidesCommand</name>
+    <message>
+        <source>Change the guides of %1</source>
+        <translation>Αλλαγή των οδηγών του %1</translation>
     </message>
 </context>
 <context>

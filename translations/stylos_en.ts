@@ -55,6 +55,14 @@
         <source>--pose-benchmark goes with neither --grab nor --orbit-benchmark</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>With --grab: first fit the first fragment&apos;s drum guides, dock against it and show the Move tool on the second fragment, in the drum&apos;s frame.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--gizmo goes with --grab</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -126,6 +134,73 @@
     </message>
     <message>
         <source>Level</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DockingActions</name>
+    <message>
+        <source>Docking against %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The guides of this fragment are being fitted already, or its octree is not open yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Guides of %1: %2 flutes, leading radius %3 mm, flute depth %4 mm, RMS %5 mm, %6 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Move tool</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the selected fragment with arrows and rings in the 3D view; Shift: finer, Ctrl: by degrees, Alt: tilts, L: the next frame, Escape: cancel the drag</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gizmo &amp;frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;World</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Fragment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Drum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dock against this &amp;drum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Use the axis and flutes of the selected fragment for the gizmo&apos;s Drum frame</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit drum &amp;guides</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit the axis and the flute lines of the selected drum in the background</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>De&amp;lete guides</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the axis and flute guides of the selected fragment</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show &amp;guides</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -812,6 +887,36 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::GuideFitJob</name>
+    <message>
+        <source>Drum guides of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not fit the guides of %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Flute %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::GuideFitRunner</name>
+    <message>
+        <source>Delete the guides of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit the guides of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>
@@ -902,6 +1007,13 @@
     <name>stylos::widgets::SetFragmentColourCommand</name>
     <message>
         <source>Change the colour of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentGuidesCommand</name>
+    <message>
+        <source>Change the guides of %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -55,6 +55,14 @@
         <source>--pose-benchmark goes with neither --grab nor --orbit-benchmark</source>
         <translation>--pose-benchmark ne peut être combiné ni avec --grab ni avec --orbit-benchmark</translation>
     </message>
+    <message>
+        <source>With --grab: first fit the first fragment&apos;s drum guides, dock against it and show the Move tool on the second fragment, in the drum&apos;s frame.</source>
+        <translation>Avec --grab : ajuster d’abord les guides de tambour du premier fragment, s’y amarrer et montrer l’outil Déplacer sur le second fragment, dans le repère du tambour.</translation>
+    </message>
+    <message>
+        <source>--gizmo goes with --grab</source>
+        <translation>--gizmo s’utilise avec --grab</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -127,6 +135,73 @@
     <message>
         <source>Level</source>
         <translation>Niveau</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::DockingActions</name>
+    <message>
+        <source>Docking against %1</source>
+        <translation>Amarrage contre %1</translation>
+    </message>
+    <message>
+        <source>The guides of this fragment are being fitted already, or its octree is not open yet</source>
+        <translation>Les guides de ce fragment sont déjà en cours d’ajustement, ou son octree n’est pas encore ouvert</translation>
+    </message>
+    <message>
+        <source>Guides of %1: %2 flutes, leading radius %3 mm, flute depth %4 mm, RMS %5 mm, %6 s</source>
+        <translation>Guides de %1 : %2 cannelures, rayon directeur %3 mm, profondeur des cannelures %4 mm, RMS %5 mm, %6 s</translation>
+    </message>
+    <message>
+        <source>&amp;Move tool</source>
+        <translation>Outil &amp;Déplacer</translation>
+    </message>
+    <message>
+        <source>Move the selected fragment with arrows and rings in the 3D view; Shift: finer, Ctrl: by degrees, Alt: tilts, L: the next frame, Escape: cancel the drag</source>
+        <translation>Déplacer le fragment sélectionné avec des flèches et des anneaux dans la vue 3D ; Maj : plus fin, Ctrl : par degrés, Alt : inclinaisons, L : repère suivant, Échap : annuler le glisser</translation>
+    </message>
+    <message>
+        <source>Gizmo &amp;frame</source>
+        <translation>&amp;Repère du manipulateur</translation>
+    </message>
+    <message>
+        <source>&amp;World</source>
+        <translation>&amp;Monde</translation>
+    </message>
+    <message>
+        <source>&amp;Fragment</source>
+        <translation>&amp;Fragment</translation>
+    </message>
+    <message>
+        <source>&amp;Drum</source>
+        <translation>&amp;Tambour</translation>
+    </message>
+    <message>
+        <source>Dock against this &amp;drum</source>
+        <translation>Amarrer contre ce &amp;tambour</translation>
+    </message>
+    <message>
+        <source>Use the axis and flutes of the selected fragment for the gizmo&apos;s Drum frame</source>
+        <translation>Utiliser l’axe et les cannelures du fragment sélectionné pour le repère Tambour du manipulateur</translation>
+    </message>
+    <message>
+        <source>Fit drum &amp;guides</source>
+        <translation>Ajuster les &amp;guides du tambour</translation>
+    </message>
+    <message>
+        <source>Fit the axis and the flute lines of the selected drum in the background</source>
+        <translation>Ajuster en arrière-plan l’axe et les lignes de cannelure du tambour sélectionné</translation>
+    </message>
+    <message>
+        <source>De&amp;lete guides</source>
+        <translation>Supprimer &amp;les guides</translation>
+    </message>
+    <message>
+        <source>Remove the axis and flute guides of the selected fragment</source>
+        <translation>Retirer les guides d’axe et de cannelure du fragment sélectionné</translation>
+    </message>
+    <message>
+        <source>Show &amp;guides</source>
+        <translation>Afficher les &amp;guides</translation>
     </message>
 </context>
 <context>
@@ -812,6 +887,36 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::GuideFitJob</name>
+    <message>
+        <source>Drum guides of %1</source>
+        <translation>Guides du tambour %1</translation>
+    </message>
+    <message>
+        <source>Could not fit the guides of %1: %2.</source>
+        <translation>Impossible d’ajuster les guides de %1 : %2.</translation>
+    </message>
+    <message>
+        <source>Axis</source>
+        <translation>Axe</translation>
+    </message>
+    <message>
+        <source>Flute %1</source>
+        <translation>Cannelure %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::GuideFitRunner</name>
+    <message>
+        <source>Delete the guides of %1</source>
+        <translation>Supprimer les guides de %1</translation>
+    </message>
+    <message>
+        <source>Fit the guides of %1</source>
+        <translation>Ajuster les guides de %1</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>
@@ -903,6 +1008,13 @@
     <message>
         <source>Change the colour of %1</source>
         <translation>Changer la couleur de %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::SetFragmentGuidesCommand</name>
+    <message>
+        <source>Change the guides of %1</source>
+        <translation>Modifier les guides de %1</translation>
     </message>
 </context>
 <context>

@@ -2,11 +2,15 @@
 
 #include "stylos/core/scene/SceneEigen.h"
 
+#include "DockingActions.h"
 #include "LogDock.h"
+#include "SceneDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
 #include "stylos/widgets/view3d/OrbitBenchmark.h"
 #include "stylos/widgets/view3d/PoseBenchmark.h"
+#include "stylos/widgets/docking/GizmoController.h"
+#include "stylos/widgets/docking/GuideFitRunner.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
@@ -19,6 +23,7 @@
 #include <QTimer>
 #include <QToolBar>
 
+#include <algorithm>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -123,6 +128,44 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs)
             return;
         }
         QApplication::exit(window.logDock().errorCount() > 0 ? 1 : 0);
+    });
+}
+
+void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    whenReady(window, timeoutMs, [&window, path, timeoutMs] {
+        const auto& fragments = window.document().scene().fragments();
+        if (fragments.size() < 2 || !window.docking().gizmo()) {
+            std::fprintf(stderr, "stylos: --gizmo needs two fragments and the 3D view\n");
+            QApplication::exit(1);
+            return;
+        }
+        const auto drum = fragments[0].id, piece = fragments[1].id;
+        const auto hasFlutes = [&window, drum] {
+            const auto& guides = window.document().fragment(drum)->guides;
+            return std::any_of(guides.begin(), guides.end(),
+                               [](const core::scene::Guide& g) { return g.kind == core::scene::GuideKind::Groove; });
+        };
+        const bool fit = !hasFlutes();
+        if (fit) window.docking().guideFits().start(drum);
+        auto* docked = new QMetaObject::Connection;
+        auto dock = [&window, drum, piece, docked] {
+            window.document().setDockingDrum(drum);
+            window.sceneDock().selectFragment(piece);
+            window.docking().gizmo()->setEnabled(true);
+            QObject::disconnect(*docked);
+            delete docked;
+        };
+        // The drum frame needs the flutes: dock once they are in (at once when they were already).
+        if (fit)
+            *docked = QObject::connect(&window.document(), &widgets::SceneDocument::fragmentChanged, &window,
+                                       [drum, dock, hasFlutes](quint64 id) {
+                                           if (id == drum && hasFlutes()) dock();
+                                       });
+        else
+            dock();
+        grabWhenReady(window, path, timeoutMs);
     });
 }
 

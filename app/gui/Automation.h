@@ -21,6 +21,14 @@ bool isWindowReady(const MainWindow& window);
 void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
 
 /**
+ * @brief As grabWhenReady(), with the docking gizmo in the picture: once ready, fits the first fragment's drum
+ *        guides (unless it has flute guides), docks against it, selects the second fragment and shows the Move tool in
+ *        the Drum frame; then, once ready again, grabs. Status 1 as above, or when the scene has fewer than two
+ *        fragments.
+ */
+void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+
+/**
  * @brief Hides the docks and toolbar, sizes the 3D view to 1280 × 800, and once ready orbits the camera
  *        for @p frames frames (widgets::OrbitBenchmark), prints the JSON result on stdout and quits (0;
  *        1 without a 3D view, or when the scene failed to open). The result adds "openToFirstFrameMs":

@@ -40,7 +40,11 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
                                      "frames at 1280 × 800 once the scene is ready, print the frame times as JSON "
                                      "and exit."),
                                   tr("frames"));
+    const QCommandLineOption gizmo(QStringLiteral("gizmo"),
+                                   tr("With --grab: first fit the first fragment's drum guides, dock against it and "
+                                      "show the Move tool on the second fragment, in the drum's frame."));
     parser.addOption(grab);
+    parser.addOption(gizmo);
     parser.addOption(orbit);
     parser.addOption(pose);
     QStringList formats;
@@ -54,6 +58,8 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     CommandLine result;
     result.files = parser.positionalArguments();
     result.grabPath = parser.value(grab);
+    result.grabGizmo = parser.isSet(gizmo);
+    if (result.grabGizmo && result.grabPath.isEmpty()) usageError(tr("--gizmo goes with --grab"));
     if (parser.isSet(orbit)) {
         bool ok = false;
         result.orbitFrames = parser.value(orbit).toInt(&ok);

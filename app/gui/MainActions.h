@@ -51,6 +51,8 @@ public:
     QAction* developpeeAction() const { return m_developpee; }
     QAction* openDemoAction() const { return m_openDemo; }
     QAction* orthographicAction() const { return m_orthographic; }
+    /** @brief The Tools menu (after populate()), for the other handlers' actions. */
+    QMenu* toolsMenu() const { return m_tools; }
 
 Q_SIGNALS:
     void removeRequested();

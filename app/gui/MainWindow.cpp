@@ -2,6 +2,7 @@
 
 #include "DeveloppeeLink.h"
 #include "DeveloppeeDock.h"
+#include "DockingActions.h"
 #include "LogDock.h"
 #include "MainActions.h"
 #include "ProjectActions.h"
@@ -135,6 +136,9 @@ void MainWindow::createMenus()
                               static_cast<QDockWidget*>(m_developpeeDock), static_cast<QDockWidget*>(m_tasksDock),
                               static_cast<QDockWidget*>(m_logDock)})
         viewMenu->addAction(dock->toggleViewAction());
+    m_docking = new DockingActions(*m_document, m_viewport, *this);
+    m_docking->populate(*m_actions->toolsMenu(), *viewMenu);
+    connect(m_docking, &DockingActions::reported, this, &MainWindow::report);
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
@@ -221,6 +225,7 @@ void MainWindow::selectionChanged()
     const auto current = m_sceneDock->currentFragment();
     m_propertiesDock->setFragment(current);
     m_developpeeLink->setFragment(ids.size() == 1 ? ids.first() : current);
+    m_docking->setFragment(ids.size() == 1 ? ids.first() : current);
     m_actions->setSelectionCount(static_cast<int>(ids.size()));
     if (m_sceneDock->model()->isDeveloppee(m_sceneDock->view()->currentIndex())) {
         m_developpeeDock->show();
@@ -313,6 +318,7 @@ void MainWindow::changeEvent(QEvent* event)
     if (event->type() == QEvent::LanguageChange) {
         retranslateUi();
         m_actions->retranslateUi();
+        m_docking->retranslateUi();
         m_projectActions->retranslateUi();
         updateTitle();
     }

@@ -24,6 +24,7 @@ class ViewportWidget;
 namespace stylos::app {
 
 class DeveloppeeDock;
+class DockingActions;
 class DeveloppeeLink;
 class LogDock;
 class MainActions;
@@ -60,6 +61,7 @@ public:
     LogDock& logDock() const { return *m_logDock; }
     ProjectActions& projectActions() const { return *m_projectActions; }
     MainActions& actions() const { return *m_actions; }
+    DockingActions& docking() const { return *m_docking; }
     StatusReadout& readout() const { return *m_readout; }
 
     /** @brief Opens the demo project (generated first when the cache lacks it). */
@@ -105,6 +107,7 @@ private:
     LogDock* m_logDock = nullptr;
     ProjectActions* m_projectActions = nullptr;
     MainActions* m_actions = nullptr;
+    DockingActions* m_docking = nullptr;
     StatusReadout* m_readout = nullptr;
     QToolBar* m_toolBar = nullptr;
     QMenu* m_fileMenu = nullptr;

@@ -20,7 +20,8 @@ int main(int argc, char* argv[])
     const stylos::app::CommandLine options = stylos::app::CommandLine::parse(app);
 
     stylos::app::MainWindow window(translations);
-    if (!options.grabPath.isEmpty()) stylos::app::grabWhenReady(window, options.grabPath);
+    if (!options.grabPath.isEmpty() && options.grabGizmo) stylos::app::grabGizmoWhenReady(window, options.grabPath);
+    else if (!options.grabPath.isEmpty()) stylos::app::grabWhenReady(window, options.grabPath);
     if (options.orbitFrames > 0) stylos::app::orbitWhenReady(window, options.orbitFrames);
     if (options.poseFrames > 0) stylos::app::poseWhenReady(window, options.poseFrames);
     window.show();

@@ -7,6 +7,7 @@
 #include "document/commands/RemoveFragmentCommand.h"
 #include "document/commands/RenameFragmentCommand.h"
 #include "document/commands/SetFragmentColourCommand.h"
+#include "document/commands/SetFragmentGuidesCommand.h"
 #include "document/commands/SetFragmentPoseCommand.h"
 #include "document/commands/SetFragmentVisibleCommand.h"
 #include "stylos/widgets/tasks/TaskManager.h"
@@ -142,6 +143,23 @@ bool SceneDocument::setFragmentVisible(FragmentId id, bool visible)
     return true;
 }
 
+bool SceneDocument::setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const QString& commandText)
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || f->guides == guides) return false;
+    m_undo->push(new SetFragmentGuidesCommand(*this, id, std::move(guides), commandText));
+    return true;
+}
+
+bool SceneDocument::setDockingDrum(FragmentId id)
+{
+    if (id != core::scene::NoFragment && !m_scene.find(id)) return false;
+    if (id == m_dockingDrum) return true;
+    m_dockingDrum = id;
+    Q_EMIT dockingDrumChanged(id);
+    return true;
+}
+
 void SceneDocument::newProject()
 {
     resetScene(core::scene::Scene{});
@@ -226,6 +244,7 @@ std::pair<Fragment, SceneDocument::OctreePtr> SceneDocument::takeFragment(Fragme
         loadDropped = true;
     }
     Q_EMIT fragmentRemoved(id);
+    if (id == m_dockingDrum) setDockingDrum(core::scene::NoFragment);
     if (loadDropped && m_loads.empty()) Q_EMIT loadingFinished(std::exchange(m_loadErrors, {}));
     return {std::move(fragment), std::move(octree)};
 }
@@ -239,6 +258,7 @@ void SceneDocument::resetScene(core::scene::Scene scene)
     m_octrees.clear();
     m_developpees.clear();
     Q_EMIT sceneReset();
+    setDockingDrum(core::scene::NoFragment);
 }
 
 void SceneDocument::setProjectPath(const QString& path)

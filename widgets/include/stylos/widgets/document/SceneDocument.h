@@ -3,7 +3,7 @@
  * @brief The open project: owns the core scene, its undo stack, the opened octree of each fragment, the
  *        project file's path and the modified flag. Every edit is an undo command (AddFragmentCommand,
  *        RemoveFragmentCommand, SetFragmentPoseCommand, RenameFragmentCommand, SetFragmentColourCommand,
- *        SetFragmentVisibleCommand); the edit functions below push them. Docks and views observe the
+ *        SetFragmentVisibleCommand, SetFragmentGuidesCommand); the edit functions below push them. Docks and views observe the
  *        signals, which always come in about-to/done pairs around a structural change (for item models).
  *        Octrees are opened in background tasks (TaskManager); a fragment in the scene that has no
  *        octree and is not marked missing gets one opened, so undoing a removal restores it either way.
@@ -18,6 +18,7 @@
 
 #include <map>
 #include <memory>
+#include <vector>
 
 class QFutureWatcherBase;
 class QUndoStack;
@@ -93,6 +94,16 @@ public:
     bool setFragmentPose(FragmentId id, const core::scene::Pose& pose, bool continuing = false);
     bool setFragmentColour(FragmentId id, core::scene::Rgb colour);
     bool setFragmentVisible(FragmentId id, bool visible);
+    /** @brief Replaces the fragment's guides (its own frame); @p commandText names the step (default
+     *         "Change the guides of NAME"). */
+    bool setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const QString& commandText = {});
+
+    // The docking drum: the fragment whose guides the gizmo's Drum frame follows. Runtime only (not saved, not
+    // undoable), cleared when that fragment is removed or the project replaced; assemblies will replace it.
+    /** @brief The docking drum; NoFragment when none. */
+    FragmentId dockingDrum() const { return m_dockingDrum; }
+    /** @brief Sets the docking drum (NoFragment: none); false for an unknown fragment. Emits dockingDrumChanged(). */
+    bool setDockingDrum(FragmentId id);
 
     // Files.
     /** @brief An empty, unsaved project (the undo history is cleared). */
@@ -128,6 +139,8 @@ Q_SIGNALS:
     void loadingFinished(const QStringList& errors);
     void projectPathChanged(const QString& path);
     void modifiedChanged(bool modified);
+    /** @brief The docking drum changed (@p id: the new one, or 0). */
+    void dockingDrumChanged(quint64 id);
 
 private:
     friend class AddFragmentCommand;
@@ -136,6 +149,7 @@ private:
     friend class RenameFragmentCommand;
     friend class SetFragmentColourCommand;
     friend class SetFragmentVisibleCommand;
+    friend class SetFragmentGuidesCommand;
 
     // The commands' primitives: change the scene and signal, without touching the undo stack.
     FragmentId allocateId() { return m_scene.allocateId(); }
@@ -160,6 +174,7 @@ private:
     std::map<FragmentId, QPointer<QFutureWatcherBase>> m_loads;  ///< octrees being opened
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
     QString m_path;
+    FragmentId m_dockingDrum = core::scene::NoFragment;
 };
 
 template <typename Change>

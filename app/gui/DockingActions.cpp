@@ -1,0 +1,134 @@
+#include "DockingActions.h"
+
+#include "stylos/core/view/GuideGeometry.h"
+#include "stylos/widgets/docking/GizmoController.h"
+#include "stylos/widgets/docking/GuideFitRunner.h"
+#include "stylos/widgets/docking/GuidesDisplay.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
+
+#include <QAction>
+#include <QActionGroup>
+#include <QMenu>
+
+namespace stylos::app {
+
+DockingActions::DockingActions(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget& window)
+    : QObject(&window), m_document(document), m_fits(new widgets::GuideFitRunner(document, this)),
+      m_moveTool(new QAction(this)), m_frames(new QActionGroup(this)), m_dockAgainst(new QAction(this)),
+      m_fitGuides(new QAction(this)), m_deleteGuides(new QAction(this)), m_showGuides(new QAction(this))
+{
+    m_moveTool->setObjectName(QStringLiteral("actionMoveTool"));
+    m_dockAgainst->setObjectName(QStringLiteral("actionDockAgainst"));
+    m_fitGuides->setObjectName(QStringLiteral("actionFitGuides"));
+    m_deleteGuides->setObjectName(QStringLiteral("actionDeleteGuides"));
+    m_showGuides->setObjectName(QStringLiteral("actionShowGuides"));
+    m_moveTool->setCheckable(true);
+    m_moveTool->setShortcut(QKeySequence(Qt::Key_W));
+    m_showGuides->setCheckable(true);
+    m_showGuides->setChecked(true);
+    for (int frame = 0; frame < 3; ++frame) {
+        QAction* action = m_frames->addAction(QString());
+        action->setCheckable(true);
+        action->setData(frame);
+        action->setChecked(frame == 0);
+    }
+
+    if (viewport) {
+        m_gizmo = new widgets::GizmoController(document, *viewport, this);
+        m_guides = new widgets::GuidesDisplay(document, *viewport, this);
+        // A single key acts only while the 3D view has the focus.
+        m_moveTool->setShortcutContext(Qt::WidgetShortcut);
+        viewport->addAction(m_moveTool);
+        connect(m_moveTool, &QAction::toggled, m_gizmo, &widgets::GizmoController::setEnabled);
+        connect(m_gizmo, &widgets::GizmoController::enabledChanged, m_moveTool, &QAction::setChecked);
+        connect(m_frames, &QActionGroup::triggered, m_gizmo, [this](QAction* action) {
+            m_gizmo->setFrame(static_cast<core::view::GizmoFrame>(action->data().toInt()));
+        });
+        connect(m_gizmo, &widgets::GizmoController::frameChanged, this, [this](int frame) {
+            for (QAction* action : m_frames->actions()) action->setChecked(action->data().toInt() == frame);
+        });
+        connect(m_showGuides, &QAction::toggled, m_guides, &widgets::GuidesDisplay::setVisible);
+    }
+    connect(m_dockAgainst, &QAction::triggered, this, [this] {
+        m_document.setDockingDrum(m_fragment);
+        if (const auto* f = m_document.fragment(m_fragment))
+            Q_EMIT reported(tr("Docking against %1").arg(QString::fromStdString(f->name)), false);
+    });
+    connect(m_fitGuides, &QAction::triggered, this, [this] {
+        if (!m_fits->start(m_fragment))
+            Q_EMIT reported(tr("The guides of this fragment are being fitted already, or its octree is not open yet"), false);
+    });
+    connect(m_deleteGuides, &QAction::triggered, this, [this] { m_fits->deleteGuides(m_fragment); });
+    connect(m_fits, &widgets::GuideFitRunner::fitted, this, [this](quint64 id, const widgets::GuideFitResult& r) {
+        const auto* f = m_document.fragment(id);
+        Q_EMIT reported(tr("Guides of %1: %2 flutes, leading radius %3 mm, flute depth %4 mm, RMS %5 mm, %6 s")
+                            .arg(f ? QString::fromStdString(f->name) : r.octreePath)
+                            .arg(r.flutes)
+                            .arg(r.radius * 1e3, 0, 'f', 2)
+                            .arg(r.fluteDepth * 1e3, 0, 'f', 2)
+                            .arg(r.rms * 1e3, 0, 'f', 2)
+                            .arg(r.seconds, 0, 'f', 1),
+                        false);
+    });
+    connect(m_fits, &widgets::GuideFitRunner::failed, this,
+            [this](quint64, const QString& message) { Q_EMIT reported(message, true); });
+    connect(&document, &widgets::SceneDocument::fragmentChanged, this, &DockingActions::updateEnabled);
+    connect(&document, &widgets::SceneDocument::dockingDrumChanged, this, &DockingActions::updateEnabled);
+    updateEnabled();
+    retranslateUi();
+}
+
+DockingActions::~DockingActions() = default;
+
+void DockingActions::populate(QMenu& tools, QMenu& view)
+{
+    tools.addSeparator();
+    tools.addAction(m_moveTool);
+    m_frameMenu = tools.addMenu(QString());
+    m_frameMenu->setObjectName(QStringLiteral("menuGizmoFrame"));
+    m_frameMenu->addActions(m_frames->actions());
+    tools.addAction(m_dockAgainst);
+    tools.addSeparator();
+    tools.addAction(m_fitGuides);
+    tools.addAction(m_deleteGuides);
+    view.addAction(m_showGuides);
+    retranslateUi();
+}
+
+void DockingActions::setFragment(core::scene::FragmentId id)
+{
+    m_fragment = id;
+    if (m_gizmo) m_gizmo->setFragment(id);
+    updateEnabled();
+}
+
+void DockingActions::updateEnabled()
+{
+    const core::scene::Fragment* f = m_document.fragment(m_fragment);
+    m_moveTool->setEnabled(m_gizmo != nullptr);
+    m_frames->setEnabled(m_gizmo != nullptr);
+    m_showGuides->setEnabled(m_guides != nullptr);
+    m_dockAgainst->setEnabled(f && core::view::drumAxisOf(*f).has_value());
+    m_fitGuides->setEnabled(f != nullptr);
+    m_deleteGuides->setEnabled(f && !f->guides.empty());
+}
+
+void DockingActions::retranslateUi()
+{
+    m_moveTool->setText(tr("&Move tool"));
+    m_moveTool->setStatusTip(tr("Move the selected fragment with arrows and rings in the 3D view; Shift: finer, "
+                                "Ctrl: by degrees, Alt: tilts, L: the next frame, Escape: cancel the drag"));
+    if (m_frameMenu) m_frameMenu->setTitle(tr("Gizmo &frame"));
+    const QStringList frames = {tr("&World"), tr("&Fragment"), tr("&Drum")};
+    for (QAction* action : m_frames->actions()) action->setText(frames.value(action->data().toInt()));
+    m_dockAgainst->setText(tr("Dock against this &drum"));
+    m_dockAgainst->setStatusTip(tr("Use the axis and flutes of the selected fragment for the gizmo's Drum frame"));
+    m_fitGuides->setText(tr("Fit drum &guides"));
+    m_fitGuides->setStatusTip(tr("Fit the axis and the flute lines of the selected drum in the background"));
+    m_deleteGuides->setText(tr("De&lete guides"));
+    m_deleteGuides->setStatusTip(tr("Remove the axis and flute guides of the selected fragment"));
+    m_showGuides->setText(tr("Show &guides"));
+}
+
+} // namespace stylos::app

@@ -1,0 +1,71 @@
+#pragma once
+/** @file
+ * @brief The docking actions: Tools › Move tool (the gizmo, W in the 3D view), Gizmo frame (World, Fragment,
+ *        Drum; L in the view cycles them), Dock against this drum, Fit drum guides, Delete guides; View › Show
+ *        guides. They act on the current fragment through the widgets' GizmoController, GuideFitRunner and
+ *        GuidesDisplay; results and failures of the fits go out as reported() for the window's log.
+ *        GUI thread only.
+ */
+#include "stylos/core/scene/Fragment.h"
+
+#include <QObject>
+#include <QString>
+
+class QAction;
+class QActionGroup;
+class QMenu;
+class QWidget;
+
+namespace stylos::widgets {
+class GizmoController;
+class GuideFitRunner;
+class GuidesDisplay;
+class SceneDocument;
+class ViewportWidget;
+} // namespace stylos::widgets
+
+namespace stylos::app {
+
+class DockingActions : public QObject {
+    Q_OBJECT
+
+public:
+    /** None owned. Without a 3D view (@p viewport null) the gizmo and guide display actions are disabled. */
+    DockingActions(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget& window);
+    ~DockingActions() override;
+
+    /** @brief Adds the actions to the Tools menu and Show guides to the View menu. */
+    void populate(QMenu& tools, QMenu& view);
+    /** @brief The fragment the actions act on (the current selection; NoFragment: none). */
+    void setFragment(core::scene::FragmentId id);
+    void retranslateUi();
+
+    widgets::GizmoController* gizmo() const { return m_gizmo; }
+    widgets::GuidesDisplay* guides() const { return m_guides; }
+    widgets::GuideFitRunner& guideFits() const { return *m_fits; }
+    QAction* moveToolAction() const { return m_moveTool; }
+    QAction* fitGuidesAction() const { return m_fitGuides; }
+    QAction* showGuidesAction() const { return m_showGuides; }
+
+Q_SIGNALS:
+    /** @brief A message for the log (and, when @p failed, a box). */
+    void reported(const QString& message, bool failed);
+
+private:
+    void updateEnabled();
+
+    widgets::SceneDocument& m_document;
+    widgets::GizmoController* m_gizmo = nullptr;
+    widgets::GuidesDisplay* m_guides = nullptr;
+    widgets::GuideFitRunner* m_fits;
+    core::scene::FragmentId m_fragment = core::scene::NoFragment;
+    QMenu* m_frameMenu = nullptr;
+    QAction* m_moveTool;
+    QActionGroup* m_frames;
+    QAction* m_dockAgainst;
+    QAction* m_fitGuides;
+    QAction* m_deleteGuides;
+    QAction* m_showGuides;
+};
+
+} // namespace stylos::app

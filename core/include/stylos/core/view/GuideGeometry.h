@@ -1,0 +1,39 @@
+#pragma once
+/** @file
+ * @brief What the 3D view needs of a fragment's guides, in the scene frame: the docking drum's axis and flute
+ *        pitch (its first Axis guide through its pose; 2π / the number of its Groove guides), each guide as a
+ *        segment over the fragment's extent (the axis over the drum's height, each flute line along it), and
+ *        that extent: the bounds of the octree's occupied cells at a coarse level.
+ *        Units: metres, radians. Thread-safety: pure functions (the octree is only read).
+ *        Failure modes: none; a fragment without an Axis guide has no drum axis.
+ */
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/scene/Fragment.h"
+#include "stylos/core/view/GizmoHandles.h"
+
+#include <Eigen/Geometry>
+
+#include <optional>
+#include <vector>
+
+namespace stylos::core::view {
+
+/** @brief The drum axis of @p drum in the scene frame (its first Axis guide through its pose) and its flute
+ *         pitch (2π / its Groove guides; 0 without any); nullopt when it has no Axis guide. */
+std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum);
+
+/** @brief A guide drawn as a segment, scene frame. */
+struct GuideSegment {
+    Eigen::Vector3d a = Eigen::Vector3d::Zero();
+    Eigen::Vector3d b = Eigen::Vector3d::Zero();
+    scene::GuideKind kind = scene::GuideKind::Axis;
+};
+
+/** @brief Each guide of @p fragment over @p localBounds (its own frame): the part of the guide's line between the
+ *         projections of the box's corners on it, through the pose. None for an empty box. */
+std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds);
+
+/** @brief The bounds of @p octree's cells at @p level (clamped to its depth; whole cells), in its own frame. */
+Eigen::AlignedBox3d occupiedBounds(const octree::PackedOctree& octree, int level = 5);
+
+} // namespace stylos::core::view
