@@ -579,6 +579,10 @@
         <source>Could not prepare the demo scene: %1: %2.</source>
         <translation>Δεν ήταν δυνατή η προετοιμασία της σκηνής επίδειξης: %1: %2.</translation>
     </message>
+    <message>
+        <source>Flute</source>
+        <translation>Ράβδωση</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>

@@ -579,6 +579,10 @@
         <source>Could not prepare the demo scene: %1: %2.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Flute</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>

@@ -579,6 +579,10 @@
         <source>Could not prepare the demo scene: %1: %2.</source>
         <translation>Impossible de préparer la scène de démonstration : %1 : %2.</translation>
     </message>
+    <message>
+        <source>Flute</source>
+        <translation>Cannelure</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>

@@ -9,6 +9,7 @@
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
+#include <cmath>
 #include <QDateTime>
 #include <QDir>
 #include <QElapsedTimer>
@@ -183,9 +184,16 @@ void DemoSceneTest::generatesTheProject()
     const auto& drum = fragments[0];
     QCOMPARE(drum.pose.translationPart(), (std::array<double, 3>{0, 0, 0}));
     QCOMPARE(drum.pose(2, 2), 1.0);
-    QCOMPARE(drum.guides.size(), 1u);
+    QCOMPARE(drum.guides.size(), 49u); // the axis and 48 flutes
     QCOMPARE(drum.guides[0].kind, core::scene::GuideKind::Axis);
     QCOMPARE(drum.guides[0].direction, (std::array<double, 3>{0, 0, 1}));
+    for (std::size_t k = 1; k < drum.guides.size(); ++k) {
+        QCOMPARE(drum.guides[k].kind, core::scene::GuideKind::Groove);
+        QCOMPARE(drum.guides[k].direction, (std::array<double, 3>{0, 0, 1}));
+        const double r = std::hypot(drum.guides[k].origin[0], drum.guides[k].origin[1]);
+        QVERIFY2(std::abs(r - (0.55 - 0.008)) < 1e-12, qPrintable(QString::number(r))); // a flute's bottom
+    }
+    QCOMPARE(drum.guides[1].name, std::string("Flute 1"));
     QCOMPARE(bounds[0].hi[2] - bounds[0].lo[2] > 0.45, true); // half a metre high
     // Fragment A upright, fragment B lying (its parent drum's axis now horizontal), the omphalos to the left.
     QVERIFY(std::abs(fragments[1].pose(2, 2) - 1.0) < 1e-12);

@@ -208,8 +208,17 @@ std::optional<DemoFailure> generateDemoProject(const DemoRequest& request, Progr
         fragment.octreePath = output;
         fragment.pose = demoLayout(i, made.azimuth, *opened);
         fragment.colour = scene::defaultFragmentColour(i);
-        if (item.kind == SyntheticKind::Drum)
+        if (item.kind == SyntheticKind::Drum) {
+            // The drum's guides as designed: its axis, and each flute's bottom line (a fragment is docked
+            // against them; `stylos-cli guides` or "Fit drum guides" find the same from the points).
             fragment.guides.push_back({request.axisName, scene::GuideKind::Axis, {0.0, 0.0, 0.0}, {0.0, 0.0, 1.0}});
+            const DrumParameters& p = static_cast<const DrumShape&>(*made.object).parameters();
+            for (int k = 0; k < p.grooves; ++k) {
+                const double a = p.groovePhase + k * 2.0 * kPi / p.grooves, bottom = p.radius - p.grooveDepth;
+                fragment.guides.push_back({request.fluteName + " " + std::to_string(k + 1), scene::GuideKind::Groove,
+                                           {bottom * std::cos(a), bottom * std::sin(a), 0.0}, {0.0, 0.0, 1.0}});
+            }
+        }
         project.add(std::move(fragment));
         if (progress.isCancelRequested()) return cancelled(item.fileName);
     }

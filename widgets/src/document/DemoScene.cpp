@@ -130,6 +130,7 @@ bool DemoScene::prepare()
     request.skyDirections = SkyDirections;
     request.stamp = stamp().toStdString();
     request.axisName = tr("Axis").toStdString();
+    request.fluteName = tr("Flute").toStdString();
     auto* watcher = m_tasks.start<Outcome>(
         tr("Preparing the demo scene"),
         [request = std::move(request)](QPromise<Outcome>& promise, core::ProgressSink& progress) {

@@ -44,6 +44,7 @@ struct DemoRequest {
     int skyDirections = 96;         ///< directions of each item's 3D skydome
     std::string stamp;              ///< written to "demo.version"
     std::string axisName = "Axis";  ///< the drum's axis guide
+    std::string fluteName = "Flute"; ///< the drum's flute guides: "Flute 1", "Flute 2"…
 };
 
 /** @brief Why a generation stopped: the error (Cancelled when asked) and the file being made. */
