@@ -45,6 +45,15 @@ Scene sampleScene(const fs::path& folder)
     piece.colour = {1, 2, 3};
     scene.add(piece);
     scene.remove(scene.add(Fragment{}));  // nextId 4 while the largest id is 2
+    // An assembly holding the piece, docked against the drum; a removed one leaves nextAssemblyId at 3.
+    Assembly assembly;
+    assembly.name = "Drum 1 reconstruction";
+    assembly.pose = Pose::fromTranslationAngles({{-2.5, 0.125, 1e-17}, {0.0, 0.0, 1.0471975511965976}});
+    assembly.drum = 1;
+    const AssemblyId id = scene.addAssembly(assembly);
+    scene.takeAssembly(scene.addAssembly(Assembly{}));
+    scene.find(2)->assembly = id;
+    scene.find(2)->pose = Pose::fromTranslationAngles({{0.01, 0.02, 0.03}, {0.1, 0.2, 0.3}});
     return scene;
 }
 
@@ -75,7 +84,7 @@ TEST(ProjectFileTest, TheFileHoldsFormatVersionAndRelativePaths)
     ASSERT_TRUE(ProjectFile::save(scene, path).ok());
     const auto json = nlohmann::json::parse(contents(path));
     EXPECT_EQ(json["format"], "stylos-project");
-    EXPECT_EQ(json["version"], 1);
+    EXPECT_EQ(json["version"], 2);
     EXPECT_EQ(json["nextId"], 4);
     const auto& drum = json["fragments"][0];
     EXPECT_EQ(drum["octree"], "octrees/drum 1.poct");
@@ -201,8 +210,16 @@ TEST(ProjectFileTest, EveryBadKeyIsNamed)
         {"other format", [](J& j) { j["format"] = "stylos-octree"; }, ErrorCode::UnknownFormat, "format: "},
         {"no version", [](J& j) { j.erase("version"); }, ErrorCode::Malformed, "version: is missing"},
         {"text version", [](J& j) { j["version"] = "1"; }, ErrorCode::Malformed, "version: is not an integer"},
-        {"newer version", [](J& j) { j["version"] = 2; }, ErrorCode::Unsupported, "version: version 2 is not supported"},
+        {"newer version", [](J& j) { j["version"] = 3; }, ErrorCode::Unsupported, "version: version 3 is not supported"},
         {"older version", [](J& j) { j["version"] = 0; }, ErrorCode::Unsupported, "version: version 0"},
+        {"unknown assembly", [](J& j) { j["version"] = 2; j["fragments"][0]["assembly"] = 5; }, ErrorCode::Malformed,
+         "fragments[0].assembly: no assembly has id 5"},
+        {"assembly drum", [](J& j) { j["version"] = 2; j["assemblies"] = J::parse(R"([{"id": 1, "name": "r", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "drum": 9}])"); },
+         ErrorCode::Malformed, "assemblies[0].drum: no fragment has id 9"},
+        {"assembly pose", [](J& j) { j["version"] = 2; j["assemblies"] = J::parse(R"([{"id": 1, "name": "r", "pose": [2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])"); },
+         ErrorCode::Malformed, "assemblies[0].pose: is not a rigid transform"},
+        {"duplicate assembly", [](J& j) { j["version"] = 2; j["assemblies"] = J::parse(R"([{"id": 1, "name": "r", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}, {"id": 1, "name": "s", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])"); },
+         ErrorCode::Malformed, "assemblies[1].id: duplicate id 1"},
         {"no fragments", [](J& j) { j.erase("fragments"); }, ErrorCode::Malformed, "fragments: is missing"},
         {"fragments object", [](J& j) { j["fragments"] = J::object(); }, ErrorCode::Malformed, "fragments: is not an array"},
         {"fragment number", [](J& j) { j["fragments"][0] = 3; }, ErrorCode::Malformed, "fragments[0]: is not an object"},
@@ -254,6 +271,35 @@ TEST(ProjectFileTest, EveryBadKeyIsNamed)
         EXPECT_EQ(result.error().message.rfind(file.string() + ": " + c.position, 0), 0u)
             << c.what << ": " << result.error().message;
     }
+}
+
+TEST(ProjectFileTest, AVersionOneProjectStillOpensWithEveryFragmentAtTheTop)
+{
+    nlohmann::json document = validDocument(); // version 1: no assemblies
+    document["assemblies"] = nlohmann::json::parse(R"([{"id": 1, "name": "ignored in version 1", "pose": 0}])");
+    const auto result = ProjectFile::fromJson(document.dump(), "/projects/site.stylos");
+    ASSERT_TRUE(result.ok()) << result.error().message;
+    EXPECT_TRUE(result->scene.assemblies().empty());
+    EXPECT_EQ(result->scene.fragments().at(0).assembly, NoAssembly);
+    EXPECT_EQ(result->scene.nextAssemblyId(), 1u);
+}
+
+TEST(ProjectFileTest, AnAssemblysMembersKeepTheirPlaceInTheScene)
+{
+    test::TempDir dir;
+    const Scene scene = sampleScene(dir / "project");
+    const fs::path path = dir / "project" / "site.stylos";
+    ASSERT_TRUE(ProjectFile::save(scene, path).ok());
+    const auto loaded = ProjectFile::load(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    ASSERT_EQ(loaded->scene.assemblies().size(), 1u);
+    EXPECT_EQ(loaded->scene.assemblies()[0].drum, 1u);
+    EXPECT_EQ(loaded->scene.nextAssemblyId(), 3u);
+    EXPECT_EQ(loaded->scene.membersOf(loaded->scene.assemblies()[0].id), std::vector<FragmentId>{2});
+    EXPECT_EQ(loaded->scene.worldPose(2), scene.worldPose(2));
+    const auto json = nlohmann::json::parse(contents(path));
+    EXPECT_EQ(json["fragments"][1]["assembly"], 1);
+    EXPECT_EQ(json["fragments"][0]["assembly"], 0);
 }
 
 TEST(ProjectFileTest, OptionalKeysTakeTheirDefaults)

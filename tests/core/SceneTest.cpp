@@ -147,5 +147,60 @@ TEST(SceneTest, GuideKindsHaveStableNames)
     EXPECT_FALSE(guideKindFromName("Axis").has_value());
 }
 
+Pose turned(double x, double angle)
+{
+    return Pose::fromTranslationAngles({{x, 0.0, 0.0}, {0.0, 0.0, angle}});
+}
+
+TEST(SceneTest, AssembliesHoldFragmentsWhosePosesAreRelativeToThem)
+{
+    Scene scene;
+    const FragmentId a = scene.add(named("a")), b = scene.add(named("b"));
+    scene.find(a)->pose = turned(1.0, 0.0);
+    scene.find(b)->pose = turned(2.0, 0.0);
+    Assembly assembly;
+    assembly.name = "Drum 1 reconstruction";
+    assembly.pose = turned(10.0, 0.5);
+    const AssemblyId id = scene.addAssembly(assembly);
+    EXPECT_EQ(id, 1u);
+    EXPECT_EQ(scene.nextAssemblyId(), 2u);
+
+    // Moving a fragment in keeps it where it is in the scene; its own pose becomes relative.
+    const Pose before = scene.worldPose(a);
+    ASSERT_TRUE(scene.moveToAssembly(a, id));
+    EXPECT_EQ(scene.find(a)->assembly, id);
+    EXPECT_TRUE(scene.worldPose(a).approxEqual(before, 1e-12));
+    EXPECT_FALSE(scene.find(a)->pose.approxEqual(before, 1e-3));
+    EXPECT_EQ(scene.membersOf(id), std::vector<FragmentId>{a});
+    EXPECT_EQ(scene.membersOf(NoAssembly), std::vector<FragmentId>{b});
+
+    // Moving the assembly moves its member, not the others.
+    scene.findAssembly(id)->pose = turned(11.0, 0.5);
+    EXPECT_NEAR(scene.worldPose(a).translationPart()[0] - before.translationPart()[0], 1.0, 1e-12);
+    EXPECT_EQ(scene.worldPose(b), turned(2.0, 0.0));
+
+    // Unknown ids are refused; removing the assembly puts its member back at the top, in place.
+    EXPECT_FALSE(scene.moveToAssembly(a, 99));
+    EXPECT_FALSE(scene.moveToAssembly(77, id));
+    const Pose world = scene.worldPose(a);
+    const auto taken = scene.takeAssembly(id);
+    ASSERT_TRUE(taken.has_value());
+    EXPECT_EQ(taken->name, "Drum 1 reconstruction");
+    EXPECT_EQ(scene.find(a)->assembly, NoAssembly);
+    EXPECT_TRUE(scene.find(a)->pose.approxEqual(world, 1e-12));
+    EXPECT_EQ(scene.addAssembly(Assembly{}), 2u); // ids never reused
+    EXPECT_FALSE(scene.setNextAssemblyId(2));
+    EXPECT_TRUE(scene.setNextAssemblyId(5));
+}
+
+TEST(SceneTest, AFragmentNamingAMissingAssemblyIsInsertedAtTheTop)
+{
+    Scene scene;
+    Fragment f = named("orphan");
+    f.assembly = 4;
+    const FragmentId id = scene.add(f);
+    EXPECT_EQ(scene.find(id)->assembly, NoAssembly);
+}
+
 } // namespace
 } // namespace stylos::core::scene

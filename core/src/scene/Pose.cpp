@@ -117,4 +117,11 @@ bool Pose::isRigid(double tolerance) const
     return det > 0.0;
 }
 
+bool Pose::approxEqual(const Pose& other, double tolerance) const
+{
+    for (std::size_t i = 0; i < m_m.size(); ++i)
+        if (!(std::abs(m_m[i] - other.m_m[i]) <= tolerance)) return false;
+    return true;
+}
+
 } // namespace stylos::core::scene

@@ -49,6 +49,20 @@ OrderedJson fragmentJson(const Fragment& f, const std::filesystem::path& folder)
     out["visible"] = f.visible;
     out["guides"] = std::move(guides);
     out["annotations"] = f.annotationLayer;
+    out["assembly"] = f.assembly;
+    return out;
+}
+
+OrderedJson assemblyJson(const Assembly& a)
+{
+    OrderedJson pose = OrderedJson::array();
+    for (double v : a.pose.rowMajor()) pose.push_back(v);
+    OrderedJson out;
+    out["id"] = a.id;
+    out["name"] = a.name;
+    out["pose"] = std::move(pose);
+    out["drum"] = a.drum;
+    out["visible"] = a.visible;
     return out;
 }
 
@@ -107,6 +121,8 @@ private:
     }
 
     Result<Fragment> readFragment(const json& value, const std::string& key) const;
+    Result<Assembly> readAssembly(const json& value, const std::string& key) const;
+    Result<Pose> readPose(const json* pose, const std::string& key) const;
     Result<Guide> readGuide(const json& value, const std::string& key) const;
 
     std::string m_file;
@@ -124,16 +140,28 @@ Result<LoadedProject> SceneReader::read(const json& root)
     const json* version = member(root, "version");
     if (!version) return bad("version", "is missing");
     if (!version->is_number_integer()) return bad("version", "is not an integer");
-    if (version->get<std::int64_t>() != ProjectFormatVersion)
+    const std::int64_t versionNumber = version->get<std::int64_t>();
+    if (versionNumber < 1 || versionNumber > ProjectFormatVersion)
         return Error::at(ErrorCode::Unsupported, m_file, "version",
-                         "version " + std::to_string(version->get<std::int64_t>()) +
-                             " is not supported (this Stylos reads version " + std::to_string(ProjectFormatVersion) + ")");
+                         "version " + std::to_string(versionNumber) + " is not supported (this Stylos reads versions 1 to " +
+                             std::to_string(ProjectFormatVersion) + ")");
 
     const json* fragments = member(root, "fragments");
     if (!fragments) return bad("fragments", "is missing");
     if (!fragments->is_array()) return bad("fragments", "is not an array");
 
     LoadedProject project;
+    // Version 2: the assemblies, before the fragments that refer to them.
+    if (const json* assemblies = versionNumber >= 2 ? member(root, "assemblies") : nullptr) {
+        if (!assemblies->is_array()) return bad("assemblies", "is not an array");
+        for (std::size_t i = 0; i < assemblies->size(); ++i) {
+            const std::string key = "assemblies[" + std::to_string(i) + "]";
+            auto assembly = readAssembly((*assemblies)[i], key);
+            if (!assembly) return assembly.error();
+            if (project.scene.addAssembly(*assembly) == NoAssembly)
+                return bad(key + ".id", "duplicate id " + std::to_string(assembly->id));
+        }
+    }
     std::set<FragmentId> ids;
     for (std::size_t i = 0; i < fragments->size(); ++i) {
         const std::string key = "fragments[" + std::to_string(i) + "]";
@@ -141,6 +169,8 @@ Result<LoadedProject> SceneReader::read(const json& root)
         if (!fragment) return fragment.error();
         if (!ids.insert(fragment->id).second)
             return bad(key + ".id", "duplicate id " + std::to_string(fragment->id));
+        if (fragment->assembly != NoAssembly && !project.scene.findAssembly(fragment->assembly))
+            return bad(key + ".assembly", "no assembly has id " + std::to_string(fragment->assembly));
         if (!fragment->octreePath.empty() && !std::filesystem::exists(fragment->octreePath)) {
             fragment->octreeMissing = true;
             project.problems.push_back(Error::at(ErrorCode::NotFound, fragment->octreePath.string(), {},
@@ -153,7 +183,51 @@ Result<LoadedProject> SceneReader::read(const json& root)
         if (!nextId->is_number_unsigned() || !project.scene.setNextId(nextId->get<FragmentId>()))
             return bad("nextId", "is not an integer above every fragment id");
     }
+    for (std::size_t i = 0; i < project.scene.assemblies().size(); ++i) {
+        const FragmentId drum = project.scene.assemblies()[i].drum;
+        if (drum != NoFragment && !project.scene.find(drum))
+            return bad("assemblies[" + std::to_string(i) + "].drum", "no fragment has id " + std::to_string(drum));
+    }
+    if (const json* nextAssemblyId = versionNumber >= 2 ? member(root, "nextAssemblyId") : nullptr) {
+        if (!nextAssemblyId->is_number_unsigned() || !project.scene.setNextAssemblyId(nextAssemblyId->get<AssemblyId>()))
+            return bad("nextAssemblyId", "is not an integer above every assembly id");
+    }
     return project;
+}
+
+Result<Pose> SceneReader::readPose(const json* pose, const std::string& key) const
+{
+    if (!pose) return bad(key, "is missing");
+    std::array<double, 16> m{};
+    if (!finiteNumbers(*pose, 16, m.data())) return bad(key, "is not an array of 16 finite numbers");
+    Pose p(m);
+    if (!p.isRigid()) return bad(key, "is not a rigid transform (a rotation and a translation)");
+    return p;
+}
+
+Result<Assembly> SceneReader::readAssembly(const json& value, const std::string& key) const
+{
+    if (!value.is_object()) return bad(key, "is not an object");
+    Assembly a;
+    const json* id = member(value, "id");
+    if (!id) return bad(key + ".id", "is missing");
+    if (!id->is_number_unsigned() || id->get<AssemblyId>() == NoAssembly) return bad(key + ".id", "is not a positive integer");
+    a.id = id->get<AssemblyId>();
+    const json* name = member(value, "name");
+    if (!name || !name->is_string()) return bad(key + ".name", "is missing or not a string");
+    a.name = name->get<std::string>();
+    auto pose = readPose(member(value, "pose"), key + ".pose");
+    if (!pose) return pose.error();
+    a.pose = *pose;
+    if (const json* drum = member(value, "drum")) {
+        if (!drum->is_number_unsigned()) return bad(key + ".drum", "is not a fragment id");
+        a.drum = drum->get<FragmentId>();
+    }
+    if (const json* visible = member(value, "visible")) {
+        if (!visible->is_boolean()) return bad(key + ".visible", "is not true or false");
+        a.visible = visible->get<bool>();
+    }
+    return a;
 }
 
 Result<Fragment> SceneReader::readFragment(const json& value, const std::string& key) const
@@ -182,12 +256,13 @@ Result<Fragment> SceneReader::readFragment(const json& value, const std::string&
         f.sourcePath = ProjectFile::resolvedPath(source->get<std::string>(), m_folder);
     }
 
-    const json* pose = member(value, "pose");
-    if (!pose) return bad(key + ".pose", "is missing");
-    std::array<double, 16> m{};
-    if (!finiteNumbers(*pose, 16, m.data())) return bad(key + ".pose", "is not an array of 16 finite numbers");
-    f.pose = Pose(m);
-    if (!f.pose.isRigid()) return bad(key + ".pose", "is not a rigid transform (a rotation and a translation)");
+    auto pose = readPose(member(value, "pose"), key + ".pose");
+    if (!pose) return pose.error();
+    f.pose = *pose;
+    if (const json* assembly = member(value, "assembly")) {
+        if (!assembly->is_number_unsigned()) return bad(key + ".assembly", "is not an assembly id");
+        f.assembly = assembly->get<std::uint64_t>();
+    }
 
     if (const json* colour = member(value, "colour")) {
         const auto rgb = colour->is_string() ? Rgb::fromHex(colour->get<std::string>()) : std::nullopt;
@@ -247,6 +322,10 @@ std::string ProjectFile::toJson(const Scene& scene, const std::filesystem::path&
     root["format"] = ProjectFormatName;
     root["version"] = ProjectFormatVersion;
     root["nextId"] = scene.nextId();
+    root["nextAssemblyId"] = scene.nextAssemblyId();
+    OrderedJson assemblies = OrderedJson::array();
+    for (const Assembly& a : scene.assemblies()) assemblies.push_back(assemblyJson(a));
+    root["assemblies"] = std::move(assemblies);
     root["fragments"] = std::move(fragments);
     return root.dump(2) + "\n";
 }

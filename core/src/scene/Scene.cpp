@@ -18,6 +18,7 @@ FragmentId Scene::insert(std::size_t index, Fragment fragment)
     if (fragment.id == NoFragment) fragment.id = allocateId();
     else if (find(fragment.id)) return NoFragment;
     m_nextId = std::max(m_nextId, fragment.id + 1);
+    if (fragment.assembly != NoAssembly && !findAssembly(fragment.assembly)) fragment.assembly = NoAssembly;
     const FragmentId id = fragment.id;
     index = std::min(index, m_fragments.size());
     m_fragments.insert(m_fragments.begin() + static_cast<std::ptrdiff_t>(index), std::move(fragment));
@@ -52,6 +53,94 @@ std::optional<std::size_t> Scene::indexOf(FragmentId id) const
     for (std::size_t i = 0; i < m_fragments.size(); ++i)
         if (m_fragments[i].id == id) return i;
     return std::nullopt;
+}
+
+bool Scene::setNextAssemblyId(AssemblyId id)
+{
+    if (id == NoAssembly) return false;
+    for (const Assembly& a : m_assemblies)
+        if (a.id >= id) return false;
+    m_nextAssemblyId = id;
+    return true;
+}
+
+AssemblyId Scene::insertAssembly(std::size_t index, Assembly assembly)
+{
+    if (assembly.id == NoAssembly) assembly.id = m_nextAssemblyId++;
+    else if (findAssembly(assembly.id)) return NoAssembly;
+    m_nextAssemblyId = std::max(m_nextAssemblyId, assembly.id + 1);
+    const AssemblyId id = assembly.id;
+    index = std::min(index, m_assemblies.size());
+    m_assemblies.insert(m_assemblies.begin() + static_cast<std::ptrdiff_t>(index), std::move(assembly));
+    return id;
+}
+
+std::optional<Assembly> Scene::takeAssembly(AssemblyId id)
+{
+    const auto at = assemblyIndexOf(id);
+    if (!at) return std::nullopt;
+    for (Fragment& f : m_fragments)
+        if (f.assembly == id) {
+            f.pose = m_assemblies[*at].pose * f.pose;
+            f.assembly = NoAssembly;
+        }
+    Assembly assembly = std::move(m_assemblies[*at]);
+    m_assemblies.erase(m_assemblies.begin() + static_cast<std::ptrdiff_t>(*at));
+    return assembly;
+}
+
+const Assembly* Scene::findAssembly(AssemblyId id) const
+{
+    const auto at = assemblyIndexOf(id);
+    return at ? &m_assemblies[*at] : nullptr;
+}
+
+Assembly* Scene::findAssembly(AssemblyId id)
+{
+    const auto at = assemblyIndexOf(id);
+    return at ? &m_assemblies[*at] : nullptr;
+}
+
+std::optional<std::size_t> Scene::assemblyIndexOf(AssemblyId id) const
+{
+    if (id == NoAssembly) return std::nullopt;
+    for (std::size_t i = 0; i < m_assemblies.size(); ++i)
+        if (m_assemblies[i].id == id) return i;
+    return std::nullopt;
+}
+
+std::vector<FragmentId> Scene::membersOf(AssemblyId id) const
+{
+    std::vector<FragmentId> members;
+    for (const Fragment& f : m_fragments)
+        if (f.assembly == id) members.push_back(f.id);
+    return members;
+}
+
+bool Scene::moveToAssembly(FragmentId id, AssemblyId assembly)
+{
+    Fragment* f = find(id);
+    if (!f || (assembly != NoAssembly && !findAssembly(assembly))) return false;
+    if (f->assembly == assembly) return true;
+    const Pose world = worldPose(id);
+    f->assembly = assembly;
+    f->pose = localPose(id, world);
+    return true;
+}
+
+Pose Scene::worldPose(FragmentId id) const
+{
+    const Fragment* f = find(id);
+    if (!f) return {};
+    const Assembly* a = findAssembly(f->assembly);
+    return a ? a->pose * f->pose : f->pose;
+}
+
+Pose Scene::localPose(FragmentId id, const Pose& world) const
+{
+    const Fragment* f = find(id);
+    const Assembly* a = f ? findAssembly(f->assembly) : nullptr;
+    return a ? a->pose.rigidInverse() * world : world;
 }
 
 } // namespace stylos::core::scene

@@ -65,7 +65,8 @@ struct Fragment {
     std::string name;
     std::filesystem::path octreePath;   ///< the `.poct`, absolute in memory (relative only in the file)
     std::filesystem::path sourcePath;   ///< the scan it was built from, absolute; empty when opened as a .poct
-    Pose pose;                          ///< fragment frame → scene frame, rigid
+    Pose pose;                          ///< fragment frame → its assembly's frame (the scene's when none), rigid
+    std::uint64_t assembly = 0;         ///< the AssemblyId it belongs to (Assembly.h); 0: the scene's top level
     Rgb colour;
     bool visible = true;
     std::vector<Guide> guides;          ///< in the fragment's frame, in display order

@@ -61,6 +61,8 @@ public:
     bool isRigid(double tolerance = 1e-6) const;
 
     bool operator==(const Pose&) const = default;
+    /** @brief Whether every element differs from @p other's by at most @p tolerance. */
+    bool approxEqual(const Pose& other, double tolerance) const;
 
 private:
     std::array<double, 16> m_m{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};

@@ -2,24 +2,32 @@
 /** @file
  * @brief The project file (`.stylos`): the scene as JSON,
  *
- *     {"format": "stylos-project", "version": 1, "nextId": 3,
+ *     {"format": "stylos-project", "version": 2, "nextId": 3, "nextAssemblyId": 2,
+ *      "assemblies": [{"id": 1, "name": "Drum 1 reconstruction", "pose": [16 numbers, row-major],
+ *                      "drum": 2, "visible": true}],
  *      "fragments": [{"id": 1, "name": "Drum 1", "octree": "drum1.poct", "source": "scans/drum1.ply",
  *                     "pose": [16 numbers, row-major], "colour": "#d6ccba", "visible": true,
  *                     "guides": [{"name": "axis", "kind": "axis", "origin": [x, y, z],
  *                                 "direction": [x, y, z]}],
- *                     "annotations": ""}]}
+ *                     "annotations": "", "assembly": 1}]}
+ *
+ * A fragment's "pose" is relative to its "assembly" (0 or absent: the scene's top level); an assembly's
+ * "drum" is the fragment whose guides its members dock against (0: none). Version 1 files (no
+ * assemblies, every fragment at the top level) are still read; files are written as version 2.
  *
  * Paths are stored relative to the project file's folder ('/' separators; absolute only when no relative
  * form exists) and resolved back to absolute on load, so a project folder can be moved or copied whole.
  * Doubles are written with enough digits to read back bit for bit: save then load gives an equal Scene.
  * Saving is atomic (util/AtomicTextFile.h). Every key listed is written, even when empty; unknown keys
- * are ignored (a later version-1 writer may add some). Optional on load (defaults in brackets): "nextId"
- * [above the largest id], "source" [""], "colour" [#c8c8c8], "visible" [true], "guides" [[]],
- * "annotations" [""]; "id", "name", "octree" and "pose" are required.
+ * are ignored (a later writer may add some). Optional on load (defaults in brackets): "nextId"
+ * [above the largest id], "nextAssemblyId" [above the largest], "assemblies" [[]], "source" [""], "colour"
+ * [#c8c8c8], "visible" [true], "guides" [[]], "annotations" [""], "assembly" [0], an assembly's "drum"
+ * [0] and "visible" [true]; "id", "name", "octree" and "pose" are required (an assembly's "id", "name", "pose").
  *
  * Load failures name the file and the key: NotFound, Unreadable, Empty; Malformed (not JSON: "line L,
  * column C"; a key of the wrong type or out of range: its path, e.g. "fragments[1].pose"; a duplicate
- * id); UnknownFormat (no "format": "stylos-project"); Unsupported (another "version").
+ * id; a fragment's "assembly" or an assembly's "drum" that names nothing); UnknownFormat (no "format":
+ * "stylos-project"); Unsupported (a "version" other than 1 or 2).
  * A fragment whose octree file does not exist is not a failure: the project loads with that fragment's
  * octreeMissing set and one NotFound problem naming the octree file.
  * Thread-safety: reentrant.
@@ -36,8 +44,8 @@ namespace stylos::core::scene {
 
 /** @brief The value of "format". */
 inline constexpr std::string_view ProjectFormatName = "stylos-project";
-/** @brief The version this code writes and the only one it reads. */
-inline constexpr int ProjectFormatVersion = 1;
+/** @brief The version this code writes; it reads 1 (no assemblies) up to this one. */
+inline constexpr int ProjectFormatVersion = 2;
 /** @brief The project file's extension, dot included. */
 inline constexpr std::string_view ProjectExtension = ".stylos";
 

@@ -1,11 +1,14 @@
 #pragma once
 /** @file
- * @brief The scene: fragments in display order, each with a stable id. Ids are handed out by the scene
- *        from nextId() and never reused, even after a removal, so references to a fragment (undo
- *        commands, annotations, guides of another fragment) stay valid. Plain data, no Qt; the widgets
- *        layer's SceneDocument owns one and changes it through undo commands.
+ * @brief The scene, a graph of two levels: assemblies, and fragments in display order, each fragment at
+ *        the top level or in one assembly (Fragment::assembly), its pose relative to that assembly
+ *        (worldPose() composes them). Ids are handed out by the scene from nextId() / nextAssemblyId() and
+ *        never reused, even after a removal, so references (undo commands, annotations, an assembly's
+ *        drum) stay valid. Plain data, no Qt; the widgets layer's SceneDocument owns one and changes it
+ *        through undo commands. Invariant: every fragment's assembly exists (or is NoAssembly).
  *        Thread-safety: none (a value type; confine to one thread or copy).
  */
+#include "stylos/core/scene/Assembly.h"
 #include "stylos/core/scene/Fragment.h"
 
 #include <cstddef>
@@ -35,7 +38,8 @@ public:
     FragmentId add(Fragment fragment) { return insert(m_fragments.size(), std::move(fragment)); }
     /**
      * @brief Inserts @p fragment before position @p index (clamped to size()). A fragment with id
-     *        NoFragment gets allocateId(); one with an id keeps it and nextId() moves above it.
+     *        NoFragment gets allocateId(); one with an id keeps it and nextId() moves above it. A fragment
+     *        naming an assembly that does not exist goes to the top level (its pose kept as it is).
      * @return the fragment's id, or NoFragment (nothing inserted) when its id is already in the scene.
      */
     FragmentId insert(std::size_t index, Fragment fragment);
@@ -43,8 +47,12 @@ public:
     std::optional<Fragment> take(FragmentId id);
     /** @brief Removes the fragment; false when there is none with @p id. */
     bool remove(FragmentId id) { return take(id).has_value(); }
-    /** @brief Removes every fragment; nextId() is kept (ids are never reused). */
-    void clear() { m_fragments.clear(); }
+    /** @brief Removes every fragment and assembly; the next ids are kept (ids are never reused). */
+    void clear()
+    {
+        m_fragments.clear();
+        m_assemblies.clear();
+    }
 
     /** @brief The fragment with @p id, or nullptr. Pointers are invalidated by insert and take. */
     const Fragment* find(FragmentId id) const;
@@ -52,11 +60,38 @@ public:
     /** @brief Position of the fragment with @p id in display order. */
     std::optional<std::size_t> indexOf(FragmentId id) const;
 
+    // Assemblies.
+    const std::vector<Assembly>& assemblies() const { return m_assemblies; }
+    AssemblyId nextAssemblyId() const { return m_nextAssemblyId; }
+    /** @brief Sets the next assembly id; false (nothing changed) when not above every assembly's id. */
+    bool setNextAssemblyId(AssemblyId id);
+    /** @brief Inserts @p assembly before position @p index (clamped); an id of NoAssembly gets the next
+     *  one. Returns its id, or NoAssembly (nothing inserted) when the id is already used. */
+    AssemblyId insertAssembly(std::size_t index, Assembly assembly);
+    AssemblyId addAssembly(Assembly assembly) { return insertAssembly(m_assemblies.size(), std::move(assembly)); }
+    /** @brief Removes the assembly and returns it; its members move to the top level keeping their
+     *  place in the scene (their pose composed with the assembly's). nullopt when there is none. */
+    std::optional<Assembly> takeAssembly(AssemblyId id);
+    const Assembly* findAssembly(AssemblyId id) const;
+    Assembly* findAssembly(AssemblyId id);
+    std::optional<std::size_t> assemblyIndexOf(AssemblyId id) const;
+    /** @brief The members of assembly @p id in display order (the top level's for NoAssembly). */
+    std::vector<FragmentId> membersOf(AssemblyId id) const;
+    /** @brief Moves fragment @p id into assembly @p assembly (NoAssembly: the top level), its place in the
+     *  scene kept (its pose re-expressed in the new frame). False when either does not exist. */
+    bool moveToAssembly(FragmentId id, AssemblyId assembly);
+    /** @brief Fragment frame → scene frame: its assembly's pose composed with its own. Identity when none. */
+    Pose worldPose(FragmentId id) const;
+    /** @brief The pose, relative to fragment @p id's assembly, that puts it at @p world in the scene. */
+    Pose localPose(FragmentId id, const Pose& world) const;
+
     bool operator==(const Scene&) const = default;
 
 private:
     std::vector<Fragment> m_fragments;
+    std::vector<Assembly> m_assemblies;
     FragmentId m_nextId = 1;
+    AssemblyId m_nextAssemblyId = 1;
 };
 
 } // namespace stylos::core::scene
