@@ -92,7 +92,7 @@ void DeveloppeeLink::markInView(quint64 fragmentId, const Eigen::Vector3d& octre
 {
     const core::scene::Fragment* f = m_document.fragment(fragmentId);
     if (!f || !m_viewport) return;
-    m_viewport->setMarker(core::scene::apply(f->pose, octreePoint));
+    m_viewport->setMarker(core::scene::apply(m_document.worldPose(f->id), octreePoint));
 }
 
 void DeveloppeeLink::markInDeveloppee(const Eigen::Vector3d& scenePoint, core::scene::FragmentId id)
@@ -103,7 +103,7 @@ void DeveloppeeLink::markInDeveloppee(const Eigen::Vector3d& scenePoint, core::s
         view->setMarker(std::nullopt);
         return;
     }
-    view->setMarker(core::scene::apply(f->pose.rigidInverse(), scenePoint));
+    view->setMarker(core::scene::apply(m_document.worldPose(f->id).rigidInverse(), scenePoint));
 }
 
 } // namespace stylos::app

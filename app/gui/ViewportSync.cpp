@@ -47,9 +47,9 @@ void ViewportSync::pushNow()
         core::view::ViewFragment r;
         r.id = f.id;
         r.octree = std::move(octree);
-        r.pose = core::scene::toEigen(f.pose);
+        r.pose = core::scene::toEigen(m_document.worldPose(f.id));
         r.colour = {f.colour.r, f.colour.g, f.colour.b};
-        r.visible = f.visible;
+        r.visible = m_document.isShown(f.id);
         r.selected = m_selection.contains(f.id);
         fragments.push_back(std::move(r));
     }

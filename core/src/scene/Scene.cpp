@@ -75,6 +75,20 @@ AssemblyId Scene::insertAssembly(std::size_t index, Assembly assembly)
     return id;
 }
 
+void Scene::setAssemblies(std::vector<Assembly> assemblies, AssemblyId nextAssemblyId)
+{
+    for (Fragment& f : m_fragments) {
+        if (f.assembly == NoAssembly) continue;
+        const bool kept = std::any_of(assemblies.begin(), assemblies.end(), [&f](const Assembly& a) { return a.id == f.assembly; });
+        if (kept) continue;
+        f.pose = worldPose(f.id);
+        f.assembly = NoAssembly;
+    }
+    m_assemblies = std::move(assemblies);
+    m_nextAssemblyId = std::max<AssemblyId>(nextAssemblyId, 1);
+    for (const Assembly& a : m_assemblies) m_nextAssemblyId = std::max(m_nextAssemblyId, a.id + 1);
+}
+
 std::optional<Assembly> Scene::takeAssembly(AssemblyId id)
 {
     const auto at = assemblyIndexOf(id);

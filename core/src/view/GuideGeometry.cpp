@@ -8,11 +8,11 @@
 
 namespace stylos::core::view {
 
-std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum)
+std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum, const scene::Pose* world)
 {
     const auto axis = scene::firstGuide(drum, scene::GuideKind::Axis);
     if (!axis) return std::nullopt;
-    const Eigen::Matrix4d pose = scene::toEigen(drum.pose);
+    const Eigen::Matrix4d pose = scene::toEigen(world ? *world : drum.pose);
     DrumAxis result;
     result.point = pose.topLeftCorner<3, 3>() * axis->origin + pose.topRightCorner<3, 1>();
     result.direction = (pose.topLeftCorner<3, 3>() * axis->direction).normalized();
@@ -22,11 +22,12 @@ std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum)
     return result;
 }
 
-std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds)
+std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds,
+                                        const scene::Pose* world)
 {
     std::vector<GuideSegment> segments;
     if (localBounds.isEmpty()) return segments;
-    const Eigen::Matrix4d pose = scene::toEigen(fragment.pose);
+    const Eigen::Matrix4d pose = scene::toEigen(world ? *world : fragment.pose);
     const auto toScene = [&pose](const Eigen::Vector3d& p) -> Eigen::Vector3d {
         return pose.topLeftCorner<3, 3>() * p + pose.topRightCorner<3, 1>();
     };

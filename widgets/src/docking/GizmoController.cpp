@@ -52,7 +52,7 @@ void GizmoController::setEnabled(bool enabled)
     }
     auto tool = std::make_unique<GizmoTool>(
         [this](quint64 id, const Eigen::Matrix4d& pose, bool continuing) {
-            m_document.setFragmentPose(id, core::scene::poseFromEigen(pose), continuing);
+            m_document.setFragmentWorldPose(id, core::scene::poseFromEigen(pose), continuing);
         },
         [this](core::view::GizmoFrame frame) {
             m_frame = frame;
@@ -84,11 +84,13 @@ void GizmoController::refresh()
         return;
     }
     core::view::GizmoTarget target;
-    target.pose = core::scene::toEigen(f->pose);
+    target.pose = core::scene::toEigen(m_document.worldPose(m_fragment));
     target.localCentre = bounds.center();
-    const FragmentId drumId = m_document.dockingDrum();
-    if (const core::scene::Fragment* drum = m_document.fragment(drumId); drum && drumId != m_fragment)
-        target.drum = core::view::drumAxisOf(*drum);
+    const FragmentId drumId = m_document.drumFor(m_fragment);
+    if (const core::scene::Fragment* drum = m_document.fragment(drumId); drum && drumId != m_fragment) {
+        const core::scene::Pose world = m_document.worldPose(drumId);
+        target.drum = core::view::drumAxisOf(*drum, &world);
+    }
     t->setTarget(m_fragment, target);
 }
 

@@ -49,8 +49,9 @@ void GuidesDisplay::pushNow()
     m_scheduled = false;
     std::vector<core::view::GuideSegment> segments;
     for (const core::scene::Fragment& f : m_document.scene().fragments()) {
-        if (!f.visible || f.guides.empty()) continue;
-        const auto fragmentSegments = core::view::guideSegments(f, m_bounds->of(m_document, f.id));
+        if (!m_document.isShown(f.id) || f.guides.empty()) continue;
+        const core::scene::Pose world = m_document.worldPose(f.id);
+        const auto fragmentSegments = core::view::guideSegments(f, m_bounds->of(m_document, f.id), &world);
         segments.insert(segments.end(), fragmentSegments.begin(), fragmentSegments.end());
     }
     m_overlay->setSegments(std::move(segments));

@@ -9,6 +9,7 @@
 #include "document/commands/SetFragmentColourCommand.h"
 #include "document/commands/SetFragmentGuidesCommand.h"
 #include "document/commands/SetFragmentPoseCommand.h"
+#include "document/commands/SetSceneStructureCommand.h"
 #include "document/commands/SetFragmentVisibleCommand.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
@@ -160,6 +161,138 @@ bool SceneDocument::setDockingDrum(FragmentId id)
     return true;
 }
 
+core::scene::FragmentId SceneDocument::drumFor(FragmentId id) const
+{
+    const Fragment* f = m_scene.find(id);
+    const core::scene::Assembly* a = f ? m_scene.findAssembly(f->assembly) : nullptr;
+    return a && a->drum != core::scene::NoFragment ? a->drum : m_dockingDrum;
+}
+
+bool SceneDocument::isShown(FragmentId id) const
+{
+    const Fragment* f = m_scene.find(id);
+    if (!f || !f->visible) return false;
+    const core::scene::Assembly* a = m_scene.findAssembly(f->assembly);
+    return !a || a->visible;
+}
+
+bool SceneDocument::setFragmentWorldPose(FragmentId id, const core::scene::Pose& world, bool continuing)
+{
+    if (!m_scene.find(id)) return false;
+    return setFragmentPose(id, m_scene.localPose(id, world), continuing);
+}
+
+template <typename Edit>
+bool SceneDocument::editStructure(const std::vector<FragmentId>& touched, const QString& text, Edit edit)
+{
+    core::scene::Scene after = m_scene;
+    if (!edit(after)) return false;
+    SceneStructure before = SceneStructure::of(m_scene, touched), next = SceneStructure::of(after, touched);
+    if (before.assemblies == next.assemblies && before.fragments == next.fragments) return false;
+    m_undo->push(new SetSceneStructureCommand(*this, std::move(before), std::move(next), text));
+    return true;
+}
+
+core::scene::AssemblyId SceneDocument::newAssembly(const QString& name, const std::vector<FragmentId>& members)
+{
+    if (name.trimmed().isEmpty()) return core::scene::NoAssembly;
+    const AssemblyId id = m_scene.nextAssemblyId();
+    const bool pushed = editStructure(members, tr("New assembly %1").arg(name.trimmed()), [&](core::scene::Scene& s) {
+        core::scene::Assembly a;
+        a.name = name.trimmed().toStdString();
+        if (!members.empty() && s.find(members.front())) a.pose = s.worldPose(members.front());
+        if (s.addAssembly(a) != id) return false;
+        for (FragmentId f : members)
+            if (!s.moveToAssembly(f, id)) return false;
+        return true;
+    });
+    return pushed ? id : core::scene::NoAssembly;
+}
+
+bool SceneDocument::removeAssembly(AssemblyId id)
+{
+    const core::scene::Assembly* a = m_scene.findAssembly(id);
+    if (!a) return false;
+    return editStructure(m_scene.membersOf(id), tr("Remove assembly %1").arg(QString::fromStdString(a->name)),
+                         [id](core::scene::Scene& s) { return s.takeAssembly(id).has_value(); });
+}
+
+bool SceneDocument::renameAssembly(AssemblyId id, const QString& name)
+{
+    const core::scene::Assembly* a = m_scene.findAssembly(id);
+    if (!a || name.trimmed().isEmpty()) return false;
+    return editStructure({}, tr("Rename %1").arg(QString::fromStdString(a->name)), [&](core::scene::Scene& s) {
+        s.findAssembly(id)->name = name.trimmed().toStdString();
+        return true;
+    });
+}
+
+bool SceneDocument::moveToAssembly(const std::vector<FragmentId>& fragments, AssemblyId assembly)
+{
+    if (assembly != core::scene::NoAssembly && !m_scene.findAssembly(assembly)) return false;
+    const QString text = assembly == core::scene::NoAssembly
+                             ? tr("Take out of assembly")
+                             : tr("Move into %1").arg(QString::fromStdString(m_scene.findAssembly(assembly)->name));
+    return editStructure(fragments, text, [&](core::scene::Scene& s) {
+        for (FragmentId f : fragments)
+            if (!s.moveToAssembly(f, assembly)) return false;
+        return true;
+    });
+}
+
+bool SceneDocument::setAssemblyPose(AssemblyId id, const core::scene::Pose& pose)
+{
+    const core::scene::Assembly* a = m_scene.findAssembly(id);
+    if (!a || !pose.isRigid()) return false;
+    return editStructure({}, tr("Move %1").arg(QString::fromStdString(a->name)), [&](core::scene::Scene& s) {
+        s.findAssembly(id)->pose = pose;
+        return true;
+    });
+}
+
+bool SceneDocument::setAssemblyDrum(AssemblyId id, FragmentId drum)
+{
+    const core::scene::Assembly* a = m_scene.findAssembly(id);
+    if (!a || (drum != core::scene::NoFragment && !m_scene.find(drum))) return false;
+    return editStructure({}, tr("Set the drum of %1").arg(QString::fromStdString(a->name)), [&](core::scene::Scene& s) {
+        s.findAssembly(id)->drum = drum;
+        return true;
+    });
+}
+
+bool SceneDocument::setAssemblyVisible(AssemblyId id, bool visible)
+{
+    const core::scene::Assembly* a = m_scene.findAssembly(id);
+    if (!a) return false;
+    return editStructure({}, visible ? tr("Show %1").arg(QString::fromStdString(a->name))
+                                     : tr("Hide %1").arg(QString::fromStdString(a->name)),
+                         [&](core::scene::Scene& s) {
+                             s.findAssembly(id)->visible = visible;
+                             return true;
+                         });
+}
+
+void SceneDocument::applyStructure(const SceneStructure& structure)
+{
+    // Membership or the set of assemblies changes the tree; names, poses, drums and visibility do not.
+    std::vector<core::scene::AssemblyId> ids, nextIds;
+    for (const auto& a : m_scene.assemblies()) ids.push_back(a.id);
+    for (const auto& a : structure.assemblies) nextIds.push_back(a.id);
+    bool treeChanges = ids != nextIds;
+    for (const auto& [id, where] : structure.fragments)
+        if (const Fragment* f = m_scene.find(id); f && f->assembly != where.first) treeChanges = true;
+    if (treeChanges) Q_EMIT structureAboutToChange();
+    m_scene.setAssemblies(structure.assemblies, structure.nextAssemblyId);
+    for (const auto& [id, where] : structure.fragments)
+        if (Fragment* f = m_scene.find(id)) {
+            f->assembly = where.first;
+            f->pose = where.second;
+        }
+    if (treeChanges) Q_EMIT structureChanged();
+    for (const auto& a : structure.assemblies) Q_EMIT assemblyChanged(a.id);
+    for (const Fragment& f : m_scene.fragments()) Q_EMIT fragmentChanged(f.id);
+}
+
 void SceneDocument::newProject()
 {
     resetScene(core::scene::Scene{});
@@ -219,7 +352,9 @@ void SceneDocument::insertFragment(int index, Fragment fragment, OctreePtr octre
 {
     if (m_scene.find(fragment.id)) return; // a programmer error: ids are unique
     index = std::clamp(index, 0, static_cast<int>(m_scene.size()));
-    Q_EMIT fragmentAboutToBeAdded(index);
+    if (fragment.assembly != core::scene::NoAssembly && !m_scene.findAssembly(fragment.assembly))
+        fragment.assembly = core::scene::NoAssembly;
+    Q_EMIT fragmentAboutToBeAdded(index, fragment.assembly);
     const FragmentId id = m_scene.insert(static_cast<std::size_t>(index), std::move(fragment));
     if (octree) m_octrees[id] = std::move(octree);
     Q_EMIT fragmentAdded(id);

@@ -5,19 +5,39 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QColor>
+#include <QFont>
+#include <QMimeData>
 #include <QGuiApplication>
 #include <QPalette>
 
 namespace stylos::widgets {
 
+using core::scene::Assembly;
+using core::scene::AssemblyId;
 using core::scene::Fragment;
 using core::scene::FragmentId;
+
+namespace {
+
+// Internal ids: 0 on the root's rows (assemblies, then top-level fragments); kAssemblyTag | assembly on the
+// rows of an assembly's members; the fragment's id on the rows under a fragment (guides, développée).
+constexpr quintptr kAssemblyTag = quintptr(1) << (sizeof(quintptr) * 8 - 1);
+
+bool isMemberRow(const QModelIndex& index) { return (index.internalId() & kAssemblyTag) != 0; }
+
+} // namespace
 
 SceneTreeModel::SceneTreeModel(SceneDocument& document, QObject* parent)
     : QAbstractItemModel(parent), m_document(document)
 {
-    connect(&document, &SceneDocument::fragmentAboutToBeAdded, this,
-            [this](int row) { beginInsertRows({}, row, row); });
+    connect(&document, &SceneDocument::fragmentAboutToBeAdded, this, [this](int index, quint64 assembly) {
+        // Its row among the fragments of the same parent that come before it in the scene.
+        const auto& fragments = m_document.scene().fragments();
+        int row = assembly == core::scene::NoAssembly ? assemblyCount() : 0;
+        for (int i = 0; i < index && i < static_cast<int>(fragments.size()); ++i)
+            if (fragments[static_cast<std::size_t>(i)].assembly == assembly) ++row;
+        beginInsertRows(indexOfAssembly(assembly), row, row);
+    });
     connect(&document, &SceneDocument::fragmentAdded, this, [this](quint64 id) {
         const Fragment* f = m_document.fragment(id);
         m_guideCounts[id] = f ? static_cast<int>(f->guides.size()) : 0;
@@ -25,12 +45,21 @@ SceneTreeModel::SceneTreeModel(SceneDocument& document, QObject* parent)
     });
     connect(&document, &SceneDocument::fragmentAboutToBeRemoved, this, [this](quint64 id) {
         const QModelIndex row = indexOf(id);
-        beginRemoveRows({}, row.row(), row.row());
+        beginRemoveRows(row.parent(), row.row(), row.row());
     });
     connect(&document, &SceneDocument::fragmentRemoved, this, [this](quint64 id) {
         m_guideCounts.erase(id);
         m_developpeeRows.erase(id);
         endRemoveRows();
+    });
+    connect(&document, &SceneDocument::structureAboutToChange, this, [this] { beginResetModel(); });
+    connect(&document, &SceneDocument::structureChanged, this, [this] {
+        rebuildGuideCounts();
+        endResetModel();
+    });
+    connect(&document, &SceneDocument::assemblyChanged, this, [this](quint64 id) {
+        const QModelIndex row = indexOfAssembly(id);
+        if (row.isValid()) Q_EMIT dataChanged(row, row);
     });
     connect(&document, &SceneDocument::fragmentChanged, this, &SceneTreeModel::onFragmentChanged);
     connect(&document, &SceneDocument::developpeeChanged, this, &SceneTreeModel::onDeveloppeeChanged);
@@ -44,27 +73,59 @@ SceneTreeModel::SceneTreeModel(SceneDocument& document, QObject* parent)
 
 QModelIndex SceneTreeModel::indexOf(FragmentId id) const
 {
-    const auto row = m_document.scene().indexOf(id);
+    const core::scene::Scene& scene = m_document.scene();
+    const Fragment* f = scene.find(id);
+    if (!f) return {};
+    int row = f->assembly == core::scene::NoAssembly ? assemblyCount() : 0;
+    for (const Fragment& other : scene.fragments()) {
+        if (other.id == id) break;
+        if (other.assembly == f->assembly) ++row;
+    }
+    const quintptr internal = f->assembly == core::scene::NoAssembly ? 0 : (kAssemblyTag | quintptr(f->assembly));
+    return createIndex(row, 0, internal);
+}
+
+int SceneTreeModel::assemblyCount() const
+{
+    return static_cast<int>(m_document.scene().assemblies().size());
+}
+
+QModelIndex SceneTreeModel::indexOfAssembly(AssemblyId id) const
+{
+    const auto row = m_document.scene().assemblyIndexOf(id);
     return row ? createIndex(static_cast<int>(*row), 0, quintptr(0)) : QModelIndex();
+}
+
+AssemblyId SceneTreeModel::assemblyAt(const QModelIndex& index) const
+{
+    if (!index.isValid() || index.model() != this || index.internalId() != 0 || index.row() >= assemblyCount())
+        return core::scene::NoAssembly;
+    return m_document.scene().assemblies()[static_cast<std::size_t>(index.row())].id;
 }
 
 FragmentId SceneTreeModel::fragmentAt(const QModelIndex& index) const
 {
     if (!index.isValid() || index.model() != this) return core::scene::NoFragment;
+    if (isMemberRow(index)) {
+        const auto members = m_document.scene().membersOf(AssemblyId(index.internalId() & ~kAssemblyTag));
+        return index.row() < static_cast<int>(members.size()) ? members[static_cast<std::size_t>(index.row())]
+                                                              : core::scene::NoFragment;
+    }
     if (index.internalId() != 0) return static_cast<FragmentId>(index.internalId());
-    const auto& fragments = m_document.scene().fragments();
-    return index.row() < static_cast<int>(fragments.size()) ? fragments[static_cast<std::size_t>(index.row())].id
-                                                            : core::scene::NoFragment;
+    const int row = index.row() - assemblyCount();
+    if (row < 0) return core::scene::NoFragment;
+    const auto top = m_document.scene().membersOf(core::scene::NoAssembly);
+    return row < static_cast<int>(top.size()) ? top[static_cast<std::size_t>(row)] : core::scene::NoFragment;
 }
 
 bool SceneTreeModel::isGuide(const QModelIndex& index) const
 {
-    return index.isValid() && index.internalId() != 0 && !isDeveloppee(index);
+    return index.isValid() && index.internalId() != 0 && !isMemberRow(index) && !isDeveloppee(index);
 }
 
 bool SceneTreeModel::isDeveloppee(const QModelIndex& index) const
 {
-    if (!index.isValid() || index.internalId() == 0) return false;
+    if (!index.isValid() || index.internalId() == 0 || isMemberRow(index)) return false;
     const auto id = static_cast<FragmentId>(index.internalId());
     const auto guides = m_guideCounts.find(id);
     return m_developpeeRows.count(id) != 0 && guides != m_guideCounts.end() && index.row() == guides->second;
@@ -87,21 +148,28 @@ QModelIndex SceneTreeModel::index(int row, int column, const QModelIndex& parent
 {
     if (!hasIndex(row, column, parent)) return {};
     if (!parent.isValid()) return createIndex(row, column, quintptr(0));
-    if (parent.internalId() != 0) return {};
-    // A guide row carries its fragment's id (ids start at 1, so 0 marks fragment rows).
+    if (const AssemblyId a = assemblyAt(parent); a != core::scene::NoAssembly)
+        return createIndex(row, column, kAssemblyTag | quintptr(a));
+    if (parent.internalId() != 0 && !isMemberRow(parent)) return {};
+    // A guide row carries its fragment's id (ids start at 1, below the tag).
     return createIndex(row, column, quintptr(fragmentAt(parent)));
 }
 
 QModelIndex SceneTreeModel::parent(const QModelIndex& child) const
 {
     if (!child.isValid() || child.internalId() == 0) return {};
+    if (isMemberRow(child)) return indexOfAssembly(AssemblyId(child.internalId() & ~kAssemblyTag));
     return indexOf(static_cast<FragmentId>(child.internalId()));
 }
 
 int SceneTreeModel::rowCount(const QModelIndex& parent) const
 {
-    if (!parent.isValid()) return static_cast<int>(m_document.scene().size());
-    if (parent.column() != 0 || parent.internalId() != 0) return 0;
+    if (!parent.isValid())
+        return assemblyCount() + static_cast<int>(m_document.scene().membersOf(core::scene::NoAssembly).size());
+    if (parent.column() != 0) return 0;
+    if (const AssemblyId a = assemblyAt(parent); a != core::scene::NoAssembly)
+        return static_cast<int>(m_document.scene().membersOf(a).size());
+    if (parent.internalId() != 0 && !isMemberRow(parent)) return 0;
     return childCount(fragmentAt(parent));
 }
 
@@ -113,6 +181,7 @@ int SceneTreeModel::columnCount(const QModelIndex&) const
 QVariant SceneTreeModel::data(const QModelIndex& index, int role) const
 {
     if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return {};
+    if (const Assembly* a = m_document.assembly(assemblyAt(index))) return assemblyData(*a, role);
     const Fragment* f = m_document.fragment(fragmentAt(index));
     if (!f) return {};
     if (isDeveloppee(index)) return developpeeData(*f, role);
@@ -137,6 +206,31 @@ QVariant SceneTreeModel::fragmentData(const Fragment& f, int role) const
     case FragmentIdRole: return QVariant::fromValue<quint64>(f.id);
     case GuideIndexRole: return -1;
     case DeveloppeeRole: return false;
+    default: return {};
+    }
+}
+
+QVariant SceneTreeModel::assemblyData(const Assembly& a, int role) const
+{
+    switch (role) {
+    case Qt::DisplayRole:
+    case Qt::EditRole: return QString::fromStdString(a.name);
+    case Qt::CheckStateRole: return a.visible ? Qt::Checked : Qt::Unchecked;
+    case Qt::ToolTipRole: {
+        const int members = static_cast<int>(m_document.scene().membersOf(a.id).size());
+        const Fragment* drum = m_document.fragment(a.drum);
+        const QString text = tr("Assembly of %n fragment(s)", nullptr, members);
+        return drum ? text + QLatin1Char('\n') + tr("Docks against %1").arg(QString::fromStdString(drum->name)) : text;
+    }
+    case Qt::FontRole: {
+        QFont font;
+        font.setBold(true);
+        return font;
+    }
+    case FragmentIdRole: return QVariant::fromValue<quint64>(0);
+    case GuideIndexRole: return -1;
+    case DeveloppeeRole: return false;
+    case AssemblyIdRole: return QVariant::fromValue<quint64>(a.id);
     default: return {};
     }
 }
@@ -175,7 +269,20 @@ QVariant SceneTreeModel::guideData(const Fragment& f, int guide, int role) const
 
 bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, int role)
 {
-    if (!checkIndex(index, CheckIndexOption::IndexIsValid) || index.internalId() != 0) return false;
+    if (!checkIndex(index, CheckIndexOption::IndexIsValid)) return false;
+    if (const AssemblyId a = assemblyAt(index); a != core::scene::NoAssembly) {
+        if (role == Qt::EditRole) {
+            if (value.toString().trimmed().isEmpty()) return false;
+            m_document.renameAssembly(a, value.toString());
+            return true;
+        }
+        if (role == Qt::CheckStateRole) {
+            m_document.setAssemblyVisible(a, value.toInt() == Qt::Checked);
+            return true;
+        }
+        return false;
+    }
+    if (index.internalId() != 0 && !isMemberRow(index)) return false;
     const FragmentId id = fragmentAt(index);
     if (role == Qt::EditRole) {
         const QString name = value.toString().trimmed();
@@ -192,15 +299,66 @@ bool SceneTreeModel::setData(const QModelIndex& index, const QVariant& value, in
 
 Qt::ItemFlags SceneTreeModel::flags(const QModelIndex& index) const
 {
-    if (!index.isValid()) return Qt::NoItemFlags;
-    if (index.internalId() != 0) return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemNeverHasChildren;
-    return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable | Qt::ItemIsUserCheckable;
+    if (!index.isValid()) return Qt::ItemIsDropEnabled;
+    if (assemblyAt(index) != core::scene::NoAssembly)
+        return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable | Qt::ItemIsUserCheckable |
+               Qt::ItemIsDropEnabled;
+    if (index.internalId() != 0 && !isMemberRow(index))
+        return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemNeverHasChildren;
+    return Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable | Qt::ItemIsUserCheckable |
+           Qt::ItemIsDragEnabled | Qt::ItemIsDropEnabled;
 }
 
 QVariant SceneTreeModel::headerData(int section, Qt::Orientation orientation, int role) const
 {
     if (section == 0 && orientation == Qt::Horizontal && role == Qt::DisplayRole) return tr("Scene");
     return {};
+}
+
+QStringList SceneTreeModel::mimeTypes() const
+{
+    return {QString::fromLatin1(FragmentsMimeType)};
+}
+
+QMimeData* SceneTreeModel::mimeData(const QModelIndexList& indexes) const
+{
+    QStringList ids;
+    for (const QModelIndex& index : indexes) {
+        if (index.internalId() != 0 && !isMemberRow(index)) continue; // guides and développées stay
+        const FragmentId id = fragmentAt(index);
+        if (id != core::scene::NoFragment && !ids.contains(QString::number(id))) ids << QString::number(id);
+    }
+    if (ids.isEmpty()) return nullptr;
+    auto* data = new QMimeData;
+    data->setData(QString::fromLatin1(FragmentsMimeType), ids.join(QLatin1Char(' ')).toLatin1());
+    return data;
+}
+
+AssemblyId SceneTreeModel::dropTarget(const QModelIndex& parent) const
+{
+    if (const AssemblyId a = assemblyAt(parent); a != core::scene::NoAssembly) return a;
+    if (parent.isValid() && isMemberRow(parent)) return AssemblyId(parent.internalId() & ~kAssemblyTag);
+    return core::scene::NoAssembly;
+}
+
+bool SceneTreeModel::canDropMimeData(const QMimeData* data, Qt::DropAction action, int, int, const QModelIndex&) const
+{
+    return data && action == Qt::MoveAction && data->hasFormat(QString::fromLatin1(FragmentsMimeType));
+}
+
+bool SceneTreeModel::dropMimeData(const QMimeData* data, Qt::DropAction action, int row, int column,
+                                  const QModelIndex& parent)
+{
+    if (!canDropMimeData(data, action, row, column, parent)) return false;
+    std::vector<FragmentId> ids;
+    for (const QByteArray& part : data->data(QString::fromLatin1(FragmentsMimeType)).split(' ')) {
+        bool ok = false;
+        const FragmentId id = part.toULongLong(&ok);
+        if (ok && m_document.fragment(id)) ids.push_back(id);
+    }
+    if (ids.empty()) return false;
+    m_document.moveToAssembly(ids, dropTarget(parent));
+    return false; // the rows moved through the document: nothing for the view to remove
 }
 
 void SceneTreeModel::onFragmentChanged(quint64 id)

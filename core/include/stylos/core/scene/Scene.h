@@ -69,6 +69,9 @@ public:
      *  one. Returns its id, or NoAssembly (nothing inserted) when the id is already used. */
     AssemblyId insertAssembly(std::size_t index, Assembly assembly);
     AssemblyId addAssembly(Assembly assembly) { return insertAssembly(m_assemblies.size(), std::move(assembly)); }
+    /** @brief Replaces every assembly (order and values) and the next assembly id (raised above their ids
+     *  when needed); a fragment whose assembly is no longer there goes to the top level, in place. */
+    void setAssemblies(std::vector<Assembly> assemblies, AssemblyId nextAssemblyId);
     /** @brief Removes the assembly and returns it; its members move to the top level keeping their
      *  place in the scene (their pose composed with the assembly's). nullopt when there is none. */
     std::optional<Assembly> takeAssembly(AssemblyId id);

@@ -18,9 +18,10 @@
 
 namespace stylos::core::view {
 
-/** @brief The drum axis of @p drum in the scene frame (its first Axis guide through its pose) and its flute
- *         pitch (2π / its Groove guides; 0 without any); nullopt when it has no Axis guide. */
-std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum);
+/** @brief The drum axis of @p drum in the scene frame (its first Axis guide through @p world, its fragment
+ *         frame → scene frame pose: Scene::worldPose(); its own pose when null, right at the top level) and
+ *         its flute pitch (2π / its Groove guides; 0 without any); nullopt when it has no Axis guide. */
+std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum, const scene::Pose* world = nullptr);
 
 /** @brief A guide drawn as a segment, scene frame. */
 struct GuideSegment {
@@ -30,8 +31,9 @@ struct GuideSegment {
 };
 
 /** @brief Each guide of @p fragment over @p localBounds (its own frame): the part of the guide's line between the
- *         projections of the box's corners on it, through the pose. None for an empty box. */
-std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds);
+ *         projections of the box's corners on it, through @p world (as for drumAxisOf()). None for an empty box. */
+std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds,
+                                        const scene::Pose* world = nullptr);
 
 /** @brief The bounds of @p octree's cells at @p level (clamped to its depth; whole cells), in its own frame. */
 Eigen::AlignedBox3d occupiedBounds(const octree::PackedOctree& octree, int level = 5);

@@ -31,6 +31,7 @@ namespace stylos::widgets {
 
 class TaskManager;
 struct DeveloppeeResult;
+struct SceneStructure;
 
 class SceneDocument : public QObject {
     Q_OBJECT
@@ -98,10 +99,38 @@ public:
      *         "Change the guides of NAME"). */
     bool setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const QString& commandText = {});
 
+    // Where fragments are: a fragment's pose is relative to its assembly (core::scene::Scene).
+    /** @brief Fragment frame → scene frame (its assembly's pose composed with its own). */
+    core::scene::Pose worldPose(FragmentId id) const { return m_scene.worldPose(id); }
+    /** @brief Whether the fragment is shown: visible, and its assembly too. */
+    bool isShown(FragmentId id) const;
+    /** @brief Moves the fragment to @p world in the scene frame (setFragmentPose() of the pose relative to its assembly). */
+    bool setFragmentWorldPose(FragmentId id, const core::scene::Pose& world, bool continuing = false);
+
+    // Assemblies: each edit one undo step (SetSceneStructureCommand); the tree changes come as
+    // structureAboutToChange() / structureChanged(), a member's place in the scene as fragmentChanged().
+    using AssemblyId = core::scene::AssemblyId;
+    const core::scene::Assembly* assembly(AssemblyId id) const { return m_scene.findAssembly(id); }
+    /** @brief A new assembly named @p name holding @p members (moved in, keeping their place), its frame at
+     *         the first member's (or the scene's); its id, or NoAssembly when @p name is empty. */
+    AssemblyId newAssembly(const QString& name, const std::vector<FragmentId>& members = {});
+    /** @brief Removes the assembly; its members go to the top level, where they are. */
+    bool removeAssembly(AssemblyId id);
+    bool renameAssembly(AssemblyId id, const QString& name);
+    /** @brief Moves @p fragments into @p assembly (NoAssembly: the top level), keeping their place in the scene. */
+    bool moveToAssembly(const std::vector<FragmentId>& fragments, AssemblyId assembly);
+    /** @brief Moves the assembly (and so its members) to @p pose (assembly frame → scene frame). */
+    bool setAssemblyPose(AssemblyId id, const core::scene::Pose& pose);
+    /** @brief The drum its members dock against (NoFragment: none). */
+    bool setAssemblyDrum(AssemblyId id, FragmentId drum);
+    bool setAssemblyVisible(AssemblyId id, bool visible);
+
     // The docking drum: the fragment whose guides the gizmo's Drum frame follows. Runtime only (not saved, not
     // undoable), cleared when that fragment is removed or the project replaced; assemblies will replace it.
     /** @brief The docking drum; NoFragment when none. */
     FragmentId dockingDrum() const { return m_dockingDrum; }
+    /** @brief The drum fragment @p id docks against: its assembly's drum when it has one, else the docking drum. */
+    FragmentId drumFor(FragmentId id) const;
     /** @brief Sets the docking drum (NoFragment: none); false for an unknown fragment. Emits dockingDrumChanged(). */
     bool setDockingDrum(FragmentId id);
 
@@ -120,7 +149,8 @@ public:
     bool open(const QString& path, QString* error = nullptr);
 
 Q_SIGNALS:
-    void fragmentAboutToBeAdded(int index);
+    /** @brief Fragment about to be inserted at scene position @p index, into assembly @p assembly (0: the top). */
+    void fragmentAboutToBeAdded(int index, quint64 assembly);
     void fragmentAdded(quint64 id);
     void fragmentAboutToBeRemoved(quint64 id);
     void fragmentRemoved(quint64 id);
@@ -141,6 +171,11 @@ Q_SIGNALS:
     void modifiedChanged(bool modified);
     /** @brief The docking drum changed (@p id: the new one, or 0). */
     void dockingDrumChanged(quint64 id);
+    /** @brief Assemblies or fragments' membership are about to change / changed (a tree's structure). */
+    void structureAboutToChange();
+    void structureChanged();
+    /** @brief An assembly's name, pose, drum or visibility changed (its members' fragmentChanged() follow). */
+    void assemblyChanged(quint64 id);
 
 private:
     friend class AddFragmentCommand;
@@ -150,6 +185,13 @@ private:
     friend class SetFragmentColourCommand;
     friend class SetFragmentVisibleCommand;
     friend class SetFragmentGuidesCommand;
+    friend class SetSceneStructureCommand;
+
+    /** Sets the assemblies and the touched fragments' assembly and pose to @p structure's, with the signals. */
+    void applyStructure(const SceneStructure& structure);
+    /** Pushes the command from the current structure to the one @p edit makes of a copy of the scene. */
+    template <typename Edit>
+    bool editStructure(const std::vector<FragmentId>& touched, const QString& text, Edit edit);
 
     // The commands' primitives: change the scene and signal, without touching the undo stack.
     FragmentId allocateId() { return m_scene.allocateId(); }
