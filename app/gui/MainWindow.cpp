@@ -2,6 +2,7 @@
 
 #include "DeveloppeeLink.h"
 #include "DeveloppeeDock.h"
+#include "AssemblyActions.h"
 #include "DockingActions.h"
 #include "LogDock.h"
 #include "MainActions.h"
@@ -139,6 +140,9 @@ void MainWindow::createMenus()
     m_docking = new DockingActions(*m_document, m_viewport, *this);
     m_docking->populate(*m_actions->toolsMenu(), *viewMenu);
     connect(m_docking, &DockingActions::reported, this, &MainWindow::report);
+    m_assemblies = new AssemblyActions(*m_document, *m_sceneDock, *this);
+    m_assemblies->populate(*m_actions->toolsMenu());
+    connect(m_assemblies, &AssemblyActions::reported, this, &MainWindow::report);
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
@@ -319,6 +323,7 @@ void MainWindow::changeEvent(QEvent* event)
         retranslateUi();
         m_actions->retranslateUi();
         m_docking->retranslateUi();
+        m_assemblies->retranslateUi();
         m_projectActions->retranslateUi();
         updateTitle();
     }

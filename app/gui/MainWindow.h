@@ -24,6 +24,7 @@ class ViewportWidget;
 namespace stylos::app {
 
 class DeveloppeeDock;
+class AssemblyActions;
 class DockingActions;
 class DeveloppeeLink;
 class LogDock;
@@ -62,6 +63,7 @@ public:
     ProjectActions& projectActions() const { return *m_projectActions; }
     MainActions& actions() const { return *m_actions; }
     DockingActions& docking() const { return *m_docking; }
+    AssemblyActions& assemblies() const { return *m_assemblies; }
     StatusReadout& readout() const { return *m_readout; }
 
     /** @brief Opens the demo project (generated first when the cache lacks it). */
@@ -107,6 +109,7 @@ private:
     LogDock* m_logDock = nullptr;
     ProjectActions* m_projectActions = nullptr;
     MainActions* m_actions = nullptr;
+    AssemblyActions* m_assemblies = nullptr;
     DockingActions* m_docking = nullptr;
     StatusReadout* m_readout = nullptr;
     QToolBar* m_toolBar = nullptr;

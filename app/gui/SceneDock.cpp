@@ -24,7 +24,29 @@ SceneDock::SceneDock(widgets::SceneDocument& document, QWidget* parent)
     m_view->setHeaderHidden(true);
     m_view->setUniformRowHeights(true);
     m_view->header()->setStretchLastSection(true);
+    m_view->setDragEnabled(true);
+    m_view->setAcceptDrops(true);
+    m_view->setDropIndicatorShown(true);
+    m_view->setDragDropMode(QAbstractItemView::DragDrop);
+    m_view->setDefaultDropAction(Qt::MoveAction);
     setWidget(m_view);
+    // Assemblies made or removed reset the tree: keep what was selected, and show the assemblies open.
+    connect(m_model, &QAbstractItemModel::modelAboutToBeReset, this, [this] {
+        m_keptSelection = selectedFragments();
+        m_keptAssembly = currentAssembly();
+    });
+    connect(m_model, &QAbstractItemModel::modelReset, this, [this] {
+        for (const auto& a : m_document.scene().assemblies()) m_view->expand(m_model->indexOfAssembly(a.id));
+        QItemSelection selection;
+        for (const auto id : m_keptSelection)
+            if (const QModelIndex index = m_model->indexOf(id); index.isValid()) selection.select(index, index);
+        if (const QModelIndex a = m_model->indexOfAssembly(m_keptAssembly); a.isValid()) selection.select(a, a);
+        if (!selection.isEmpty()) {
+            m_view->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+            m_view->selectionModel()->setCurrentIndex(selection.indexes().first(), QItemSelectionModel::NoUpdate);
+        }
+        Q_EMIT selectionChanged();
+    });
 
     connect(m_view->selectionModel(), &QItemSelectionModel::selectionChanged, this, &SceneDock::selectionChanged);
     connect(m_view->selectionModel(), &QItemSelectionModel::currentChanged, this, &SceneDock::selectionChanged);
@@ -48,6 +70,11 @@ QList<core::scene::FragmentId> SceneDock::selectedFragments() const
     };
     std::sort(ids.begin(), ids.end(), [&](auto a, auto b) { return position(a) < position(b); });
     return ids;
+}
+
+core::scene::AssemblyId SceneDock::currentAssembly() const
+{
+    return m_model->assemblyAt(m_view->selectionModel()->currentIndex());
 }
 
 core::scene::FragmentId SceneDock::currentFragment() const

@@ -1,10 +1,13 @@
 #pragma once
 /** @file
- * @brief The Scene dock: the document's fragments as a tree (SceneTreeModel: name, visibility, colour,
- *        guides below each fragment), several selectable at once. Renaming and the visibility check go
- *        through the undo stack (the model does it); Delete removes the selected fragments (one undo step
- *        each). GUI thread only.
+ * @brief The Scene dock: the document's assemblies and fragments as a tree (SceneTreeModel: name,
+ *        visibility, colour, members under their assembly, guides below each fragment), several selectable
+ *        at once. Renaming and the visibility check go through the undo stack (the model does it); fragments
+ *        are dragged onto an assembly to move them in, onto the empty space to take them out (one undo step
+ *        each drop); Delete removes the selected fragments. A reset of the tree (an assembly made or
+ *        removed) keeps the selection. GUI thread only.
  */
+#include "stylos/core/scene/Assembly.h"
 #include "stylos/core/scene/Fragment.h"
 
 #include <QDockWidget>
@@ -34,6 +37,8 @@ public:
     core::scene::FragmentId currentFragment() const;
     /** @brief Makes fragment @p id the current and only selected row. */
     void selectFragment(core::scene::FragmentId id);
+    /** @brief The assembly of the current row when it is an assembly row; NoAssembly otherwise. */
+    core::scene::AssemblyId currentAssembly() const;
 
 Q_SIGNALS:
     /** @brief The selection or the current fragment changed. */
@@ -48,6 +53,8 @@ private:
     widgets::SceneDocument& m_document;
     widgets::SceneTreeModel* m_model;
     QTreeView* m_view;
+    QList<core::scene::FragmentId> m_keptSelection;     ///< across a reset of the tree
+    core::scene::AssemblyId m_keptAssembly = core::scene::NoAssembly;
 };
 
 } // namespace stylos::app

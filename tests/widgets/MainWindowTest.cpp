@@ -2,6 +2,7 @@
 // file, undo/redo from the Edit menu, save and reopen a project, the développée linked to the 3D view,
 // the skydome task, the language menu, closing with a task running; a pose edit reaches the 3D view as a
 // pose only (no new cut), any other edit as new fragments.
+#include "AssemblyActions.h"
 #include "DeveloppeeLink.h"
 #include "DrumOctreeFixture.h"
 #include "LogDock.h"
@@ -27,6 +28,7 @@
 #include <QMenuBar>
 #include <QSettings>
 #include <QTemporaryDir>
+#include <QItemSelectionModel>
 #include <QTreeView>
 #include <QUndoStack>
 
@@ -46,6 +48,7 @@ private Q_SLOTS:
     void undoAndRedoFromTheEditMenu();
     void aPoseEditReachesTheViewAsAPoseOnly();
     void removesTheSelectionInOneUndoStep();
+    void assembliesFromTheSelectionMoveAsOneInTheView();
     void savesAndReopensTheProject();
     void developpeeClickMarksThe3dPointAndBack();
     void computesTheSkydomeOfTheSelection();
@@ -231,6 +234,58 @@ void MainWindowTest::removesTheSelectionInOneUndoStep()
     QCOMPARE(window->sceneDock().model()->rowCount(), 0);
     QVERIFY(!remove->isEnabled());
     window->actions().undoAction()->trigger();
+    QCOMPARE(window->sceneDock().model()->rowCount(), 3);
+}
+
+void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
+{
+    auto window = makeWindow();
+    const QString poct = QString::fromStdString(m_drum.poct.string());
+    importAndWait(*window, {poct, poct, poct});
+    widgets::SceneDocument& document = window->document();
+    const auto ids = document.scene().membersOf(core::scene::NoAssembly);
+    QCOMPARE(ids.size(), 3u);
+    // Two selected, the drum with its axis among them: a new assembly (Ctrl+G) docking against it.
+    QVERIFY(document.setFragmentGuides(ids[0], {{"Axis", core::scene::GuideKind::Axis, {0, 0, 0}, {0, 0, 1}}}));
+    QTreeView* view = window->sceneDock().view();
+    QItemSelection selection;
+    for (auto id : {ids[0], ids[1]}) {
+        const QModelIndex row = window->sceneDock().model()->indexOf(id);
+        selection.select(row, row);
+    }
+    view->selectionModel()->select(selection, QItemSelectionModel::ClearAndSelect | QItemSelectionModel::Rows);
+    QAction* make = window->assemblies().newAssemblyAction();
+    QVERIFY(make->isEnabled());
+    QCOMPARE(make->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_G));
+    make->trigger();
+    QCOMPARE(document.scene().assemblies().size(), 1u);
+    const core::scene::Assembly assembly = document.scene().assemblies()[0]; // a copy: edits replace the list
+    QCOMPARE(assembly.drum, ids[0]);
+    QCOMPARE(document.scene().membersOf(assembly.id), (std::vector<core::scene::FragmentId>{ids[0], ids[1]}));
+    QCOMPARE(window->sceneDock().model()->rowCount(), 2);            // the assembly and the third fragment
+    QCOMPARE(window->sceneDock().selectedFragments().size(), 2);     // the selection survived the new tree
+    QVERIFY(view->isExpanded(window->sceneDock().model()->indexOfAssembly(assembly.id)));
+
+    // Moving the assembly moves both members in the view, not the third.
+    widgets::ViewportWidget* viewport = window->viewport();
+    const auto shift = core::scene::Pose::translation({0, 0, 2});
+    QVERIFY(document.setAssemblyPose(assembly.id, shift * assembly.pose));
+    if (viewport) {
+        QTRY_VERIFY(viewport->fragments().size() == 3 && viewport->fragments()[1].pose(2, 3) == 2.0);
+        QCOMPARE(viewport->fragments()[0].pose(2, 3), 2.0);
+        QCOMPARE(viewport->fragments()[2].pose(2, 3), 0.0);
+    }
+    // Hiding the assembly hides its members in the view.
+    QVERIFY(document.setAssemblyVisible(assembly.id, false));
+    if (viewport) QTRY_VERIFY(!viewport->fragments()[0].visible && !viewport->fragments()[1].visible &&
+                              viewport->fragments()[2].visible);
+    // Remove the assembly from the dock: the fragments stay where they are, at the top.
+    window->sceneDock().view()->setCurrentIndex(window->sceneDock().model()->indexOfAssembly(assembly.id));
+    QAction* remove = window->assemblies().removeAction();
+    QVERIFY(remove->isEnabled());
+    remove->trigger();
+    QVERIFY(document.scene().assemblies().empty());
+    QCOMPARE(document.worldPose(ids[0]), shift);
     QCOMPARE(window->sceneDock().model()->rowCount(), 3);
 }
 

@@ -36,6 +36,8 @@ private Q_SLOTS:
     void aMissingOctreeIsReportedAndTheProjectOpens();
     void aBadProjectKeepsTheCurrentOne();
     void undoingARemovalDuringLoadingReopensTheOctree();
+    void assembliesMoveTheirFragmentsAndUndoExactly();
+    void anAssemblySurvivesSaveAndReopen();
 
 private:
     Fragment fragment(const QString& name) const;
@@ -345,6 +347,90 @@ void SceneDocumentTest::undoingARemovalDuringLoadingReopensTheOctree()
     QVERIFY(reopened.octree(a));
     QVERIFY(!reopened.fragment(a)->octreeMissing);
     QVERIFY(!loaded.isEmpty());
+}
+
+void SceneDocumentTest::assembliesMoveTheirFragmentsAndUndoExactly()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    const FragmentId drum = doc.addFragment(fragment("drum"), m_octree);
+    const FragmentId a = doc.addFragment(fragment("piece a"), m_octree);
+    const FragmentId b = doc.addFragment(fragment("piece b"), m_octree);
+    doc.setFragmentPose(a, Pose::fromTranslationAngles({{1.0, 0.0, 0.0}, {0.0, 0.0, 0.25}}));
+    doc.setFragmentPose(b, Pose::fromTranslationAngles({{2.0, 0.5, 0.0}, {0.0, 0.0, -0.5}}));
+    const Scene before = doc.scene();
+    const Pose worldA = doc.worldPose(a), worldB = doc.worldPose(b);
+    const int steps = doc.undoStack()->count();
+
+    QSignalSpy structure(&doc, &SceneDocument::structureChanged);
+    const auto id = doc.newAssembly(QStringLiteral("Drum 1 reconstruction"), {a, b});
+    QCOMPARE(id, stylos::core::scene::AssemblyId(1));
+    QCOMPARE(doc.undoStack()->count(), steps + 1); // one step
+    QCOMPARE(structure.size(), 1);
+    QCOMPARE(doc.scene().membersOf(id), (std::vector<FragmentId>{a, b}));
+    QVERIFY(doc.worldPose(a).approxEqual(worldA, 1e-12)); // moved in, in place
+    QVERIFY(doc.worldPose(b).approxEqual(worldB, 1e-12));
+    QVERIFY(doc.assembly(id)->pose.approxEqual(worldA, 0.0)); // its frame at the first member's
+
+    // Moving the assembly moves both members by the same motion; the drum stays.
+    const Pose shift = Pose::translation({0.0, 0.0, 3.0});
+    QVERIFY(doc.setAssemblyPose(id, shift * doc.assembly(id)->pose));
+    QVERIFY(doc.worldPose(a).approxEqual(shift * worldA, 1e-12));
+    QVERIFY(doc.worldPose(b).approxEqual(shift * worldB, 1e-12));
+    QCOMPARE(doc.worldPose(drum), Pose());
+    // A world pose set on a member is stored relative to the assembly.
+    QVERIFY(doc.setFragmentWorldPose(a, worldA));
+    QVERIFY(doc.worldPose(a).approxEqual(worldA, 1e-12));
+    QVERIFY(doc.setAssemblyDrum(id, drum));
+    QCOMPARE(doc.drumFor(a), drum);
+    QCOMPARE(doc.drumFor(drum), stylos::core::scene::NoFragment);
+    // Hidden with its assembly; renamed; one member taken out, in place.
+    QVERIFY(doc.setAssemblyVisible(id, false));
+    QVERIFY(!doc.isShown(a));
+    QVERIFY(doc.isShown(drum));
+    QVERIFY(doc.renameAssembly(id, QStringLiteral("Drum 1")));
+    QCOMPARE(doc.assembly(id)->name, std::string("Drum 1"));
+    const Pose placedB = doc.worldPose(b);
+    QVERIFY(doc.moveToAssembly({b}, stylos::core::scene::NoAssembly));
+    QVERIFY(doc.worldPose(b).approxEqual(placedB, 1e-12));
+    QCOMPARE(doc.scene().membersOf(id), (std::vector<FragmentId>{a}));
+    QVERIFY(doc.removeAssembly(id));
+    QVERIFY(doc.scene().assemblies().empty());
+    QCOMPARE(doc.fragment(a)->assembly, stylos::core::scene::NoAssembly);
+
+    // Undo everything: the scene before, exactly; redo everything: the same end again.
+    const Scene after = doc.scene();
+    while (doc.undoStack()->index() > steps) doc.undoStack()->undo();
+    QCOMPARE(doc.scene(), before);
+    while (doc.undoStack()->canRedo()) doc.undoStack()->redo();
+    QCOMPARE(doc.scene(), after);
+
+    // Edits that change nothing or name nothing push nothing.
+    const int now = doc.undoStack()->count();
+    QVERIFY(!doc.removeAssembly(42));
+    QVERIFY(!doc.moveToAssembly({a}, 42));
+    QCOMPARE(doc.newAssembly(QStringLiteral("  "), {a}), stylos::core::scene::NoAssembly);
+    QCOMPARE(doc.undoStack()->count(), now);
+}
+
+void SceneDocumentTest::anAssemblySurvivesSaveAndReopen()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    const FragmentId drum = doc.addFragment(fragment("drum"), m_octree);
+    const FragmentId a = doc.addFragment(fragment("piece"), m_octree);
+    doc.setFragmentPose(a, Pose::fromTranslationAngles({{0.3, 0.1, 0.2}, {0.1, 0.2, 0.3}}));
+    const auto id = doc.newAssembly(QStringLiteral("Δελφοί"), {a});
+    doc.setAssemblyDrum(id, drum);
+    doc.setAssemblyPose(id, Pose::fromTranslationAngles({{5.0, 0.0, 0.0}, {0.0, 0.0, 1.0}}));
+    const QString path = m_dir.filePath("assembly.stylos");
+    QString error;
+    QVERIFY2(doc.saveAs(path, &error), qPrintable(error));
+    SceneDocument reopened(tasks);
+    QVERIFY2(reopened.open(path, &error), qPrintable(error));
+    QCOMPARE(reopened.scene(), doc.scene());
+    QCOMPARE(reopened.worldPose(a), doc.worldPose(a));
+    QCOMPARE(reopened.drumFor(a), drum);
 }
 
 STYLOS_WIDGET_TEST_MAIN(SceneDocumentTest)

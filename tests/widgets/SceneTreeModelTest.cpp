@@ -15,6 +15,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QLineEdit>
+#include <QMimeData>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -40,6 +41,7 @@ private Q_SLOTS:
     void editsInTheTreeAreUndoable();
     void developpeeRowFollowsTheDocument();
     void propertiesShowAndEditTheFragment();
+    void assembliesAreRowsHoldingTheirMembersAndTakeDrops();
 
 private:
     Fragment fragment(const QString& name, int guides = 0) const;
@@ -237,6 +239,66 @@ void SceneTreeModelTest::developpeeRowFollowsTheDocument()
     doc.undoStack()->undo();
     QCOMPARE(doc.developpee(drum), nullptr);
     QCOMPARE(model.rowCount(model.indexOf(drum)), 2);
+}
+
+void SceneTreeModelTest::assembliesAreRowsHoldingTheirMembersAndTakeDrops()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    SceneTreeModel model(doc);
+    QAbstractItemModelTester tester(&model, QAbstractItemModelTester::FailureReportingMode::QtTest);
+    const FragmentId drum = doc.addFragment(fragment("drum", 3), m_octree);
+    const FragmentId a = doc.addFragment(fragment("a"), m_octree);
+    const FragmentId b = doc.addFragment(fragment("b"), m_octree);
+    const auto id = doc.newAssembly(QStringLiteral("Drum 1 reconstruction"), {a});
+
+    // Root: the assembly, then the top-level fragments in scene order; the member under the assembly.
+    QCOMPARE(model.rowCount(), 3);
+    const QModelIndex assemblyRow = model.indexOfAssembly(id);
+    QCOMPARE(assemblyRow.row(), 0);
+    QCOMPARE(model.data(assemblyRow).toString(), QString("Drum 1 reconstruction"));
+    QCOMPARE(model.assemblyAt(assemblyRow), id);
+    QCOMPARE(model.fragmentAt(assemblyRow), stylos::core::scene::NoFragment);
+    QCOMPARE(model.rowCount(assemblyRow), 1);
+    const QModelIndex memberRow = model.index(0, 0, assemblyRow);
+    QCOMPARE(model.fragmentAt(memberRow), a);
+    QCOMPARE(model.indexOf(a), memberRow);
+    QCOMPARE(model.parent(memberRow), assemblyRow);
+    QCOMPARE(model.fragmentAt(model.index(1, 0)), drum);
+    QCOMPARE(model.fragmentAt(model.index(2, 0)), b);
+    QCOMPARE(model.rowCount(model.indexOf(drum)), 3); // its guides, under it as before
+    QCOMPARE(model.parent(model.index(0, 0, model.indexOf(drum))), model.indexOf(drum));
+
+    // Renaming and hiding the assembly from the tree go through the undo stack.
+    const int steps = doc.undoStack()->count();
+    QVERIFY(model.setData(assemblyRow, QStringLiteral("Drum 1"), Qt::EditRole));
+    QVERIFY(model.setData(model.indexOfAssembly(id), Qt::Unchecked, Qt::CheckStateRole));
+    QCOMPARE(doc.undoStack()->count(), steps + 2);
+    QCOMPARE(model.data(model.indexOfAssembly(id), Qt::CheckStateRole).toInt(), int(Qt::Unchecked));
+
+    // Dragging b onto the assembly moves it in (one step); onto the root takes it out.
+    QMimeData* data = model.mimeData({model.indexOf(b)});
+    QVERIFY(data);
+    QVERIFY(model.canDropMimeData(data, Qt::MoveAction, -1, 0, model.indexOfAssembly(id)));
+    model.dropMimeData(data, Qt::MoveAction, -1, 0, model.indexOfAssembly(id));
+    delete data;
+    QCOMPARE(doc.fragment(b)->assembly, id);
+    QCOMPARE(model.rowCount(model.indexOfAssembly(id)), 2);
+    QCOMPARE(model.rowCount(), 2);
+    data = model.mimeData({model.indexOf(b)});
+    model.dropMimeData(data, Qt::MoveAction, -1, 0, QModelIndex());
+    delete data;
+    QCOMPARE(doc.fragment(b)->assembly, stylos::core::scene::NoAssembly);
+    QCOMPARE(doc.undoStack()->count(), steps + 4);
+    // Guide rows are not dragged.
+    QVERIFY(!model.mimeData({model.index(0, 0, model.indexOf(drum))}));
+
+    // Removing a member and undoing it keeps the tree right (rows removed and inserted under the assembly).
+    doc.removeFragment(a);
+    QCOMPARE(model.rowCount(model.indexOfAssembly(id)), 0);
+    doc.undoStack()->undo();
+    QCOMPARE(model.rowCount(model.indexOfAssembly(id)), 1);
+    QCOMPARE(model.indexOf(a).parent(), model.indexOfAssembly(id));
 }
 
 STYLOS_WIDGET_TEST_MAIN(SceneTreeModelTest)
