@@ -2,6 +2,52 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="el">
 <context>
+    <name>stylos::app::AssemblyActions</name>
+    <message>
+        <source>Assembly %1</source>
+        <translation>Συναρμολόγηση %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n fragment(s)</source>
+        <translation>
+            <numerusform>%1: %n θραύσμα</numerusform>
+            <numerusform>%1: %n θραύσματα</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New &amp;assembly from selection</source>
+        <translation>Νέα &amp;συναρμολόγηση από την επιλογή</translation>
+    </message>
+    <message>
+        <source>Group the selected fragments into an assembly that moves as one; a drum among them (a fragment with an axis guide) becomes what they dock against</source>
+        <translation>Ομαδοποίηση των επιλεγμένων θραυσμάτων σε συναρμολόγηση που κινείται ενιαία· ένα τύμπανο ανάμεσά τους (θραύσμα με οδηγό άξονα) γίνεται αυτό στο οποίο προσαρμόζονται</translation>
+    </message>
+    <message>
+        <source>&amp;Take out of assembly</source>
+        <translation>&amp;Αφαίρεση από τη συναρμολόγηση</translation>
+    </message>
+    <message>
+        <source>Move the selected fragments back to the top of the scene, where they are</source>
+        <translation>Επιστροφή των επιλεγμένων θραυσμάτων στο πρώτο επίπεδο της σκηνής, εκεί όπου βρίσκονται</translation>
+    </message>
+    <message>
+        <source>&amp;Remove assembly</source>
+        <translation>&amp;Διάλυση συναρμολόγησης</translation>
+    </message>
+    <message>
+        <source>Dissolve the selected assembly; its fragments stay where they are</source>
+        <translation>Διάλυση της επιλεγμένης συναρμολόγησης· τα θραύσματά της μένουν όπου βρίσκονται</translation>
+    </message>
+    <message>
+        <source>&amp;Use as the assembly&apos;s drum</source>
+        <translation>&amp;Χρήση ως τύμπανο της συναρμολόγησης</translation>
+    </message>
+    <message>
+        <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
+        <translation>Προσαρμογή των θραυσμάτων της συναρμολόγησης στους οδηγούς του επιλεγμένου θραύσματος</translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::CommandLine</name>
     <message>
         <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
@@ -983,6 +1029,42 @@
         <source>Opening %1</source>
         <translation>Άνοιγμα του %1</translation>
     </message>
+    <message>
+        <source>New assembly %1</source>
+        <translation>Νέα συναρμολόγηση %1</translation>
+    </message>
+    <message>
+        <source>Remove assembly %1</source>
+        <translation>Διάλυση συναρμολόγησης %1</translation>
+    </message>
+    <message>
+        <source>Rename %1</source>
+        <translation>Μετονομασία %1</translation>
+    </message>
+    <message>
+        <source>Take out of assembly</source>
+        <translation>Αφαίρεση από τη συναρμολόγηση</translation>
+    </message>
+    <message>
+        <source>Move into %1</source>
+        <translation>Μετακίνηση στο %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Μετακίνηση %1</translation>
+    </message>
+    <message>
+        <source>Set the drum of %1</source>
+        <translation>Ορισμός τυμπάνου του %1</translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation>Εμφάνιση %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Απόκρυψη %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>
@@ -1005,6 +1087,17 @@
     <message>
         <source>Développée (%1, %2 × %3)</source>
         <translation>Ανάπτυγμα (%1, %2 × %3)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Assembly of %n fragment(s)</source>
+        <translation>
+            <numerusform>Συναρμολόγηση %n θραύσματος</numerusform>
+            <numerusform>Συναρμολόγηση %n θραυσμάτων</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Docks against %1</source>
+        <translation>Προσαρμόζεται στο %1</translation>
     </message>
 </context>
 <context>

@@ -2,6 +2,52 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>stylos::app::AssemblyActions</name>
+    <message>
+        <source>Assembly %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n fragment(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New &amp;assembly from selection</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Group the selected fragments into an assembly that moves as one; a drum among them (a fragment with an axis guide) becomes what they dock against</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Take out of assembly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move the selected fragments back to the top of the scene, where they are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Remove assembly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dissolve the selected assembly; its fragments stay where they are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Use as the assembly&apos;s drum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::CommandLine</name>
     <message>
         <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
@@ -983,6 +1029,42 @@
         <source>Opening %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>New assembly %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove assembly %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rename %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Take out of assembly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move into %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the drum of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>
@@ -1004,6 +1086,17 @@
     </message>
     <message>
         <source>Développée (%1, %2 × %3)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Assembly of %n fragment(s)</source>
+        <translation type="unfinished">
+            <numerusform></numerusform>
+            <numerusform></numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Docks against %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -2,6 +2,52 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>stylos::app::AssemblyActions</name>
+    <message>
+        <source>Assembly %1</source>
+        <translation>Assemblage %1</translation>
+    </message>
+    <message numerus="yes">
+        <source>%1: %n fragment(s)</source>
+        <translation>
+            <numerusform>%1 : %n fragment</numerusform>
+            <numerusform>%1 : %n fragments</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>New &amp;assembly from selection</source>
+        <translation>Nouvel &amp;assemblage depuis la sélection</translation>
+    </message>
+    <message>
+        <source>Group the selected fragments into an assembly that moves as one; a drum among them (a fragment with an axis guide) becomes what they dock against</source>
+        <translation>Regrouper les fragments sélectionnés en un assemblage qui se déplace d’un bloc ; un tambour parmi eux (un fragment avec un guide d’axe) devient celui contre lequel ils s’amarrent</translation>
+    </message>
+    <message>
+        <source>&amp;Take out of assembly</source>
+        <translation>&amp;Sortir de l’assemblage</translation>
+    </message>
+    <message>
+        <source>Move the selected fragments back to the top of the scene, where they are</source>
+        <translation>Remettre les fragments sélectionnés au premier niveau de la scène, là où ils sont</translation>
+    </message>
+    <message>
+        <source>&amp;Remove assembly</source>
+        <translation>&amp;Dissoudre l’assemblage</translation>
+    </message>
+    <message>
+        <source>Dissolve the selected assembly; its fragments stay where they are</source>
+        <translation>Dissoudre l’assemblage sélectionné ; ses fragments restent où ils sont</translation>
+    </message>
+    <message>
+        <source>&amp;Use as the assembly&apos;s drum</source>
+        <translation>&amp;Utiliser comme tambour de l’assemblage</translation>
+    </message>
+    <message>
+        <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
+        <translation>Amarrer les fragments de l’assemblage contre les guides du fragment sélectionné</translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::CommandLine</name>
     <message>
         <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
@@ -983,6 +1029,42 @@
         <source>Opening %1</source>
         <translation>Ouverture de %1</translation>
     </message>
+    <message>
+        <source>New assembly %1</source>
+        <translation>Nouvel assemblage %1</translation>
+    </message>
+    <message>
+        <source>Remove assembly %1</source>
+        <translation>Dissoudre l’assemblage %1</translation>
+    </message>
+    <message>
+        <source>Rename %1</source>
+        <translation>Renommer %1</translation>
+    </message>
+    <message>
+        <source>Take out of assembly</source>
+        <translation>Sortir de l’assemblage</translation>
+    </message>
+    <message>
+        <source>Move into %1</source>
+        <translation>Placer dans %1</translation>
+    </message>
+    <message>
+        <source>Move %1</source>
+        <translation>Déplacer %1</translation>
+    </message>
+    <message>
+        <source>Set the drum of %1</source>
+        <translation>Choisir le tambour de %1</translation>
+    </message>
+    <message>
+        <source>Show %1</source>
+        <translation>Afficher %1</translation>
+    </message>
+    <message>
+        <source>Hide %1</source>
+        <translation>Masquer %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>
@@ -1005,6 +1087,17 @@
     <message>
         <source>Développée (%1, %2 × %3)</source>
         <translation>Développée (%1, %2 × %3)</translation>
+    </message>
+    <message numerus="yes">
+        <source>Assembly of %n fragment(s)</source>
+        <translation>
+            <numerusform>Assemblage de %n fragment</numerusform>
+            <numerusform>Assemblage de %n fragments</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Docks against %1</source>
+        <translation>S’amarre contre %1</translation>
     </message>
 </context>
 <context>
