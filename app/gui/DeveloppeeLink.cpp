@@ -14,12 +14,21 @@ namespace stylos::app {
 
 namespace {
 
-/** The fragment's first axis guide, in its own frame. */
-std::optional<core::unroll::Axis> axisGuide(const core::scene::Fragment& fragment)
+/** The axis a fragment unrolls about, in its own frame: its first axis guide; without one, the axis guide of
+ *  the drum it docks against (its assembly's, or the docking drum), carried into its frame — so a docked
+ *  fragment unrolls about its drum's axis, at the drum's scale, not about a cylinder fitted to itself. */
+std::optional<core::unroll::Axis> axisGuide(const widgets::SceneDocument& document, const core::scene::Fragment& fragment)
 {
-    const auto line = core::scene::firstGuide(fragment, core::scene::GuideKind::Axis);
+    if (const auto line = core::scene::firstGuide(fragment, core::scene::GuideKind::Axis))
+        return core::unroll::Axis{line->origin, line->direction};
+    const core::scene::FragmentId drumId = document.drumFor(fragment.id);
+    const core::scene::Fragment* drum = drumId != fragment.id ? document.fragment(drumId) : nullptr;
+    const auto line = drum ? core::scene::firstGuide(*drum, core::scene::GuideKind::Axis) : std::nullopt;
     if (!line) return std::nullopt;
-    return core::unroll::Axis{line->origin, line->direction};
+    const core::scene::Pose toFragment = document.worldPose(fragment.id).rigidInverse() * document.worldPose(drumId);
+    const Eigen::Matrix4d m = core::scene::toEigen(toFragment);
+    return core::unroll::Axis{m.topLeftCorner<3, 3>() * line->origin + m.topRightCorner<3, 1>(),
+                              (m.topLeftCorner<3, 3>() * line->direction).normalized()};
 }
 
 } // namespace
@@ -38,6 +47,7 @@ DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::Develo
         connect(viewport, &widgets::ViewportWidget::pointPicked, this,
                 [this](const Eigen::Vector3d& p, quint64 id) { markInDeveloppee(p, id); });
     connect(&document, &widgets::SceneDocument::fragmentChanged, this, &DeveloppeeLink::refreshFragment);
+    connect(&document, &widgets::SceneDocument::dockingDrumChanged, this, &DeveloppeeLink::refreshFragment);
     connect(&document, &widgets::SceneDocument::fragmentRemoved, this, &DeveloppeeLink::refreshFragment);
     connect(&document, &widgets::SceneDocument::sceneReset, this, [this] {
         m_dock.clearResult();
@@ -64,7 +74,7 @@ void DeveloppeeLink::refreshFragment()
         if (m_dock.view()->hasDeveloppee()) m_dock.clearResult(); // its fragment is gone
         return;
     }
-    m_dock.setFragment(f->id, QString::fromStdString(f->name), axisGuide(*f));
+    m_dock.setFragment(f->id, QString::fromStdString(f->name), axisGuide(m_document, *f));
 }
 
 void DeveloppeeLink::compute()

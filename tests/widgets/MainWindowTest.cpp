@@ -266,6 +266,16 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     QCOMPARE(window->sceneDock().selectedFragments().size(), 2);     // the selection survived the new tree
     QVERIFY(view->isExpanded(window->sceneDock().model()->indexOfAssembly(assembly.id)));
 
+    // The member without an axis of its own unrolls about the drum's axis, carried into its frame.
+    QVERIFY(document.setFragmentWorldPose(ids[1], core::scene::Pose::fromTranslationAngles({{0.5, -0.25, 0.0}, {0.0, 0.0, 0.3}})));
+    window->sceneDock().selectFragment(ids[1]);
+    const auto offered = window->developpeePanel().axisGuide();
+    QVERIFY(offered.has_value());
+    const core::scene::Pose toMember = document.worldPose(ids[1]).rigidInverse() * document.worldPose(ids[0]);
+    const auto expectedPoint = toMember.apply({0, 0, 0});
+    QVERIFY(std::abs(expectedPoint[0]) > 0.1); // not the identity
+    for (int k = 0; k < 3; ++k) QVERIFY(std::abs(offered->point[k] - expectedPoint[k]) < 1e-12);
+
     // Moving the assembly moves both members in the view, not the third.
     widgets::ViewportWidget* viewport = window->viewport();
     const auto shift = core::scene::Pose::translation({0, 0, 2});

@@ -48,6 +48,8 @@ public:
      *        axis guide in its own (octree) frame, offered as "Use the axis guide" (checked by default).
      */
     void setFragment(quint64 id, const QString& name, const std::optional<core::unroll::Axis>& axisGuide = {});
+    /** @brief The axis "Use the axis guide" offers for the current fragment (its own frame), if any. */
+    const std::optional<core::unroll::Axis>& axisGuide() const { return m_axisGuide; }
     quint64 fragmentId() const { return m_fragmentId; }
 
     /** @brief While busy, Compute is disabled and the status says a computation runs. */
