@@ -10,6 +10,8 @@
 
 #include <QFuture>
 
+#include <algorithm>
+
 namespace stylos::app {
 
 namespace {
@@ -29,6 +31,32 @@ std::optional<core::unroll::Axis> axisGuide(const widgets::SceneDocument& docume
     const Eigen::Matrix4d m = core::scene::toEigen(toFragment);
     return core::unroll::Axis{m.topLeftCorner<3, 3>() * line->origin + m.topRightCorner<3, 1>(),
                               (m.topLeftCorner<3, 3>() * line->direction).normalized()};
+}
+
+/** The flute lines drawn over a fragment's développée, in its own frame: its own groove guides; without any,
+ *  those of the drum it docks against, carried into its frame (the drum's flutes where the fragment lies). */
+std::vector<widgets::DeveloppeeView::GuideLine> fluteLines(const widgets::SceneDocument& document,
+                                                           const core::scene::Fragment& fragment)
+{
+    const core::scene::Fragment* source = &fragment;
+    core::scene::Pose toFragment;
+    const bool own = std::any_of(fragment.guides.begin(), fragment.guides.end(),
+                                 [](const core::scene::Guide& g) { return g.kind == core::scene::GuideKind::Groove; });
+    if (!own) {
+        const core::scene::FragmentId drumId = document.drumFor(fragment.id);
+        source = drumId != fragment.id ? document.fragment(drumId) : nullptr;
+        if (!source) return {};
+        toFragment = document.worldPose(fragment.id).rigidInverse() * document.worldPose(drumId);
+    }
+    const Eigen::Matrix4d m = core::scene::toEigen(toFragment);
+    std::vector<widgets::DeveloppeeView::GuideLine> lines;
+    for (const core::scene::Guide& g : source->guides) {
+        if (g.kind != core::scene::GuideKind::Groove) continue;
+        const core::scene::GuideLine line = core::scene::guideLine(g);
+        lines.push_back({m.topLeftCorner<3, 3>() * line.origin + m.topRightCorner<3, 1>(),
+                         (m.topLeftCorner<3, 3>() * line.direction).normalized()});
+    }
+    return lines;
 }
 
 } // namespace
@@ -71,10 +99,12 @@ void DeveloppeeLink::refreshFragment()
     const core::scene::Fragment* f = m_document.fragment(m_fragment);
     if (!f) {
         m_dock.setFragment(0, QString());
+        m_dock.view()->setGuideLines({});
         if (m_dock.view()->hasDeveloppee()) m_dock.clearResult(); // its fragment is gone
         return;
     }
     m_dock.setFragment(f->id, QString::fromStdString(f->name), axisGuide(m_document, *f));
+    m_dock.view()->setGuideLines(fluteLines(m_document, *f));
 }
 
 void DeveloppeeLink::compute()

@@ -94,6 +94,7 @@ private Q_SLOTS:
     void dragPansWithoutPicking();
     void setMarkerPutsItBackOnThePixel();
     void markerIsDrawn();
+    void guideLinesLandOnTheirAzimuth();
     void wheelZoomsAboutTheCursor();
     void readoutOfAKnownPixel();
     void dockComputeCarriesTheBarSettings();
@@ -261,6 +262,38 @@ void DeveloppeeViewTest::markerIsDrawn()
             if (c.red() > 200 && c.green() > 60 && c.green() < 140 && c.blue() < 90) ++orange;
         }
     QVERIFY2(orange > 10, qPrintable(QString::number(orange)));
+}
+
+void DeveloppeeViewTest::guideLinesLandOnTheirAzimuth()
+{
+    // Two flute lines parallel to the axis, at azimuths 1 rad and 2 rad past the cut, on the surface: columns
+    // R·(φ − cut) / s by the map's definition (u = R·((φ − cut) mod 2π), column = u / s).
+    const Axis& axis = m_fixture->axis;
+    const Eigen::Vector3d e1 = m_fixture->map.referenceDir(), e2 = axis.direction.cross(e1);
+    std::vector<DeveloppeeView::GuideLine> lines;
+    for (double offset : {1.0, 2.0}) {
+        const double phi = 0.3 + offset;
+        lines.push_back({axis.point + 0.25 * axis.direction + 0.5 * (std::cos(phi) * e1 + std::sin(phi) * e2),
+                         axis.direction});
+    }
+    m_view->setGuideLines(lines);
+    const auto columns = m_view->guideColumns();
+    QCOMPARE(columns.size(), 2u);
+    QVERIFY(std::abs(columns[0] - 1.0 * 0.5 / PixelSize) < 1e-6);
+    QVERIFY(std::abs(columns[1] - 2.0 * 0.5 / PixelSize) < 1e-6);
+    // Drawn: the guide colour on the column of the first line, mid-height.
+    m_view->resize(800, 400);
+    m_view->fitToWindow();
+    const QImage shot = m_view->grab().toImage();
+    const QPointF at = m_view->imageToWidget(QPointF(columns[0], Height / 2.0));
+    bool seen = false;
+    for (int dx = -2; dx <= 2 && !seen; ++dx)
+        for (int dy = -3; dy <= 3 && !seen; ++dy)
+            seen = shot.pixelColor(int(at.x()) + dx, int(at.y()) + dy).blue() > 200 &&
+                   shot.pixelColor(int(at.x()) + dx, int(at.y()) + dy).red() < 160;
+    QVERIFY2(seen, "the guide line is drawn");
+    m_view->setGuideLines({});
+    QVERIFY(m_view->guideColumns().empty());
 }
 
 void DeveloppeeViewTest::wheelZoomsAboutTheCursor()

@@ -22,6 +22,7 @@ constexpr double FitMargin = 8.0;     ///< logical pixels left around a fitted i
 constexpr double WheelStep = 1.25;    ///< zoom factor of one wheel notch (120 eighths of a degree)
 const QColor Background(48, 48, 48);
 const QColor MarkerColour(255, 96, 32);
+const QColor GuideColour(120, 190, 255); // as the flute lines in 3D
 
 /** 1, 2 or 5 × a power of ten, the largest not over @p value (> 0). */
 double niceLength(double value)
@@ -187,8 +188,52 @@ void DeveloppeeView::paintEvent(QPaintEvent*)
     }
     painter.setPen(QColor(96, 96, 96));
     painter.drawRect(QRectF(m_offset, QSizeF(m_pixmap.size()) * m_zoom));
+    drawGuideLines(painter);
     drawMarker(painter);
     drawOverlays(painter);
+}
+
+void DeveloppeeView::setGuideLines(std::vector<GuideLine> lines)
+{
+    m_guideLines = std::move(lines);
+    update();
+}
+
+std::optional<std::pair<QPointF, QPointF>> DeveloppeeView::guideEnds(const GuideLine& line) const
+{
+    if (!m_map) return std::nullopt;
+    // Two points of the line a drum height apart, through the map; the line is straight in the image (it is
+    // parallel to the axis), so extend it to the top and bottom rows.
+    const double span = std::max(1.0, double(m_image.height())) * m_map->pixelSize();
+    const auto a = m_map->pixelOf(line.point), b = m_map->pixelOf(line.point + span * line.direction.normalized());
+    if (!a || !b || std::abs(b->row - a->row) < 1e-9) return std::nullopt;
+    const auto columnAt = [&](double row) { return a->column + (b->column - a->column) * (row - a->row) / (b->row - a->row); };
+    const double bottom = double(m_image.height());
+    return std::pair{QPointF(columnAt(0.0), 0.0), QPointF(columnAt(bottom), bottom)};
+}
+
+std::vector<double> DeveloppeeView::guideColumns() const
+{
+    std::vector<double> columns;
+    for (const GuideLine& line : m_guideLines)
+        if (const auto ends = guideEnds(line)) columns.push_back(0.5 * (ends->first.x() + ends->second.x()));
+    return columns;
+}
+
+void DeveloppeeView::drawGuideLines(QPainter& painter) const
+{
+    if (m_guideLines.empty() || !m_map) return;
+    painter.setRenderHint(QPainter::Antialiasing, true);
+    for (const GuideLine& line : m_guideLines) {
+        const auto ends = guideEnds(line);
+        if (!ends) continue;
+        const QPointF top = imageToWidget(ends->first), bottom = imageToWidget(ends->second);
+        painter.setPen(QPen(GuideColour, 1.0, Qt::DotLine));
+        painter.drawLine(top, bottom);
+        painter.setPen(QPen(GuideColour, 2.0));
+        painter.drawLine(top, top - QPointF(0.0, 8.0)); // the tick above the image
+    }
+    painter.setRenderHint(QPainter::Antialiasing, false);
 }
 
 void DeveloppeeView::drawMarker(QPainter& painter) const

@@ -29,6 +29,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace stylos::widgets {
 
@@ -80,6 +81,19 @@ public:
      *         nullopt outside the image or on an Empty pixel. */
     std::optional<Eigen::Vector3d> pointAtPixel(int column, int row) const;
 
+    /** @brief A guide line to draw (octree frame, metres): a flute's bottom line of the drum the fragment
+     *         docks against (or of the fragment itself), parallel to the axis the développée unrolls about. */
+    struct GuideLine {
+        Eigen::Vector3d point = Eigen::Vector3d::Zero();
+        Eigen::Vector3d direction = Eigen::Vector3d::UnitZ();
+    };
+    /** @brief Draws @p lines over the développée, each as a thin line along its image through the map with a
+     *         tick above the image; kept until replaced (an empty list hides them). */
+    void setGuideLines(std::vector<GuideLine> lines);
+    /** @brief Where each guide line crosses the image's middle row (continuous column), in the order given;
+     *         lines the map cannot place are left out. Empty without a développée. */
+    std::vector<double> guideColumns() const;
+
     /** @brief Marks @p point (octree frame, metres); empty hides the marker. */
     void setMarker(const std::optional<Eigen::Vector3d>& point);
     std::optional<Eigen::Vector3d> marker() const { return m_marker; }
@@ -116,6 +130,9 @@ private:
     void setReadout(const QString& text);
     void drawMarker(class QPainter& painter) const;
     void drawOverlays(class QPainter& painter) const;
+    void drawGuideLines(class QPainter& painter) const;
+    /** The image positions where guide line @p line meets the image's top and bottom rows. */
+    std::optional<std::pair<QPointF, QPointF>> guideEnds(const GuideLine& line) const;
 
     quint64 m_fragmentId = 0;
     QImage m_image;
@@ -123,6 +140,7 @@ private:
     std::shared_ptr<const core::shading::HeightField> m_heights;
     std::optional<core::unroll::UnrollMap> m_map;
     std::optional<Eigen::Vector3d> m_marker;
+    std::vector<GuideLine> m_guideLines;
     QString m_placeholder;
     QString m_readout;
 
