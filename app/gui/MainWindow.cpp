@@ -139,6 +139,7 @@ void MainWindow::createMenus()
     m_docking = new DockingActions(*m_document, m_viewport, *this);
     m_docking->populate(*m_actions->toolsMenu(), *viewMenu);
     connect(m_docking, &DockingActions::reported, this, &MainWindow::report);
+    m_propertiesDock->addContactReadout(m_docking->contact());
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));

@@ -1,6 +1,7 @@
 #include "PropertiesDock.h"
 
 #include "DisplaySettingsWidget.h"
+#include "stylos/widgets/docking/ContactReadoutWidget.h"
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 
 #include <QEvent>
@@ -42,6 +43,20 @@ void PropertiesDock::setFragment(core::scene::FragmentId id)
     m_fragment->setFragment(id);
 }
 
+void PropertiesDock::addContactReadout(widgets::ContactMonitor& monitor)
+{
+    if (m_contact) return;
+    m_contactBox = new QGroupBox;
+    m_contactBox->setObjectName(QStringLiteral("contactBox"));
+    m_contact = new widgets::ContactReadoutWidget(monitor);
+    auto* layout = new QVBoxLayout(m_contactBox);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_contact);
+    auto* contents = static_cast<QVBoxLayout*>(m_fragmentBox->parentWidget()->layout());
+    contents->insertWidget(contents->indexOf(m_fragmentBox) + 1, m_contactBox);
+    retranslateUi();
+}
+
 void PropertiesDock::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) retranslateUi();
@@ -53,6 +68,7 @@ void PropertiesDock::retranslateUi()
     setWindowTitle(tr("Properties"));
     m_fragmentBox->setTitle(tr("Fragment"));
     if (m_displayBox) m_displayBox->setTitle(tr("Display"));
+    if (m_contactBox) m_contactBox->setTitle(tr("Contact with the drum"));
 }
 
 } // namespace stylos::app

@@ -1,7 +1,8 @@
 #pragma once
 /** @file
  * @brief The Properties dock: the selected fragment (FragmentPropertiesWidget: name, visibility, colour,
- *        pose, point and cell counts) above the 3D view's display settings (DisplaySettingsWidget), in a
+ *        pose, point and cell counts), its contact with the docking drum (ContactReadoutWidget, once
+ *        addContactReadout() is called) and the 3D view's display settings (DisplaySettingsWidget), in a
  *        scroll area. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
@@ -11,6 +12,8 @@
 class QGroupBox;
 
 namespace stylos::widgets {
+class ContactMonitor;
+class ContactReadoutWidget;
 class FragmentPropertiesWidget;
 class SceneDocument;
 class ViewportWidget;
@@ -28,6 +31,10 @@ public:
     PropertiesDock(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget* parent = nullptr);
 
     void setFragment(core::scene::FragmentId id);
+    /** @brief Adds the "Contact with the drum" box under the fragment's, showing @p monitor (not owned). */
+    void addContactReadout(widgets::ContactMonitor& monitor);
+    /** @brief Null before addContactReadout(). */
+    widgets::ContactReadoutWidget* contactReadout() const { return m_contact; }
     widgets::FragmentPropertiesWidget* fragmentWidget() const { return m_fragment; }
     /** @brief Null without a 3D view. */
     DisplaySettingsWidget* displaySettings() const { return m_display; }
@@ -40,6 +47,8 @@ private:
 
     QGroupBox* m_fragmentBox;
     QGroupBox* m_displayBox = nullptr;
+    QGroupBox* m_contactBox = nullptr;
+    widgets::ContactReadoutWidget* m_contact = nullptr;
     widgets::FragmentPropertiesWidget* m_fragment;
     DisplaySettingsWidget* m_display = nullptr;
 };
