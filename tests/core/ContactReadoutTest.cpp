@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <numbers>
 
 namespace stylos::core::dock {
@@ -170,12 +171,20 @@ TEST(ContactReadoutTest, ADockedFragmentTouchesTheDrum)
     auto fitted = fitDrumGuides(test::dockDrum().cloud);
     ASSERT_TRUE(fitted.ok()) << fitted.error().message;
     const DrumFrame frame(*fitted);
-    const auto& fragment = test::dockFragment(5);
+    // Fragment 5 of the drum's design, with its true normals (what a .poct's leaves carry).
+    auto o = test::allRound(0.003, 5, 48);
+    o.designSeed = test::kDockDesign;
+    o.writeNormals = true;
+    const auto& fragment = test::generatedScan("contact-fragment-5", synth::SyntheticKind::Fragment, o);
+    ASSERT_TRUE(fragment.cloud.hasNormals());
     const Eigen::Isometry3d truth = test::truePose(fragment, test::dockDrum());
     auto docked = dockFragment(fragment.cloud, *fitted, truth);
     ASSERT_TRUE(docked.ok()) << docked.error().message;
     auto contact = measureContact(fragment.cloud, *fitted, docked->pose);
     ASSERT_TRUE(contact.ok()) << contact.error().message;
+    std::printf("contact: %zu points, largest %.3f mm, median %.3f, 90 %.3f, 99 %.3f mm, within %.3f\n", contact->points,
+                contact->largestInterpenetration * 1e3, contact->medianGap * 1e3, contact->gap90 * 1e3,
+                contact->gap99 * 1e3, contact->withinHalfMillimetre);
     EXPECT_GT(contact->points, 1000u);
     EXPECT_LT(std::abs(contact->medianGap), 0.0002) << contact->medianGap;
     EXPECT_GT(contact->withinHalfMillimetre, 0.7);
