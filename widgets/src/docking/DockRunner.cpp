@@ -124,8 +124,8 @@ void DockRunner::delivered(FragmentId id, const QFuture<DockJobResult>& future)
         Q_EMIT failed(id, tr("%1 or the drum moved while it was docked: the dock was not applied").arg(name));
         return;
     }
-    const Eigen::Isometry3d docked = isometry(d->pose) * result.dock.pose;
-    const core::scene::Pose pose = core::scene::poseFromEigen(docked.matrix());
+    const Eigen::Isometry3d inScene = isometry(d->pose) * result.dock.pose;
+    const core::scene::Pose pose = core::scene::poseFromEigen(inScene.matrix());
     if (pose != f->pose) {
         m_document.undoStack()->beginMacro(tr("Dock %1").arg(name));
         m_document.setFragmentPose(id, pose);
