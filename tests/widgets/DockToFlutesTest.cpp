@@ -244,11 +244,12 @@ void DockToFlutesTest::theContactReadoutFollowsThePose()
     monitor.setFragment(id);
     QTRY_COMPARE_WITH_TIMEOUT(monitor.state(), ContactMonitor::State::Ready, 120000);
     const double before = monitor.readout().medianGap; // 5 mm out, 2° off: the flutes do not meet
+    const int atStart = monitor.deliveries();
     QSignalSpy docked(&runner, &DockRunner::docked);
     QVERIFY(runner.start(id));
     QTRY_COMPARE_WITH_TIMEOUT(docked.size(), 1, 120000);
-    QCOMPARE(monitor.state(), ContactMonitor::State::Computing); // the dock moved it: a new readout is on its way
-    QTRY_COMPARE_WITH_TIMEOUT(monitor.state(), ContactMonitor::State::Ready, 60000);
+    // The dock moved it: a new readout follows.
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.deliveries() > atStart && monitor.state() == ContactMonitor::State::Ready, 60000);
     const auto r = monitor.readout();
     qInfo("contact: %zu points, largest %.3f mm, median %.3f mm (before: %.3f mm), 90 %% %.3f mm, 99 %% %.3f mm, within %.3f",
           r.points, r.largestInterpenetration * 1e3, r.medianGap * 1e3, before * 1e3, r.gap90 * 1e3, r.gap99 * 1e3,
