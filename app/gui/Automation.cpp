@@ -4,6 +4,7 @@
 
 #include "DockingActions.h"
 #include "LogDock.h"
+#include "PropertiesDock.h"
 #include "SceneDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
@@ -174,6 +175,7 @@ void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs)
 void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
 {
     window.setErrorDialogsEnabled(false);
+    window.resize(1400, 900);
     whenReady(window, timeoutMs, [&window, path, timeoutMs] {
         const auto& fragments = window.document().scene().fragments();
         if (fragments.size() < 2) {
@@ -196,7 +198,15 @@ void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
                 if (docking.contact().state() != widgets::ContactMonitor::State::Ready) return;
                 QObject::disconnect(*waiting);
                 delete waiting;
-                grabWhenReady(window, path, timeoutMs);
+                // The picture: the readout in view, the log's line of the dock under the 3D view.
+                if (auto* developpee = window.findChild<QDockWidget*>(QStringLiteral("developpeeDock"))) developpee->hide();
+                window.logDock().raise();
+                window.resizeDocks({&window.logDock()}, {140}, Qt::Vertical);
+                if (window.viewport()) window.viewport()->fitToSelection();
+                QTimer::singleShot(300, &window, [&window, path, timeoutMs] {
+                    window.propertiesDock().showContactReadout();
+                    grabWhenReady(window, path, timeoutMs);
+                });
             });
         });
         QObject::connect(&docking.docker(), &widgets::DockRunner::failed, &window, [](quint64, const QString& message) {

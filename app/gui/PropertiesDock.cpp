@@ -30,11 +30,11 @@ PropertiesDock::PropertiesDock(widgets::SceneDocument& document, widgets::Viewpo
         layout->addWidget(m_displayBox);
     }
     layout->addStretch(1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(contents);
-    setWidget(scroll);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll->setWidget(contents);
+    setWidget(m_scroll);
     retranslateUi();
 }
 
@@ -55,6 +55,11 @@ void PropertiesDock::addContactReadout(widgets::ContactMonitor& monitor)
     auto* contents = static_cast<QVBoxLayout*>(m_fragmentBox->parentWidget()->layout());
     contents->insertWidget(contents->indexOf(m_fragmentBox) + 1, m_contactBox);
     retranslateUi();
+}
+
+void PropertiesDock::showContactReadout()
+{
+    if (m_contactBox) m_scroll->ensureWidgetVisible(m_contactBox, 0, 0);
 }
 
 void PropertiesDock::changeEvent(QEvent* event)

@@ -10,6 +10,7 @@
 #include <QDockWidget>
 
 class QGroupBox;
+class QScrollArea;
 
 namespace stylos::widgets {
 class ContactMonitor;
@@ -35,6 +36,8 @@ public:
     void addContactReadout(widgets::ContactMonitor& monitor);
     /** @brief Null before addContactReadout(). */
     widgets::ContactReadoutWidget* contactReadout() const { return m_contact; }
+    /** @brief Scrolls the dock so that the contact box shows (after addContactReadout()). */
+    void showContactReadout();
     widgets::FragmentPropertiesWidget* fragmentWidget() const { return m_fragment; }
     /** @brief Null without a 3D view. */
     DisplaySettingsWidget* displaySettings() const { return m_display; }
@@ -46,6 +49,7 @@ private:
     void retranslateUi();
 
     QGroupBox* m_fragmentBox;
+    QScrollArea* m_scroll;
     QGroupBox* m_displayBox = nullptr;
     QGroupBox* m_contactBox = nullptr;
     widgets::ContactReadoutWidget* m_contact = nullptr;
