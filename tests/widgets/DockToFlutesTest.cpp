@@ -3,9 +3,17 @@
 // is docked by DockRunner in the background: the pose lands within 0.05° / 0.1 mm of the truth as exactly one undo
 // step, and undo restores the start exactly; a second dock fits the drum's guides no more; a plain fragment (no
 // flutes) reports why, moves nothing and leaves no undo step; the contact readout after the dock (ContactMonitor,
-// ContactReadoutWidget) shows a largest interpenetration under 1.5 mm, and follows a pose that pushes it inside.
+// ContactReadoutWidget) shows a largest interpenetration under 1.5 mm, and follows a pose that pushes it inside; in
+// the window, Tools › Dock to flutes (Ctrl+J) is enabled only for another fragment than the docking drum and docks with
+// the locks of Tools › Docking locks (θ and the tilts locked: the rotation stays exactly), the readout in Properties.
 #include "DockGeometry.h"
 #include "WidgetTestSupport.h"
+
+#include "DockingActions.h"
+#include "MainWindow.h"
+#include "PropertiesDock.h"
+#include "SceneDock.h"
+#include "Translations.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/octree/OctreeBuild.h"
@@ -20,7 +28,9 @@
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
+#include <QAction>
 #include <QLabel>
+#include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -101,6 +111,7 @@ private Q_SLOTS:
     void docksWithinTheTruthAsOneUndoStep();
     void aPlainFragmentMovesNothing();
     void theContactReadoutFollowsThePose();
+    void theWindowDocksWithTheLocksChosen();
 
 private:
     /** A document holding the drum (with its fitted guides, the docking drum) at m_drumPose. */
@@ -279,6 +290,57 @@ void DockToFlutesTest::theContactReadoutFollowsThePose()
     QCOMPARE(monitor.state(), ContactMonitor::State::Off);
     QCOMPARE(widget.interpenetrationLabel()->text(), QStringLiteral("—"));
     tasks.cancelAllAndWait();
+}
+
+void DockToFlutesTest::theWindowDocksWithTheLocksChosen()
+{
+    QSettings().clear();
+    app::Translations translations;
+    app::MainWindow window(translations, m_dir.filePath(QStringLiteral("demo")));
+    window.setErrorDialogsEnabled(false);
+    app::DockingActions& docking = window.docking();
+    QAction* dock = docking.dockToFlutesAction();
+    QCOMPARE(dock->shortcut(), QKeySequence(Qt::CTRL | Qt::Key_J));
+    QVERIFY(window.propertiesDock().contactReadout() != nullptr);
+
+    SceneDocument& document = window.document();
+    const scene::FragmentId drum = addPiece(document, m_drum, "drum", m_drumPose);
+    document.setFragmentGuides(drum, m_guides);
+    const Eigen::Isometry3d startPose = start(m_fragment);
+    const scene::FragmentId id = addPiece(document, m_fragment, "fragment", startPose);
+    window.sceneDock().selectFragment(id);
+    QVERIFY(!dock->isEnabled()); // no docking drum yet
+    document.setDockingDrum(drum);
+    QVERIFY(dock->isEnabled());
+    window.sceneDock().selectFragment(drum);
+    QVERIFY(!dock->isEnabled()); // not the drum against itself
+    window.sceneDock().selectFragment(id);
+    QVERIFY(dock->isEnabled());
+
+    QCOMPARE(docking.lockActions().size(), 4); // z, r, θ, tilts
+    docking.lockActions()[2]->setChecked(true);
+    docking.lockActions()[3]->setChecked(true);
+    QVERIFY(docking.docker().isLocked(core::dock::DockUnknown::Theta));
+    QVERIFY(docking.docker().isLocked(core::dock::DockUnknown::TiltRoll));
+    QVERIFY(!docking.docker().isLocked(core::dock::DockUnknown::R));
+    const int steps = document.undoStack()->count();
+    dock->trigger();
+    QTRY_COMPARE_WITH_TIMEOUT(document.undoStack()->count(), steps + 1, 120000);
+    QCOMPARE(document.undoStack()->undoText(), QStringLiteral("Dock fragment"));
+    const Eigen::Isometry3d docked = isometry(document.fragment(id)->pose);
+    QVERIFY(docked.linear().isApprox(startPose.linear(), 1e-12)); // θ and the tilts locked: the rotation stays
+    const Eigen::Isometry3d t = truth(m_fragment);
+    const Eigen::Vector3d c = m_frame.toFrame(t * m_fragment.centre), m = m_frame.toFrame(m_drumPose.inverse() * docked * m_fragment.centre);
+    // r is free: the fragment's centre is back on its radius (within what the locked 2° leave).
+    QVERIFY2(std::abs(std::hypot(m.x(), m.y()) - std::hypot(c.x(), c.y())) < 0.001,
+             qPrintable(QString::number(std::hypot(m.x(), m.y()) - std::hypot(c.x(), c.y()))));
+
+    auto* readout = window.propertiesDock().contactReadout();
+    QTRY_VERIFY_WITH_TIMEOUT(docking.contact().state() == ContactMonitor::State::Ready &&
+                                 readout->interpenetrationLabel()->text() != QStringLiteral("—"), 60000);
+    QVERIFY(readout->pointsLabel()->text() != QStringLiteral("—"));
+    window.tasks().cancelAllAndWait();
+    QSettings().clear();
 }
 
 STYLOS_WIDGET_TEST_MAIN(DockToFlutesTest)
