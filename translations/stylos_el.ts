@@ -109,6 +109,18 @@
         <source>--gizmo goes with --grab</source>
         <translation>Το --gizmo χρησιμοποιείται με το --grab</translation>
     </message>
+    <message>
+        <source>With --grab: first fit the first fragment&apos;s drum guides, dock the second fragment to its flutes from where it stands and show its contact readout.</source>
+        <translation>Με --grab: πρώτα προσαρμογή των οδηγών τυμπάνου του πρώτου θραύσματος, πρόσδεση του δεύτερου θραύσματος στις ραβδώσεις του από τη θέση του και εμφάνιση της ένδειξης επαφής του.</translation>
+    </message>
+    <message>
+        <source>--dock goes with --grab</source>
+        <translation>το --dock χρησιμοποιείται με το --grab</translation>
+    </message>
+    <message>
+        <source>--dock and --gizmo do not go together</source>
+        <translation>τα --dock και --gizmo δεν συνδυάζονται</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -248,6 +260,38 @@
     <message>
         <source>Show &amp;guides</source>
         <translation>Εμφάνιση &amp;οδηγών</translation>
+    </message>
+    <message>
+        <source>This fragment is being docked already, or its octree or the drum&apos;s is not open yet</source>
+        <translation>Το θραύσμα αυτό προσδένεται ήδη, ή το οκταδικό δέντρο του ή του τυμπάνου δεν έχει ανοίξει ακόμη</translation>
+    </message>
+    <message>
+        <source>Dock to &amp;flutes</source>
+        <translation>Πρόσδεση στις &amp;ραβδώσεις</translation>
+    </message>
+    <message>
+        <source>Snap the selected fragment onto the nearest flutes of the docking drum and refine its pose against them (one undo step)</source>
+        <translation>Ευθυγράμμιση του επιλεγμένου θραύσματος στις πλησιέστερες ραβδώσεις του τυμπάνου πρόσδεσης και βελτίωση της θέσης του πάνω τους (ένα βήμα αναίρεσης)</translation>
+    </message>
+    <message>
+        <source>Docking &amp;locks</source>
+        <translation>&amp;Κλειδώματα πρόσδεσης</translation>
+    </message>
+    <message>
+        <source>Lock &amp;z (along the axis)</source>
+        <translation>Κλείδωμα &amp;z (κατά μήκος του άξονα)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;r (radial)</source>
+        <translation>Κλείδωμα &amp;r (ακτινικά)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;θ (about the axis)</source>
+        <translation>Κλείδωμα &amp;θ (γύρω από τον άξονα)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;tilts</source>
+        <translation>Κλείδωμα &amp;κλίσεων</translation>
     </message>
 </context>
 <context>
@@ -558,6 +602,10 @@
         <source>Display</source>
         <translation>Εμφάνιση</translation>
     </message>
+    <message>
+        <source>Contact with the drum</source>
+        <translation>Επαφή με το τύμπανο</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::SceneDock</name>
@@ -589,6 +637,72 @@
     <message>
         <source>Add %1</source>
         <translation>Προσθήκη %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ContactJob</name>
+    <message>
+        <source>Contact of %1 with the drum</source>
+        <translation>Επαφή του %1 με το τύμπανο</translation>
+    </message>
+    <message>
+        <source>Could not measure the contact of %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η μέτρηση της επαφής του %1: %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ContactReadoutWidget</name>
+    <message>
+        <source>Largest interpenetration:</source>
+        <translation>Μέγιστη αλληλοδιείσδυση:</translation>
+    </message>
+    <message>
+        <source>Median gap:</source>
+        <translation>Διάμεσο κενό:</translation>
+    </message>
+    <message>
+        <source>Gap, 90 % of points:</source>
+        <translation>Κενό, 90 % των σημείων:</translation>
+    </message>
+    <message>
+        <source>Gap, 99 % of points:</source>
+        <translation>Κενό, 99 % των σημείων:</translation>
+    </message>
+    <message>
+        <source>Within 0.5 mm:</source>
+        <translation>Εντός 0,5 mm:</translation>
+    </message>
+    <message>
+        <source>Points measured:</source>
+        <translation>Σημεία που μετρήθηκαν:</translation>
+    </message>
+    <message>
+        <source>Signed distance of the fragment&apos;s outer face to the drum&apos;s flute profile, along its normal; negative: inside the drum</source>
+        <translation>Προσημασμένη απόσταση της εξωτερικής όψης του θραύσματος από το προφίλ των ραβδώσεων του τυμπάνου, κατά την κάθετό του· αρνητική: μέσα στο τύμπανο</translation>
+    </message>
+    <message>
+        <source>Set a docking drum with guides (Tools › Dock against this drum) and select another fragment.</source>
+        <translation>Ορίστε ένα τύμπανο πρόσδεσης με οδηγούς (Εργαλεία › Πρόσδεση σε αυτό το τύμπανο) και επιλέξτε άλλο θραύσμα.</translation>
+    </message>
+    <message>
+        <source>Measuring…</source>
+        <translation>Μέτρηση…</translation>
+    </message>
+    <message>
+        <source>Against the docking drum&apos;s flute profile:</source>
+        <translation>Έναντι του προφίλ ραβδώσεων του τυμπάνου πρόσδεσης:</translation>
+    </message>
+    <message>
+        <source>The fragment does not touch the drum (no point of it within 5 mm of the profile).</source>
+        <translation>Το θραύσμα δεν αγγίζει το τύμπανο (κανένα σημείο του εντός 5 mm από το προφίλ).</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
     </message>
 </context>
 <context>
@@ -792,6 +906,76 @@
     <message>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DockJob</name>
+    <message>
+        <source>Dock %1 to the flutes</source>
+        <translation>Πρόσδεση του %1 στις ραβδώσεις</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: %2.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: %2.</translation>
+    </message>
+    <message>
+        <source>θ</source>
+        <translation>θ</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>r</source>
+        <translation>r</translation>
+    </message>
+    <message>
+        <source>tangent</source>
+        <translation>εφαπτομενικά</translation>
+    </message>
+    <message>
+        <source>lean</source>
+        <translation>κλίση</translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <translation>περιστροφή</translation>
+    </message>
+    <message>
+        <source>%1 ±%2°</source>
+        <translation>%1 ±%2°</translation>
+    </message>
+    <message>
+        <source>%1 ±%2 mm</source>
+        <translation>%1 ±%2 mm</translation>
+    </message>
+    <message>
+        <source>Docked %1: RMS %2 mm over %3 points, moved %4 flutes about the axis, %5 s</source>
+        <translation>Προσδέθηκε το %1: RMS %2 mm σε %3 σημεία, μετακινήθηκε %4 ραβδώσεις γύρω από τον άξονα, %5 s</translation>
+    </message>
+    <message>
+        <source>uncertainty %1</source>
+        <translation>αβεβαιότητα %1</translation>
+    </message>
+    <message>
+        <source>not fixed by the flutes, left as it was: %1</source>
+        <translation>δεν καθορίζεται από τις ραβδώσεις, έμεινε ως είχε: %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DockRunner</name>
+    <message>
+        <source>The docking drum changed while its guides were fitted</source>
+        <translation>Το τύμπανο πρόσδεσης άλλαξε κατά την προσαρμογή των οδηγών του</translation>
+    </message>
+    <message>
+        <source>%1 or the drum moved while it was docked: the dock was not applied</source>
+        <translation>Το %1 ή το τύμπανο μετακινήθηκε κατά την πρόσδεση: η πρόσδεση δεν εφαρμόστηκε</translation>
+    </message>
+    <message>
+        <source>Dock %1</source>
+        <translation>Πρόσδεση του %1</translation>
     </message>
 </context>
 <context>

@@ -109,6 +109,18 @@
         <source>--gizmo goes with --grab</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>With --grab: first fit the first fragment&apos;s drum guides, dock the second fragment to its flutes from where it stands and show its contact readout.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--dock goes with --grab</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--dock and --gizmo do not go together</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -247,6 +259,38 @@
     </message>
     <message>
         <source>Show &amp;guides</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This fragment is being docked already, or its octree or the drum&apos;s is not open yet</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dock to &amp;flutes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Snap the selected fragment onto the nearest flutes of the docking drum and refine its pose against them (one undo step)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Docking &amp;locks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lock &amp;z (along the axis)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lock &amp;r (radial)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lock &amp;θ (about the axis)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lock &amp;tilts</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -558,6 +602,10 @@
         <source>Display</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Contact with the drum</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::SceneDock</name>
@@ -588,6 +636,72 @@
     <name>stylos::widgets::AddFragmentCommand</name>
     <message>
         <source>Add %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ContactJob</name>
+    <message>
+        <source>Contact of %1 with the drum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not measure the contact of %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ContactReadoutWidget</name>
+    <message>
+        <source>Largest interpenetration:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Median gap:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gap, 90 % of points:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Gap, 99 % of points:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Within 0.5 mm:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Points measured:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Signed distance of the fragment&apos;s outer face to the drum&apos;s flute profile, along its normal; negative: inside the drum</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set a docking drum with guides (Tools › Dock against this drum) and select another fragment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Measuring…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Against the docking drum&apos;s flute profile:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The fragment does not touch the drum (no point of it within 5 mm of the profile).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 %</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -791,6 +905,76 @@
     </message>
     <message>
         <source>%1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DockJob</name>
+    <message>
+        <source>Dock %1 to the flutes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not dock %1: %2.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>θ</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>r</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>tangent</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>lean</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ±%2°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 ±%2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Docked %1: RMS %2 mm over %3 points, moved %4 flutes about the axis, %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>uncertainty %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>not fixed by the flutes, left as it was: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DockRunner</name>
+    <message>
+        <source>The docking drum changed while its guides were fitted</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 or the drum moved while it was docked: the dock was not applied</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Dock %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -109,6 +109,18 @@
         <source>--gizmo goes with --grab</source>
         <translation>--gizmo s’utilise avec --grab</translation>
     </message>
+    <message>
+        <source>With --grab: first fit the first fragment&apos;s drum guides, dock the second fragment to its flutes from where it stands and show its contact readout.</source>
+        <translation>Avec --grab : ajuster d’abord les guides de tambour du premier fragment, amarrer le second fragment à ses cannelures depuis sa position et afficher son relevé de contact.</translation>
+    </message>
+    <message>
+        <source>--dock goes with --grab</source>
+        <translation>--dock s’emploie avec --grab</translation>
+    </message>
+    <message>
+        <source>--dock and --gizmo do not go together</source>
+        <translation>--dock et --gizmo ne vont pas ensemble</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -248,6 +260,38 @@
     <message>
         <source>Show &amp;guides</source>
         <translation>Afficher les &amp;guides</translation>
+    </message>
+    <message>
+        <source>This fragment is being docked already, or its octree or the drum&apos;s is not open yet</source>
+        <translation>Ce fragment est déjà en cours d’amarrage, ou son octree ou celui du tambour n’est pas encore ouvert</translation>
+    </message>
+    <message>
+        <source>Dock to &amp;flutes</source>
+        <translation>Amarrer aux &amp;cannelures</translation>
+    </message>
+    <message>
+        <source>Snap the selected fragment onto the nearest flutes of the docking drum and refine its pose against them (one undo step)</source>
+        <translation>Caler le fragment sélectionné sur les cannelures les plus proches du tambour d’amarrage et affiner sa pose contre elles (une seule étape d’annulation)</translation>
+    </message>
+    <message>
+        <source>Docking &amp;locks</source>
+        <translation>&amp;Verrous d’amarrage</translation>
+    </message>
+    <message>
+        <source>Lock &amp;z (along the axis)</source>
+        <translation>Verrouiller &amp;z (le long de l’axe)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;r (radial)</source>
+        <translation>Verrouiller &amp;r (radial)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;θ (about the axis)</source>
+        <translation>Verrouiller &amp;θ (autour de l’axe)</translation>
+    </message>
+    <message>
+        <source>Lock &amp;tilts</source>
+        <translation>Verrouiller les &amp;inclinaisons</translation>
     </message>
 </context>
 <context>
@@ -558,6 +602,10 @@
         <source>Display</source>
         <translation>Affichage</translation>
     </message>
+    <message>
+        <source>Contact with the drum</source>
+        <translation>Contact avec le tambour</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::SceneDock</name>
@@ -589,6 +637,72 @@
     <message>
         <source>Add %1</source>
         <translation>Ajouter %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ContactJob</name>
+    <message>
+        <source>Contact of %1 with the drum</source>
+        <translation>Contact de %1 avec le tambour</translation>
+    </message>
+    <message>
+        <source>Could not measure the contact of %1: %2.</source>
+        <translation>Impossible de mesurer le contact de %1 : %2.</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ContactReadoutWidget</name>
+    <message>
+        <source>Largest interpenetration:</source>
+        <translation>Interpénétration maximale :</translation>
+    </message>
+    <message>
+        <source>Median gap:</source>
+        <translation>Écart médian :</translation>
+    </message>
+    <message>
+        <source>Gap, 90 % of points:</source>
+        <translation>Écart, 90 % des points :</translation>
+    </message>
+    <message>
+        <source>Gap, 99 % of points:</source>
+        <translation>Écart, 99 % des points :</translation>
+    </message>
+    <message>
+        <source>Within 0.5 mm:</source>
+        <translation>À moins de 0,5 mm :</translation>
+    </message>
+    <message>
+        <source>Points measured:</source>
+        <translation>Points mesurés :</translation>
+    </message>
+    <message>
+        <source>Signed distance of the fragment&apos;s outer face to the drum&apos;s flute profile, along its normal; negative: inside the drum</source>
+        <translation>Distance signée de la face extérieure du fragment au profil des cannelures du tambour, le long de sa normale ; négative : à l’intérieur du tambour</translation>
+    </message>
+    <message>
+        <source>Set a docking drum with guides (Tools › Dock against this drum) and select another fragment.</source>
+        <translation>Définissez un tambour d’amarrage avec des guides (Outils › Amarrer contre ce tambour) et sélectionnez un autre fragment.</translation>
+    </message>
+    <message>
+        <source>Measuring…</source>
+        <translation>Mesure en cours…</translation>
+    </message>
+    <message>
+        <source>Against the docking drum&apos;s flute profile:</source>
+        <translation>Contre le profil des cannelures du tambour d’amarrage :</translation>
+    </message>
+    <message>
+        <source>The fragment does not touch the drum (no point of it within 5 mm of the profile).</source>
+        <translation>Le fragment ne touche pas le tambour (aucun de ses points à moins de 5 mm du profil).</translation>
+    </message>
+    <message>
+        <source>%1 mm</source>
+        <translation>%1 mm</translation>
+    </message>
+    <message>
+        <source>%1 %</source>
+        <translation>%1 %</translation>
     </message>
 </context>
 <context>
@@ -792,6 +906,76 @@
     <message>
         <source>%1 mm</source>
         <translation>%1 mm</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DockJob</name>
+    <message>
+        <source>Dock %1 to the flutes</source>
+        <translation>Amarrer %1 aux cannelures</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: %2.</source>
+        <translation>Impossible d’amarrer %1 : %2.</translation>
+    </message>
+    <message>
+        <source>θ</source>
+        <translation>θ</translation>
+    </message>
+    <message>
+        <source>z</source>
+        <translation>z</translation>
+    </message>
+    <message>
+        <source>r</source>
+        <translation>r</translation>
+    </message>
+    <message>
+        <source>tangent</source>
+        <translation>tangente</translation>
+    </message>
+    <message>
+        <source>lean</source>
+        <translation>dévers</translation>
+    </message>
+    <message>
+        <source>roll</source>
+        <translation>roulis</translation>
+    </message>
+    <message>
+        <source>%1 ±%2°</source>
+        <translation>%1 ±%2°</translation>
+    </message>
+    <message>
+        <source>%1 ±%2 mm</source>
+        <translation>%1 ±%2 mm</translation>
+    </message>
+    <message>
+        <source>Docked %1: RMS %2 mm over %3 points, moved %4 flutes about the axis, %5 s</source>
+        <translation>%1 amarré : RMS %2 mm sur %3 points, déplacé de %4 cannelures autour de l’axe, %5 s</translation>
+    </message>
+    <message>
+        <source>uncertainty %1</source>
+        <translation>incertitude %1</translation>
+    </message>
+    <message>
+        <source>not fixed by the flutes, left as it was: %1</source>
+        <translation>non fixé par les cannelures, laissé tel quel : %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DockRunner</name>
+    <message>
+        <source>The docking drum changed while its guides were fitted</source>
+        <translation>Le tambour d’amarrage a changé pendant l’ajustement de ses guides</translation>
+    </message>
+    <message>
+        <source>%1 or the drum moved while it was docked: the dock was not applied</source>
+        <translation>%1 ou le tambour a bougé pendant l’amarrage : l’amarrage n’a pas été appliqué</translation>
+    </message>
+    <message>
+        <source>Dock %1</source>
+        <translation>Amarrer %1</translation>
     </message>
 </context>
 <context>

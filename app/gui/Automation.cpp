@@ -4,11 +4,14 @@
 
 #include "DockingActions.h"
 #include "LogDock.h"
+#include "PropertiesDock.h"
 #include "SceneDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
 #include "stylos/widgets/view3d/OrbitBenchmark.h"
 #include "stylos/widgets/view3d/PoseBenchmark.h"
+#include "stylos/widgets/docking/ContactMonitor.h"
+#include "stylos/widgets/docking/DockRunner.h"
 #include "stylos/widgets/docking/GizmoController.h"
 #include "stylos/widgets/docking/GuideFitRunner.h"
 #include "stylos/widgets/document/SceneDocument.h"
@@ -166,6 +169,71 @@ void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs)
         else
             dock();
         grabWhenReady(window, path, timeoutMs);
+    });
+}
+
+void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    window.resize(1400, 900);
+    whenReady(window, timeoutMs, [&window, path, timeoutMs] {
+        const auto& fragments = window.document().scene().fragments();
+        if (fragments.size() < 2) {
+            std::fprintf(stderr, "stylos: --dock needs two fragments\n");
+            QApplication::exit(1);
+            return;
+        }
+        const auto drum = fragments[0].id, piece = fragments[1].id;
+        DockingActions& docking = window.docking();
+        const auto hasFlutes = [&window, drum] {
+            const auto& guides = window.document().fragment(drum)->guides;
+            return std::any_of(guides.begin(), guides.end(),
+                               [](const core::scene::Guide& g) { return g.kind == core::scene::GuideKind::Groove; });
+        };
+        // Once the contact readout of the docked fragment is in: the picture.
+        QObject::connect(&docking.docker(), &widgets::DockRunner::docked, &window, [&window, &docking, path, timeoutMs] {
+            auto* waiting = new QMetaObject::Connection;
+            *waiting = QObject::connect(&docking.contact(), &widgets::ContactMonitor::changed, &window,
+                                        [&window, &docking, path, timeoutMs, waiting] {
+                if (docking.contact().state() != widgets::ContactMonitor::State::Ready) return;
+                QObject::disconnect(*waiting);
+                delete waiting;
+                // The picture: the readout in view, the log's line of the dock under the 3D view.
+                if (auto* developpee = window.findChild<QDockWidget*>(QStringLiteral("developpeeDock"))) developpee->hide();
+                window.logDock().raise();
+                window.resizeDocks({&window.logDock()}, {140}, Qt::Vertical);
+                if (window.viewport()) window.viewport()->fitToSelection();
+                QTimer::singleShot(300, &window, [&window, path, timeoutMs] {
+                    window.propertiesDock().showContactReadout();
+                    grabWhenReady(window, path, timeoutMs);
+                });
+            });
+        });
+        QObject::connect(&docking.docker(), &widgets::DockRunner::failed, &window, [](quint64, const QString& message) {
+            std::fprintf(stderr, "stylos: %s\n", qPrintable(message));
+            QApplication::exit(1);
+        });
+        auto dock = [&window, &docking, drum, piece] {
+            window.document().setDockingDrum(drum);
+            window.sceneDock().selectFragment(piece);
+            if (!docking.docker().start(piece)) {
+                std::fprintf(stderr, "stylos: --dock could not start docking the second fragment\n");
+                QApplication::exit(1);
+            }
+        };
+        if (hasFlutes()) {
+            dock();
+            return;
+        }
+        window.docking().guideFits().start(drum);
+        auto* fitted = new QMetaObject::Connection;
+        *fitted = QObject::connect(&window.document(), &widgets::SceneDocument::fragmentChanged, &window,
+                                   [drum, dock, hasFlutes, fitted](quint64 id) {
+            if (id != drum || !hasFlutes()) return;
+            QObject::disconnect(*fitted);
+            delete fitted;
+            dock();
+        });
     });
 }
 

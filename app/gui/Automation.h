@@ -29,6 +29,14 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 *
 void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
 
 /**
+ * @brief As grabWhenReady(), with a dock in the picture: once ready, fits the first fragment's drum guides (unless it
+ *        has flute guides), makes it the docking drum, selects the second fragment and docks it to the flutes from
+ *        where it stands (Dock to flutes); once its contact readout is in, grabs. Status 1 as above, or when the
+ *        scene has fewer than two fragments or the dock fails.
+ */
+void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+
+/**
  * @brief Hides the docks and toolbar, sizes the 3D view to 1280 × 800, and once ready orbits the camera
  *        for @p frames frames (widgets::OrbitBenchmark), prints the JSON result on stdout and quits (0;
  *        1 without a 3D view, or when the scene failed to open). The result adds "openToFirstFrameMs":

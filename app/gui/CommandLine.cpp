@@ -43,8 +43,12 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     const QCommandLineOption gizmo(QStringLiteral("gizmo"),
                                    tr("With --grab: first fit the first fragment's drum guides, dock against it and "
                                       "show the Move tool on the second fragment, in the drum's frame."));
+    const QCommandLineOption dock(QStringLiteral("dock"),
+                                  tr("With --grab: first fit the first fragment's drum guides, dock the second fragment "
+                                     "to its flutes from where it stands and show its contact readout."));
     parser.addOption(grab);
     parser.addOption(gizmo);
+    parser.addOption(dock);
     parser.addOption(orbit);
     parser.addOption(pose);
     QStringList formats;
@@ -60,6 +64,9 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     result.grabPath = parser.value(grab);
     result.grabGizmo = parser.isSet(gizmo);
     if (result.grabGizmo && result.grabPath.isEmpty()) usageError(tr("--gizmo goes with --grab"));
+    result.grabDock = parser.isSet(dock);
+    if (result.grabDock && result.grabPath.isEmpty()) usageError(tr("--dock goes with --grab"));
+    if (result.grabDock && result.grabGizmo) usageError(tr("--dock and --gizmo do not go together"));
     if (parser.isSet(orbit)) {
         bool ok = false;
         result.orbitFrames = parser.value(orbit).toInt(&ok);

@@ -1,6 +1,9 @@
 #include "DockingActions.h"
 
 #include "stylos/core/view/GuideGeometry.h"
+#include "stylos/widgets/docking/ContactMonitor.h"
+#include "stylos/widgets/docking/DockRunner.h"
+#include "stylos/widgets/docking/DrumGuidesCache.h"
 #include "stylos/widgets/docking/GizmoController.h"
 #include "stylos/widgets/docking/GuideFitRunner.h"
 #include "stylos/widgets/docking/GuidesDisplay.h"
@@ -15,7 +18,9 @@ namespace stylos::app {
 
 DockingActions::DockingActions(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget& window)
     : QObject(&window), m_document(document), m_fits(new widgets::GuideFitRunner(document, this)),
-      m_moveTool(new QAction(this)), m_frames(new QActionGroup(this)), m_dockAgainst(new QAction(this)),
+      m_cache(new widgets::DrumGuidesCache(document, this)), m_docker(new widgets::DockRunner(document, *m_cache, this)),
+      m_contact(new widgets::ContactMonitor(document, *m_cache, this)), m_moveTool(new QAction(this)),
+      m_frames(new QActionGroup(this)), m_dockAgainst(new QAction(this)), m_dockToFlutes(new QAction(this)),
       m_fitGuides(new QAction(this)), m_deleteGuides(new QAction(this)), m_showGuides(new QAction(this))
 {
     m_moveTool->setObjectName(QStringLiteral("actionMoveTool"));
@@ -73,13 +78,45 @@ DockingActions::DockingActions(widgets::SceneDocument& document, widgets::Viewpo
     });
     connect(m_fits, &widgets::GuideFitRunner::failed, this,
             [this](quint64, const QString& message) { Q_EMIT reported(message, true); });
+    createDocking();
     connect(&document, &widgets::SceneDocument::fragmentChanged, this, &DockingActions::updateEnabled);
     connect(&document, &widgets::SceneDocument::dockingDrumChanged, this, &DockingActions::updateEnabled);
+    connect(&document, &widgets::SceneDocument::structureChanged, this, &DockingActions::updateEnabled);
+    connect(&document, &widgets::SceneDocument::assemblyChanged, this, &DockingActions::updateEnabled);
     updateEnabled();
     retranslateUi();
 }
 
 DockingActions::~DockingActions() = default;
+
+void DockingActions::createDocking()
+{
+    using core::dock::DockUnknown;
+    m_dockToFlutes->setObjectName(QStringLiteral("actionDockToFlutes"));
+    m_dockToFlutes->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_J));
+    const std::vector<std::vector<DockUnknown>> locks = {
+        {DockUnknown::Z}, {DockUnknown::R}, {DockUnknown::Theta}, {DockUnknown::TiltLean, DockUnknown::TiltRoll}};
+    for (const auto& unknowns : locks) {
+        auto* action = new QAction(this);
+        action->setCheckable(true);
+        action->setObjectName(QStringLiteral("actionLock_%1").arg(QString::fromLatin1(core::dock::dockUnknownName(unknowns[0]))));
+        connect(action, &QAction::toggled, this, [this, unknowns](bool on) {
+            for (DockUnknown u : unknowns) m_docker->setLocked(u, on);
+        });
+        m_locks.append(action);
+    }
+    connect(m_dockToFlutes, &QAction::triggered, this, [this] {
+        if (!m_docker->start(m_fragment))
+            Q_EMIT reported(tr("This fragment is being docked already, or its octree or the drum's is not open yet"), false);
+    });
+    connect(m_docker, &widgets::DockRunner::docked, this, [this](quint64 id, const widgets::DockJobResult& r) {
+        const auto* f = m_document.fragment(id);
+        Q_EMIT reported(widgets::DockJob::summary(f ? QString::fromStdString(f->name) : QString(), r), false);
+    });
+    connect(m_docker, &widgets::DockRunner::failed, this,
+            [this](quint64, const QString& message) { Q_EMIT reported(message, true); });
+    connect(&m_document, &widgets::SceneDocument::fragmentRemoved, this, &DockingActions::updateEnabled);
+}
 
 void DockingActions::populate(QMenu& tools, QMenu& view)
 {
@@ -89,6 +126,10 @@ void DockingActions::populate(QMenu& tools, QMenu& view)
     m_frameMenu->setObjectName(QStringLiteral("menuGizmoFrame"));
     m_frameMenu->addActions(m_frames->actions());
     tools.addAction(m_dockAgainst);
+    tools.addAction(m_dockToFlutes);
+    m_lockMenu = tools.addMenu(QString());
+    m_lockMenu->setObjectName(QStringLiteral("menuDockingLocks"));
+    m_lockMenu->addActions(m_locks);
     tools.addSeparator();
     tools.addAction(m_fitGuides);
     tools.addAction(m_deleteGuides);
@@ -100,6 +141,7 @@ void DockingActions::setFragment(core::scene::FragmentId id)
 {
     m_fragment = id;
     if (m_gizmo) m_gizmo->setFragment(id);
+    m_contact->setFragment(id);
     updateEnabled();
 }
 
@@ -110,6 +152,7 @@ void DockingActions::updateEnabled()
     m_frames->setEnabled(m_gizmo != nullptr);
     m_showGuides->setEnabled(m_guides != nullptr);
     m_dockAgainst->setEnabled(f && core::view::drumAxisOf(*f).has_value());
+    m_dockToFlutes->setEnabled(m_docker->canDock(m_fragment));
     m_fitGuides->setEnabled(f != nullptr);
     m_deleteGuides->setEnabled(f && !f->guides.empty());
 }
@@ -124,6 +167,13 @@ void DockingActions::retranslateUi()
     for (QAction* action : m_frames->actions()) action->setText(frames.value(action->data().toInt()));
     m_dockAgainst->setText(tr("Dock against this &drum"));
     m_dockAgainst->setStatusTip(tr("Use the axis and flutes of the selected fragment for the gizmo's Drum frame"));
+    m_dockToFlutes->setText(tr("Dock to &flutes"));
+    m_dockToFlutes->setStatusTip(tr("Snap the selected fragment onto the nearest flutes of the docking drum and refine "
+                                    "its pose against them (one undo step)"));
+    if (m_lockMenu) m_lockMenu->setTitle(tr("Docking &locks"));
+    const QStringList locks = {tr("Lock &z (along the axis)"), tr("Lock &r (radial)"), tr("Lock &θ (about the axis)"),
+                               tr("Lock &tilts")};
+    for (int i = 0; i < m_locks.size(); ++i) m_locks[i]->setText(locks.value(i));
     m_fitGuides->setText(tr("Fit drum &guides"));
     m_fitGuides->setStatusTip(tr("Fit the axis and the flute lines of the selected drum in the background"));
     m_deleteGuides->setText(tr("De&lete guides"));

@@ -1,13 +1,15 @@
 #pragma once
 /** @file
  * @brief The docking actions: Tools › Move tool (the gizmo, W in the 3D view), Gizmo frame (World, Fragment,
- *        Drum; L in the view cycles them), Dock against this drum, Fit drum guides, Delete guides; View › Show
- *        guides. They act on the current fragment through the widgets' GizmoController, GuideFitRunner and
- *        GuidesDisplay; results and failures of the fits go out as reported() for the window's log.
- *        GUI thread only.
+ *        Drum; L in the view cycles them), Dock against this drum, Dock to flutes (Ctrl+J) and its Docking locks
+ *        (z, r, θ, tilts), Fit drum guides, Delete guides; View › Show guides. They act on the current fragment
+ *        through the widgets' GizmoController, DockRunner, GuideFitRunner and GuidesDisplay, and keep its contact
+ *        readout (ContactMonitor, shown by the Properties dock) on it; results and failures of the fits and docks
+ *        go out as reported() for the window's log. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
 
+#include <QList>
 #include <QObject>
 #include <QString>
 
@@ -17,6 +19,9 @@ class QMenu;
 class QWidget;
 
 namespace stylos::widgets {
+class ContactMonitor;
+class DockRunner;
+class DrumGuidesCache;
 class GizmoController;
 class GuideFitRunner;
 class GuidesDisplay;
@@ -43,9 +48,14 @@ public:
     widgets::GizmoController* gizmo() const { return m_gizmo; }
     widgets::GuidesDisplay* guides() const { return m_guides; }
     widgets::GuideFitRunner& guideFits() const { return *m_fits; }
+    widgets::DockRunner& docker() const { return *m_docker; }
+    widgets::ContactMonitor& contact() const { return *m_contact; }
     QAction* moveToolAction() const { return m_moveTool; }
     QAction* fitGuidesAction() const { return m_fitGuides; }
     QAction* showGuidesAction() const { return m_showGuides; }
+    QAction* dockToFlutesAction() const { return m_dockToFlutes; }
+    /** @brief The lock actions: z, r, θ, tilts (checkable). */
+    const QList<QAction*>& lockActions() const { return m_locks; }
 
 Q_SIGNALS:
     /** @brief A message for the log (and, when @p failed, a box). */
@@ -53,16 +63,23 @@ Q_SIGNALS:
 
 private:
     void updateEnabled();
+    void createDocking();
 
     widgets::SceneDocument& m_document;
     widgets::GizmoController* m_gizmo = nullptr;
     widgets::GuidesDisplay* m_guides = nullptr;
     widgets::GuideFitRunner* m_fits;
+    widgets::DrumGuidesCache* m_cache;
+    widgets::DockRunner* m_docker;
+    widgets::ContactMonitor* m_contact;
     core::scene::FragmentId m_fragment = core::scene::NoFragment;
     QMenu* m_frameMenu = nullptr;
     QAction* m_moveTool;
     QActionGroup* m_frames;
     QAction* m_dockAgainst;
+    QAction* m_dockToFlutes;
+    QMenu* m_lockMenu = nullptr;
+    QList<QAction*> m_locks;
     QAction* m_fitGuides;
     QAction* m_deleteGuides;
     QAction* m_showGuides;

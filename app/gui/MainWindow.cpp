@@ -143,6 +143,7 @@ void MainWindow::createMenus()
     m_assemblies = new AssemblyActions(*m_document, *m_sceneDock, *this);
     m_assemblies->populate(*m_actions->toolsMenu());
     connect(m_assemblies, &AssemblyActions::reported, this, &MainWindow::report);
+    m_propertiesDock->addContactReadout(m_docking->contact());
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));

@@ -1,6 +1,7 @@
 #include "PropertiesDock.h"
 
 #include "DisplaySettingsWidget.h"
+#include "stylos/widgets/docking/ContactReadoutWidget.h"
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 
 #include <QEvent>
@@ -29,17 +30,36 @@ PropertiesDock::PropertiesDock(widgets::SceneDocument& document, widgets::Viewpo
         layout->addWidget(m_displayBox);
     }
     layout->addStretch(1);
-    auto* scroll = new QScrollArea(this);
-    scroll->setWidgetResizable(true);
-    scroll->setFrameShape(QFrame::NoFrame);
-    scroll->setWidget(contents);
-    setWidget(scroll);
+    m_scroll = new QScrollArea(this);
+    m_scroll->setWidgetResizable(true);
+    m_scroll->setFrameShape(QFrame::NoFrame);
+    m_scroll->setWidget(contents);
+    setWidget(m_scroll);
     retranslateUi();
 }
 
 void PropertiesDock::setFragment(core::scene::FragmentId id)
 {
     m_fragment->setFragment(id);
+}
+
+void PropertiesDock::addContactReadout(widgets::ContactMonitor& monitor)
+{
+    if (m_contact) return;
+    m_contactBox = new QGroupBox;
+    m_contactBox->setObjectName(QStringLiteral("contactBox"));
+    m_contact = new widgets::ContactReadoutWidget(monitor);
+    auto* layout = new QVBoxLayout(m_contactBox);
+    layout->setContentsMargins(4, 4, 4, 4);
+    layout->addWidget(m_contact);
+    auto* contents = static_cast<QVBoxLayout*>(m_fragmentBox->parentWidget()->layout());
+    contents->insertWidget(contents->indexOf(m_fragmentBox) + 1, m_contactBox);
+    retranslateUi();
+}
+
+void PropertiesDock::showContactReadout()
+{
+    if (m_contactBox) m_scroll->ensureWidgetVisible(m_contactBox, 0, 0);
 }
 
 void PropertiesDock::changeEvent(QEvent* event)
@@ -53,6 +73,7 @@ void PropertiesDock::retranslateUi()
     setWindowTitle(tr("Properties"));
     m_fragmentBox->setTitle(tr("Fragment"));
     if (m_displayBox) m_displayBox->setTitle(tr("Display"));
+    if (m_contactBox) m_contactBox->setTitle(tr("Contact with the drum"));
 }
 
 } // namespace stylos::app

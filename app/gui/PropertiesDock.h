@@ -1,7 +1,8 @@
 #pragma once
 /** @file
  * @brief The Properties dock: the selected fragment (FragmentPropertiesWidget: name, visibility, colour,
- *        pose, point and cell counts) above the 3D view's display settings (DisplaySettingsWidget), in a
+ *        pose, point and cell counts), its contact with the docking drum (ContactReadoutWidget, once
+ *        addContactReadout() is called) and the 3D view's display settings (DisplaySettingsWidget), in a
  *        scroll area. GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
@@ -9,8 +10,11 @@
 #include <QDockWidget>
 
 class QGroupBox;
+class QScrollArea;
 
 namespace stylos::widgets {
+class ContactMonitor;
+class ContactReadoutWidget;
 class FragmentPropertiesWidget;
 class SceneDocument;
 class ViewportWidget;
@@ -28,6 +32,12 @@ public:
     PropertiesDock(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget* parent = nullptr);
 
     void setFragment(core::scene::FragmentId id);
+    /** @brief Adds the "Contact with the drum" box under the fragment's, showing @p monitor (not owned). */
+    void addContactReadout(widgets::ContactMonitor& monitor);
+    /** @brief Null before addContactReadout(). */
+    widgets::ContactReadoutWidget* contactReadout() const { return m_contact; }
+    /** @brief Scrolls the dock so that the contact box shows (after addContactReadout()). */
+    void showContactReadout();
     widgets::FragmentPropertiesWidget* fragmentWidget() const { return m_fragment; }
     /** @brief Null without a 3D view. */
     DisplaySettingsWidget* displaySettings() const { return m_display; }
@@ -39,7 +49,10 @@ private:
     void retranslateUi();
 
     QGroupBox* m_fragmentBox;
+    QScrollArea* m_scroll;
     QGroupBox* m_displayBox = nullptr;
+    QGroupBox* m_contactBox = nullptr;
+    widgets::ContactReadoutWidget* m_contact = nullptr;
     widgets::FragmentPropertiesWidget* m_fragment;
     DisplaySettingsWidget* m_display = nullptr;
 };

@@ -65,6 +65,7 @@ core::Result<GuideFitResult> GuideFitJob::run(core::ProgressSink* progress) cons
     result.radius = fitted->radius;
     result.fluteDepth = fitted->fluteDepth;
     result.rms = fitted->rms;
+    result.drum = std::make_shared<const core::dock::DrumGuides>(*fitted);
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (progress) progress->update(1.0);
     return result;

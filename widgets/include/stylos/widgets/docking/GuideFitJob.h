@@ -21,6 +21,7 @@
 #include <QPromise>
 #include <QString>
 
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -36,6 +37,8 @@ struct GuideFitResult {
     double fluteDepth = 0.0;                ///< metres
     double rms = 0.0;                       ///< metres
     double seconds = 0.0;                   ///< wall time of the whole job
+    /** The fitted guides themselves, flute profile included (what docking needs); null on failure. */
+    std::shared_ptr<const core::dock::DrumGuides> drum;
     /** Empty on success; a translated message naming the file and the reason otherwise. */
     QString error;
 
