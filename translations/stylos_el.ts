@@ -743,6 +743,10 @@
         <source>Flute</source>
         <translation>Ράβδωση</translation>
     </message>
+    <message>
+        <source>Drum 1 reconstruction</source>
+        <translation>Αναστήλωση τυμπάνου 1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>

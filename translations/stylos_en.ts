@@ -743,6 +743,10 @@
         <source>Flute</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Drum 1 reconstruction</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>

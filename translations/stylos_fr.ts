@@ -743,6 +743,10 @@
         <source>Flute</source>
         <translation>Cannelure</translation>
     </message>
+    <message>
+        <source>Drum 1 reconstruction</source>
+        <translation>Reconstruction du tambour 1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>

@@ -173,7 +173,7 @@ void DemoSceneTest::generatesTheProject()
               static_cast<unsigned long long>(leaves), sum / double(leaves), lowest);
         QVERIFY(sum / double(leaves) > 0.3); // mostly open sky...
         QVERIFY(lowest < 0.8);               // ...with shadowed places (flutes, the net, fractures)
-        bounds.push_back(sceneBounds(*octree, f.pose));
+        bounds.push_back(sceneBounds(*octree, project->scene.worldPose(f.id)));
         const Bounds& b = bounds.back();
         qInfo("  scene bounds x [%.3f, %.3f] y [%.3f, %.3f] z [%.3f, %.3f]", b.lo[0], b.hi[0], b.lo[1], b.hi[1],
               b.lo[2], b.hi[2]);
@@ -195,8 +195,15 @@ void DemoSceneTest::generatesTheProject()
     }
     QCOMPARE(drum.guides[1].name, std::string("Flute 1"));
     QCOMPARE(bounds[0].hi[2] - bounds[0].lo[2] > 0.45, true); // half a metre high
+    // Fragment A is of the drum's design, in "Drum 1 reconstruction" docking against the drum, where the layout put it.
+    QCOMPARE(project->scene.assemblies().size(), 1u);
+    const auto& assembly = project->scene.assemblies()[0];
+    QCOMPARE(assembly.name, std::string("Drum 1 reconstruction"));
+    QCOMPARE(assembly.drum, drum.id);
+    QCOMPARE(project->scene.membersOf(assembly.id), std::vector<core::scene::FragmentId>{fragments[1].id});
+    QCOMPARE(fragments[1].pose, core::scene::Pose());
     // Fragment A upright, fragment B lying (its parent drum's axis now horizontal), the omphalos to the left.
-    QVERIFY(std::abs(fragments[1].pose(2, 2) - 1.0) < 1e-12);
+    QVERIFY(std::abs(project->scene.worldPose(fragments[1].id)(2, 2) - 1.0) < 1e-12);
     QVERIFY(std::abs(fragments[2].pose(2, 2)) < 1e-12);
     QCOMPARE(fragments[3].pose.translationPart(), (std::array<double, 3>{-1.4, 0.1, 0.0}));
     QVERIFY(bounds[3].hi[0] < bounds[0].lo[0]);

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 #include <limits>
 #include <memory>
 #include <numbers>
@@ -36,20 +37,23 @@ struct DemoObject {
     double azimuth = 0.0; ///< drum: centre of its broken region; fragment: centre of its sector (radians)
 };
 
-/** The same objects generateScan() makes for this kind and seed (same random draws, same order). */
+/** The same objects generateScan() makes for this kind, seed and design seed (same random draws, same order). */
 DemoObject makeObject(SyntheticKind kind, const SyntheticOptions& options)
 {
     Random random(options.seed);
+    std::optional<Random> design;
+    if (options.designSeed) design.emplace(*options.designSeed);
+    Random& drumRandom = design ? *design : random;
     DemoObject made;
     switch (kind) {
     case SyntheticKind::Drum: {
-        const DrumParameters drum = DrumParameters::fromOptions(options, random);
+        const DrumParameters drum = DrumParameters::fromOptions(options, drumRandom);
         made.azimuth = drum.brokenCentre;
         made.object = std::make_unique<DrumShape>(drum);
         break;
     }
     case SyntheticKind::Fragment: {
-        const DrumParameters drum = DrumParameters::fromOptions(options, random);
+        const DrumParameters drum = DrumParameters::fromOptions(options, drumRandom);
         const FragmentParameters fragment = FragmentParameters::random(drum, random);
         made.azimuth = fragment.thetaCentre;
         made.object = std::make_unique<FragmentShape>(drum, fragment);
@@ -162,6 +166,10 @@ std::optional<DemoFailure> generateDemoProject(const DemoRequest& request, Progr
     for (const DemoItem& item : request.items) total += itemWeight(item.kind);
     double done = 0.0;
     scene::Scene project;
+    const auto drumIt = std::find_if(request.items.begin(), request.items.end(),
+                                     [](const DemoItem& item) { return item.kind == SyntheticKind::Drum; });
+    const DemoItem* drumItem = drumIt != request.items.end() ? &*drumIt : nullptr;
+    scene::FragmentId drumId = scene::NoFragment, firstFragmentId = scene::NoFragment;
     for (std::size_t i = 0; i < request.items.size(); ++i) {
         const DemoItem& item = request.items[i];
         const double from = done / total, share = itemWeight(item.kind) / total;
@@ -175,6 +183,8 @@ std::optional<DemoFailure> generateDemoProject(const DemoRequest& request, Progr
         options.spacing = request.spacing;
         options.seed = item.seed;
         options.writeNormals = true;
+        // The fragments come from the demo's drum design, so they dock against its flutes.
+        if (item.kind == SyntheticKind::Fragment && drumItem) options.designSeed = drumItem->seed;
         const DemoObject made = makeObject(item.kind, options);
         {
             SubProgress sink = step(0.0, 0.5);
@@ -219,8 +229,19 @@ std::optional<DemoFailure> generateDemoProject(const DemoRequest& request, Progr
                                            {bottom * std::cos(a), bottom * std::sin(a), 0.0}, {0.0, 0.0, 1.0}});
             }
         }
-        project.add(std::move(fragment));
+        const scene::FragmentId added = project.add(std::move(fragment));
+        if (item.kind == SyntheticKind::Drum && drumId == scene::NoFragment) drumId = added;
+        if (item.kind == SyntheticKind::Fragment && firstFragmentId == scene::NoFragment) firstFragmentId = added;
         if (progress.isCancelRequested()) return cancelled(item.fileName);
+    }
+    // The first fragment in an assembly docking against the drum: ready for the Move tool's drum frame and
+    // Dock to flutes. Its frame is the fragment's, so the fragment stays where the layout put it.
+    if (drumId != scene::NoFragment && firstFragmentId != scene::NoFragment && !request.assemblyName.empty()) {
+        scene::Assembly assembly;
+        assembly.name = request.assemblyName;
+        assembly.pose = project.worldPose(firstFragmentId);
+        assembly.drum = drumId;
+        project.moveToAssembly(firstFragmentId, project.addAssembly(assembly));
     }
 
     // The stamp, then the project: the project file's existence is what makes the folder complete.

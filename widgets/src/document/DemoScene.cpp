@@ -131,6 +131,7 @@ bool DemoScene::prepare()
     request.stamp = stamp().toStdString();
     request.axisName = tr("Axis").toStdString();
     request.fluteName = tr("Flute").toStdString();
+    request.assemblyName = tr("Drum 1 reconstruction").toStdString();
     auto* watcher = m_tasks.start<Outcome>(
         tr("Preparing the demo scene"),
         [request = std::move(request)](QPromise<Outcome>& promise, core::ProgressSink& progress) {

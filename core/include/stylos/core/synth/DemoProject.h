@@ -9,6 +9,10 @@
  * Layout (scene frame: z up, the default view looking along +y): the drum at the origin, its broken
  * region turned toward the viewer; fragment A upright on the ground to its right, its fluted face toward
  * the viewer; fragment B lying on its inner face, fluted face up, behind it; the omphalos to the left.
+ * The drum carries its guides as designed (its axis and each flute's bottom line); the fragments are cut
+ * from the drum's design (its flute phase and radius), and fragment A sits in an assembly ("Drum 1
+ * reconstruction", its frame at fragment A's) that docks against the drum: ready to be moved to the drum
+ * with the Move tool and docked to its flutes.
  *
  * Progress is shared among the items by their measured cost; cancel is checked inside every step. On
  * failure or cancel every file written so far is removed again (scans go to a hidden scratch folder).
@@ -45,6 +49,8 @@ struct DemoRequest {
     std::string stamp;              ///< written to "demo.version"
     std::string axisName = "Axis";  ///< the drum's axis guide
     std::string fluteName = "Flute"; ///< the drum's flute guides: "Flute 1", "Flute 2"…
+    /** The assembly holding the first fragment, docking against the drum ("" for none). */
+    std::string assemblyName = "Drum 1 reconstruction";
 };
 
 /** @brief Why a generation stopped: the error (Cancelled when asked) and the file being made. */

@@ -47,7 +47,7 @@ class DemoScene : public QObject {
     /** @brief Sampling of the scans, metres (about 2.3 M points in all; ~10 s on 2 busy cores). */
     static constexpr double DefaultSpacing = 0.002;
     /** @brief Bumped whenever the generated files change; an older cache is regenerated. */
-    static constexpr int Version = 3;
+    static constexpr int Version = 4;
     /** @brief Skydome directions (a Fibonacci sphere). */
     static constexpr int SkyDirections = 96;
 
