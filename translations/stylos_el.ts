@@ -46,6 +46,14 @@
         <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
         <translation>Προσαρμογή των θραυσμάτων της συναρμολόγησης στους οδηγούς του επιλεγμένου θραύσματος</translation>
     </message>
+    <message>
+        <source>Dé&amp;veloppée of the assembly</source>
+        <translation>Ανά&amp;πτυγμα της συναρμολόγησης</translation>
+    </message>
+    <message>
+        <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
+        <translation>Ξετύλιγμα του τυμπάνου της συναρμολόγησης με κάθε θραύσμα της στη θέση του, στον άξονα του τυμπάνου: η αναστήλωση σε 2D, οι ελεύθερες θέσεις· κλικ σε ένα θραύσμα το επιλέγει</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::CommandLine</name>
@@ -134,6 +142,18 @@
     <message>
         <source>Développée of %1 cancelled</source>
         <translation>Το ανάπτυγμα του %1 ακυρώθηκε</translation>
+    </message>
+    <message>
+        <source>The développée of %1 needs a drum with an axis guide (Use as the assembly&apos;s drum)</source>
+        <translation>Το ανάπτυγμα του %1 χρειάζεται τύμπανο με οδηγό άξονα (Χρήση ως τύμπανο της συναρμολόγησης)</translation>
+    </message>
+    <message>
+        <source>The développée of %1 cannot start: its drum is still opening or busy</source>
+        <translation>Το ανάπτυγμα του %1 δεν μπορεί να ξεκινήσει: το τύμπανό του ανοίγει ακόμη ή είναι απασχολημένο</translation>
+    </message>
+    <message>
+        <source>Développée of %1: %2</source>
+        <translation>Ανάπτυγμα του %1: %2</translation>
     </message>
 </context>
 <context>
@@ -637,6 +657,13 @@
     <message>
         <source>Add %1</source>
         <translation>Προσθήκη %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AssemblyDeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation>Ανάπτυγμα του %1</translation>
     </message>
 </context>
 <context>

@@ -46,6 +46,14 @@
         <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Dé&amp;veloppée of the assembly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::CommandLine</name>
@@ -133,6 +141,18 @@
     <name>stylos::app::DeveloppeeLink</name>
     <message>
         <source>Développée of %1 cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The développée of %1 needs a drum with an axis guide (Use as the assembly&apos;s drum)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The développée of %1 cannot start: its drum is still opening or busy</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Développée of %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -636,6 +656,13 @@
     <name>stylos::widgets::AddFragmentCommand</name>
     <message>
         <source>Add %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AssemblyDeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

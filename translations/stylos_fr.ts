@@ -46,6 +46,14 @@
         <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
         <translation>Amarrer les fragments de l’assemblage contre les guides du fragment sélectionné</translation>
     </message>
+    <message>
+        <source>Dé&amp;veloppée of the assembly</source>
+        <translation>Dé&amp;veloppée de l’assemblage</translation>
+    </message>
+    <message>
+        <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
+        <translation>Dérouler le tambour de l’assemblage avec chaque fragment de l’assemblage à sa place, sur l’axe du tambour : la reconstruction en 2D, les places libres ; cliquer sur un fragment le sélectionne</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::CommandLine</name>
@@ -134,6 +142,18 @@
     <message>
         <source>Développée of %1 cancelled</source>
         <translation>Développée de %1 annulée</translation>
+    </message>
+    <message>
+        <source>The développée of %1 needs a drum with an axis guide (Use as the assembly&apos;s drum)</source>
+        <translation>La développée de %1 demande un tambour avec un guide d’axe (Utiliser comme tambour de l’assemblage)</translation>
+    </message>
+    <message>
+        <source>The développée of %1 cannot start: its drum is still opening or busy</source>
+        <translation>La développée de %1 ne peut pas démarrer : son tambour est encore en ouverture ou occupé</translation>
+    </message>
+    <message>
+        <source>Développée of %1: %2</source>
+        <translation>Développée de %1 : %2</translation>
     </message>
 </context>
 <context>
@@ -637,6 +657,13 @@
     <message>
         <source>Add %1</source>
         <translation>Ajouter %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AssemblyDeveloppeeJob</name>
+    <message>
+        <source>Développée of %1</source>
+        <translation>Développée de %1</translation>
     </message>
 </context>
 <context>

@@ -22,8 +22,12 @@ bool hasAxis(const core::scene::Fragment& f)
 
 AssemblyActions::AssemblyActions(widgets::SceneDocument& document, SceneDock& scene, QWidget& window)
     : QObject(&window), m_document(document), m_scene(scene), m_new(new QAction(this)), m_takeOut(new QAction(this)),
-      m_remove(new QAction(this)), m_useAsDrum(new QAction(this))
+      m_remove(new QAction(this)), m_useAsDrum(new QAction(this)), m_developpee(new QAction(this))
 {
+    m_developpee->setObjectName(QStringLiteral("actionAssemblyDeveloppee"));
+    connect(m_developpee, &QAction::triggered, this, [this] {
+        if (const auto id = currentAssembly(); id != core::scene::NoAssembly) Q_EMIT developpeeRequested(id);
+    });
     m_new->setObjectName(QStringLiteral("actionNewAssembly"));
     m_takeOut->setObjectName(QStringLiteral("actionTakeOutOfAssembly"));
     m_remove->setObjectName(QStringLiteral("actionRemoveAssembly"));
@@ -44,7 +48,7 @@ AssemblyActions::AssemblyActions(widgets::SceneDocument& document, SceneDock& sc
 void AssemblyActions::populate(QMenu& menu)
 {
     menu.addSeparator();
-    for (QAction* action : {m_new, m_takeOut, m_remove, m_useAsDrum}) {
+    for (QAction* action : {m_new, m_takeOut, m_remove, m_useAsDrum, m_developpee}) {
         menu.addAction(action);
         m_scene.view()->addAction(action);
     }
@@ -63,6 +67,16 @@ void AssemblyActions::updateEnabled()
     m_takeOut->setEnabled(inAssembly);
     m_remove->setEnabled(m_scene.currentAssembly() != core::scene::NoAssembly);
     m_useAsDrum->setEnabled(current && assembly && hasAxis(*current) && assembly->drum != current->id);
+    const auto* chosen = m_document.assembly(currentAssembly());
+    const auto* drum = chosen ? m_document.fragment(chosen->drum) : nullptr;
+    m_developpee->setEnabled(drum && hasAxis(*drum));
+}
+
+core::scene::AssemblyId AssemblyActions::currentAssembly() const
+{
+    if (const auto id = m_scene.currentAssembly(); id != core::scene::NoAssembly) return id;
+    const auto* f = m_document.fragment(m_scene.currentFragment());
+    return f ? f->assembly : core::scene::NoAssembly;
 }
 
 void AssemblyActions::newAssembly()
@@ -111,6 +125,9 @@ void AssemblyActions::retranslateUi()
     m_remove->setStatusTip(tr("Dissolve the selected assembly; its fragments stay where they are"));
     m_useAsDrum->setText(tr("&Use as the assembly's drum"));
     m_useAsDrum->setStatusTip(tr("Dock the assembly's fragments against the guides of the selected fragment"));
+    m_developpee->setText(tr("Dé&veloppée of the assembly"));
+    m_developpee->setStatusTip(tr("Unroll the assembly's drum with every fragment of the assembly at its place, on the "
+                                  "drum's axis: the reconstruction in 2D, the free places; click a fragment to select it"));
 }
 
 } // namespace stylos::app

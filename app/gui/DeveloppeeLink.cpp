@@ -2,6 +2,7 @@
 
 #include "stylos/core/scene/SceneEigen.h"
 
+#include "stylos/widgets/developpee/AssemblyDeveloppeeJob.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
@@ -71,6 +72,7 @@ DeveloppeeLink::DeveloppeeLink(widgets::SceneDocument& document, widgets::Develo
     });
     connect(&dock, &widgets::DeveloppeePanel::computeRequested, this, &DeveloppeeLink::compute);
     connect(dock.view(), &widgets::DeveloppeeView::pointPicked, this, &DeveloppeeLink::markInView);
+    connect(dock.view(), &widgets::DeveloppeeView::piecePicked, this, &DeveloppeeLink::fragmentPicked);
     if (viewport)
         connect(viewport, &widgets::ViewportWidget::pointPicked, this,
                 [this](const Eigen::Vector3d& p, quint64 id) { markInDeveloppee(p, id); });
@@ -126,6 +128,50 @@ void DeveloppeeLink::compute()
         else Q_EMIT finished(result.error, true);
     };
     if (m_jobs.start<widgets::DeveloppeeResult>(id, job.label(), job, deliver)) m_dock.setBusy(true);
+}
+
+bool DeveloppeeLink::computeAssembly(core::scene::AssemblyId id)
+{
+    const core::scene::Assembly* assembly = m_document.assembly(id);
+    if (!assembly) return false;
+    const QString name = QString::fromStdString(assembly->name);
+    const core::scene::Fragment* drum = m_document.fragment(assembly->drum);
+    const auto axis = drum ? core::scene::firstGuide(*drum, core::scene::GuideKind::Axis) : std::nullopt;
+    if (!axis) {
+        Q_EMIT finished(tr("The développée of %1 needs a drum with an axis guide (Use as the assembly's drum)").arg(name), true);
+        return false;
+    }
+    const core::scene::FragmentId drumId = drum->id;
+    const Eigen::Isometry3d drumWorld(core::scene::toEigen(m_document.worldPose(drumId)));
+    std::vector<widgets::AssemblyDeveloppeeJob::Piece> pieces;
+    for (core::scene::FragmentId member : m_document.scene().membersOf(id)) {
+        if (member == drumId) continue;
+        const core::scene::Fragment* f = m_document.fragment(member);
+        if (!f || !m_document.octree(member) || !m_document.isShown(member)) continue;
+        const Eigen::Isometry3d world(core::scene::toEigen(m_document.worldPose(member)));
+        pieces.push_back({QString::fromStdString(f->octreePath.string()), drumWorld.inverse() * world, member});
+    }
+    if (!m_document.octree(drumId) || m_jobs.isRunning(drumId)) {
+        Q_EMIT finished(tr("The développée of %1 cannot start: its drum is still opening or busy").arg(name), true);
+        return false;
+    }
+    const widgets::AssemblyDeveloppeeJob job(QString::fromStdString(drum->octreePath.string()), drumId,
+                                             core::unroll::Axis{axis->origin, axis->direction}, std::move(pieces),
+                                             m_dock.settings(), name);
+    const auto deliver = [this, name](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
+        if (future.resultCount() == 0) {
+            Q_EMIT finished(tr("Développée of %1 cancelled").arg(name), false);
+            return;
+        }
+        const widgets::DeveloppeeResult result = future.result();
+        if (result.ok()) m_document.setDeveloppee(key, std::make_shared<const widgets::DeveloppeeResult>(result));
+        m_dock.showResult(result);
+        if (result.ok()) Q_EMIT finished(tr("Développée of %1: %2").arg(name, widgets::DeveloppeePanel::fitSummary(result)), false);
+        else Q_EMIT finished(result.error, true);
+    };
+    const bool started = m_jobs.start<widgets::DeveloppeeResult>(drumId, job.label(), job, deliver);
+    if (started) m_dock.setBusy(true);
+    return started;
 }
 
 void DeveloppeeLink::markInView(quint64 fragmentId, const Eigen::Vector3d& octreePoint)

@@ -10,6 +10,7 @@
  *        project, or the fragment's removal, cancels them, and a result whose fragment or octree file is no
  *        longer the one it was computed for is dropped. GUI thread only.
  */
+#include "stylos/core/scene/Assembly.h"
 #include "stylos/core/scene/Fragment.h"
 #include "stylos/widgets/tasks/FragmentJobs.h"
 
@@ -45,12 +46,21 @@ public:
 
     /** @brief Computes the développée of the dock's fragment with the dock's settings (as Compute does). */
     void compute();
+    /**
+     * @brief Computes the développée of assembly @p id — its drum's, with every other member unrolled on the
+     *        drum's axis guide at its place (AssemblyDeveloppeeJob) — shown in the dock and kept as the drum's.
+     *        False, with finished(failed) saying why, when the assembly has no drum with an axis guide or an
+     *        octree is not open.
+     */
+    bool computeAssembly(core::scene::AssemblyId id);
     /** @brief True while a développée of @p id computes. */
     bool isComputing(core::scene::FragmentId id) const { return m_jobs.isRunning(id); }
 
 Q_SIGNALS:
     /** @brief A computation ended: @p message says what was made (or why not, @p failed). Translated. */
     void finished(const QString& message, bool failed);
+    /** @brief A fragment was picked in an assembly's développée: select it. */
+    void fragmentPicked(quint64 id);
 
 private:
     void markInView(quint64 fragmentId, const Eigen::Vector3d& octreePoint);

@@ -143,6 +143,14 @@ void MainWindow::createMenus()
     m_assemblies = new AssemblyActions(*m_document, *m_sceneDock, *this);
     m_assemblies->populate(*m_actions->toolsMenu());
     connect(m_assemblies, &AssemblyActions::reported, this, &MainWindow::report);
+    connect(m_assemblies, &AssemblyActions::developpeeRequested, this, [this](quint64 id) {
+        if (m_developpeeLink->computeAssembly(id)) {
+            m_developpeeDock->show();
+            m_developpeeDock->raise();
+        }
+    });
+    connect(m_developpeeLink, &DeveloppeeLink::fragmentPicked, this,
+            [this](quint64 id) { m_sceneDock->selectFragment(core::scene::FragmentId(id)); });
     m_propertiesDock->addContactReadout(m_docking->contact());
 
     m_toolBar = addToolBar(QString());

@@ -14,6 +14,7 @@
 #include "Translations.h"
 #include "WidgetTestSupport.h"
 #include "stylos/core/scene/ProjectFile.h"
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/ScanImporter.h"
@@ -27,6 +28,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QSettings>
+#include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QItemSelectionModel>
 #include <QTreeView>
@@ -246,7 +248,12 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     const auto ids = document.scene().membersOf(core::scene::NoAssembly);
     QCOMPARE(ids.size(), 3u);
     // Two selected, the drum with its axis among them: a new assembly (Ctrl+G) docking against it.
-    QVERIFY(document.setFragmentGuides(ids[0], {{"Axis", core::scene::GuideKind::Axis, {0, 0, 0}, {0, 0, 1}}}));
+    const auto& trueAxis = m_drum.truth.at("axis");
+    const std::array<double, 3> axisPoint{trueAxis["point"][0], trueAxis["point"][1], trueAxis["point"][2]};
+    Eigen::Vector3d axisDir(trueAxis["direction"][0], trueAxis["direction"][1], trueAxis["direction"][2]);
+    axisDir.normalize();
+    QVERIFY(document.setFragmentGuides(
+        ids[0], {{"Axis", core::scene::GuideKind::Axis, axisPoint, {axisDir.x(), axisDir.y(), axisDir.z()}}}));
     QTreeView* view = window->sceneDock().view();
     QItemSelection selection;
     for (auto id : {ids[0], ids[1]}) {
@@ -272,16 +279,35 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     const auto offered = window->developpeePanel().axisGuide();
     QVERIFY(offered.has_value());
     const core::scene::Pose toMember = document.worldPose(ids[1]).rigidInverse() * document.worldPose(ids[0]);
-    const auto expectedPoint = toMember.apply({0, 0, 0});
+    const auto expectedPoint = toMember.apply(axisPoint);
     QVERIFY(std::abs(expectedPoint[0]) > 0.1); // not the identity
     for (int k = 0; k < 3; ++k) QVERIFY(std::abs(offered->point[k] - expectedPoint[k]) < 1e-12);
+
+    // The assembly's développée: the drum's, with the member drawn at its place (here the same drum turned
+    // about its axis, so on its surface everywhere: it covers the drum's développée).
+    const Eigen::Vector3d a(axisPoint[0], axisPoint[1], axisPoint[2]);
+    const Eigen::Isometry3d turn(Eigen::Translation3d(a) * Eigen::AngleAxisd(0.3, axisDir) * Eigen::Translation3d(-a));
+    QVERIFY(document.setFragmentWorldPose(ids[1], core::scene::poseFromEigen(turn.matrix())));
+    QAction* unroll = window->assemblies().developpeeAction();
+    window->sceneDock().view()->setCurrentIndex(window->sceneDock().model()->indexOfAssembly(assembly.id));
+    QVERIFY(unroll->isEnabled());
+    unroll->trigger();
+    widgets::DeveloppeeView* dview = window->developpeePanel().view();
+    QTRY_VERIFY_WITH_TIMEOUT(dview->hasDeveloppee() && dview->fragmentId() == ids[0], 60000);
+    std::size_t owned = 0, pixels = 0;
+    for (int r = 0; r < dview->map()->height(); ++r)
+        for (int c = 0; c < dview->map()->width(); ++c, ++pixels) owned += dview->pieceAt(c, r) == ids[1];
+    QVERIFY2(owned > pixels / 2, qPrintable(QString("%1 of %2").arg(owned).arg(pixels)));
+    dview->setPieces(nullptr);
+    QCOMPARE(dview->pieceAt(0, 0), 0u); // none without pieces
 
     // Moving the assembly moves both members in the view, not the third.
     widgets::ViewportWidget* viewport = window->viewport();
     const auto shift = core::scene::Pose::translation({0, 0, 2});
+    const double z1 = document.worldPose(ids[1])(2, 3);
     QVERIFY(document.setAssemblyPose(assembly.id, shift * assembly.pose));
     if (viewport) {
-        QTRY_VERIFY(viewport->fragments().size() == 3 && viewport->fragments()[1].pose(2, 3) == 2.0);
+        QTRY_VERIFY(viewport->fragments().size() == 3 && std::abs(viewport->fragments()[1].pose(2, 3) - (z1 + 2.0)) < 1e-12);
         QCOMPARE(viewport->fragments()[0].pose(2, 3), 2.0);
         QCOMPARE(viewport->fragments()[2].pose(2, 3), 0.0);
     }

@@ -23,6 +23,7 @@ constexpr double WheelStep = 1.25;    ///< zoom factor of one wheel notch (120 e
 const QColor Background(48, 48, 48);
 const QColor MarkerColour(255, 96, 32);
 const QColor GuideColour(120, 190, 255); // as the flute lines in 3D
+const QColor OutlineColour(255, 210, 0);  // the outline of a fragment in an assembly's développée
 
 /** 1, 2 or 5 × a power of ten, the largest not over @p value (> 0). */
 double niceLength(double value)
@@ -58,6 +59,7 @@ void DeveloppeeView::setDeveloppee(quint64 fragmentId, const QImage& image,
     m_pixmap = QPixmap::fromImage(image);
     m_heights = std::move(heights);
     m_map = map;
+    setPieces(nullptr);
     fitToWindow();
     setReadout({});
 }
@@ -66,7 +68,42 @@ bool DeveloppeeView::setResult(const DeveloppeeResult& result)
 {
     if (!result.ok() || !result.heights) return false;
     setDeveloppee(result.fragmentId, result.image, result.heights, *result.map);
+    setPieces(result.pieceAt);
     return true;
+}
+
+void DeveloppeeView::setPieces(std::shared_ptr<const std::vector<std::uint64_t>> pieceAt)
+{
+    m_pieceAt = m_map && pieceAt && pieceAt->size() == std::size_t(m_image.width()) * std::size_t(m_image.height())
+                    ? std::move(pieceAt)
+                    : nullptr;
+    m_outline = {};
+    if (m_pieceAt) {
+        // Each piece's outline: its pixels with a 4-neighbour that is not the same piece.
+        const int w = m_image.width(), h = m_image.height();
+        m_outline = QImage(w, h, QImage::Format_ARGB32_Premultiplied);
+        m_outline.fill(Qt::transparent);
+        const auto& at = *m_pieceAt;
+        for (int row = 0; row < h; ++row) {
+            auto* line = reinterpret_cast<QRgb*>(m_outline.scanLine(row));
+            for (int column = 0; column < w; ++column) {
+                const std::uint64_t id = at[std::size_t(row) * w + column];
+                if (id == 0) continue;
+                const auto other = [&](int c, int r) {
+                    return c < 0 || r < 0 || c >= w || r >= h || at[std::size_t(r) * w + c] != id;
+                };
+                if (other(column - 1, row) || other(column + 1, row) || other(column, row - 1) || other(column, row + 1))
+                    line[column] = OutlineColour.rgba();
+            }
+        }
+    }
+    update();
+}
+
+std::uint64_t DeveloppeeView::pieceAt(int column, int row) const
+{
+    if (!m_pieceAt || column < 0 || row < 0 || column >= m_image.width() || row >= m_image.height()) return 0;
+    return (*m_pieceAt)[std::size_t(row) * std::size_t(m_image.width()) + std::size_t(column)];
 }
 
 void DeveloppeeView::clear()
@@ -76,6 +113,8 @@ void DeveloppeeView::clear()
     m_pixmap = {};
     m_heights.reset();
     m_map.reset();
+    m_pieceAt.reset();
+    m_outline = {};
     m_autoFit = true;
     setReadout({});
     update();
@@ -185,6 +224,7 @@ void DeveloppeeView::paintEvent(QPaintEvent*)
         const QRectF target(imageToWidget(source.topLeft()), QSizeF(source.width(), source.height()) * m_zoom);
         painter.setRenderHint(QPainter::SmoothPixmapTransform, m_zoom < 1.0);
         painter.drawPixmap(target, m_pixmap, QRectF(source));
+        if (!m_outline.isNull()) painter.drawImage(target, m_outline, QRectF(source));
     }
     painter.setPen(QColor(96, 96, 96));
     painter.drawRect(QRectF(m_offset, QSizeF(m_pixmap.size()) * m_zoom));
@@ -326,7 +366,9 @@ void DeveloppeeView::mouseReleaseEvent(QMouseEvent* event)
     setCursor(Qt::CrossCursor);
     if (!click || !hasDeveloppee()) return;
     const QPointF image = widgetToImage(event->position());
-    const auto point = pointAtPixel(int(std::floor(image.x())), int(std::floor(image.y())));
+    const int column = int(std::floor(image.x())), row = int(std::floor(image.y()));
+    if (const std::uint64_t piece = pieceAt(column, row)) Q_EMIT piecePicked(piece);
+    const auto point = pointAtPixel(column, row);
     if (!point) return;
     m_marker = point;
     update();

@@ -29,6 +29,7 @@
 
 #include <memory>
 #include <optional>
+#include <vector>
 
 namespace stylos::widgets {
 
@@ -50,6 +51,9 @@ struct DeveloppeeResult {
     std::optional<core::unroll::UnrollMap> map; ///< pixel ↔ 3D (octree frame); empty on failure
     core::unroll::FitReport fit;
     core::unroll::UnrollReport unroll;
+    /** An assembly's développée (AssemblyDeveloppeeJob): the fragment each pixel shows (row-major, the image's
+     *  size; 0 for the drum or none); null for one fragment's. */
+    std::shared_ptr<const std::vector<std::uint64_t>> pieceAt;
     DeveloppeeTimings timings;
     /** Empty on success; a translated message naming the file and the reason otherwise. */
     QString error;

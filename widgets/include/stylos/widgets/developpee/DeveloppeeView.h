@@ -94,6 +94,12 @@ public:
      *         lines the map cannot place are left out. Empty without a développée. */
     std::vector<double> guideColumns() const;
 
+    /** @brief An assembly's développée: the fragment each pixel shows (row-major, the image's size; 0: none),
+     *         outlined in yellow; a click on one emits piecePicked(). Null (or the wrong size) for none. */
+    void setPieces(std::shared_ptr<const std::vector<std::uint64_t>> pieceAt);
+    /** @brief The fragment pixel (@p column, @p row) shows; 0 for none. */
+    std::uint64_t pieceAt(int column, int row) const;
+
     /** @brief Marks @p point (octree frame, metres); empty hides the marker. */
     void setMarker(const std::optional<Eigen::Vector3d>& point);
     std::optional<Eigen::Vector3d> marker() const { return m_marker; }
@@ -111,6 +117,8 @@ public:
 Q_SIGNALS:
     /** @brief A click on pixel (c, r) of fragment @p fragmentId: its 3D point (octree frame), see pointAtPixel(). */
     void pointPicked(quint64 fragmentId, const Eigen::Vector3d& point);
+    /** @brief A click on a fragment's pixels in an assembly's développée (setPieces()). */
+    void piecePicked(quint64 fragmentId);
     /** @brief The readout under the cursor changed (empty when the cursor left the image). */
     void readoutChanged(const QString& text);
 
@@ -141,6 +149,8 @@ private:
     std::optional<core::unroll::UnrollMap> m_map;
     std::optional<Eigen::Vector3d> m_marker;
     std::vector<GuideLine> m_guideLines;
+    std::shared_ptr<const std::vector<std::uint64_t>> m_pieceAt;
+    QImage m_outline; ///< the pieces' outlines over the image, transparent elsewhere
     QString m_placeholder;
     QString m_readout;
 

@@ -1,0 +1,47 @@
+#pragma once
+/** @file
+ * @brief The développée of an assembly in the background: the drum's and its docked fragments' octrees read
+ *        as one point per leaf, the fragments carried into the drum's frame by where they stand in the scene,
+ *        and core::developpee::computeAssemblyDeveloppee about the drum's axis guide. The result is the
+ *        drum's DeveloppeeResult (its octree's frame; fragmentId the drum) with pieceAt saying which fragment
+ *        each pixel shows. Thread-safety: the job is a value; run() is reentrant and touches no widget.
+ */
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
+
+#include <Eigen/Geometry>
+
+#include <vector>
+
+namespace stylos::widgets {
+
+class AssemblyDeveloppeeJob {
+    Q_DECLARE_TR_FUNCTIONS(stylos::widgets::AssemblyDeveloppeeJob)
+
+public:
+    /** @brief A fragment of the assembly: its octree and where it stands in the drum's frame. */
+    struct Piece {
+        QString octreePath;
+        Eigen::Isometry3d toDrum = Eigen::Isometry3d::Identity();
+        quint64 fragmentId = 0;
+    };
+
+    /** @p axis: the drum's axis guide, in its octree's frame. */
+    AssemblyDeveloppeeJob(QString drumPath, quint64 drumId, core::unroll::Axis axis, std::vector<Piece> pieces,
+                          DeveloppeeSettings settings, QString assemblyName);
+
+    /** @brief "Développée of NAME" (the assembly's name, translated), the task's label. */
+    QString label() const;
+    void operator()(QPromise<DeveloppeeResult>& promise, core::ProgressSink& progress) const;
+    /** @brief Runs on the calling thread. Errors: the core's, naming the file. */
+    core::Result<DeveloppeeResult> run(core::ProgressSink* progress = nullptr) const;
+
+private:
+    QString m_drumPath;
+    quint64 m_drumId;
+    core::unroll::Axis m_axis;
+    std::vector<Piece> m_pieces;
+    DeveloppeeSettings m_settings;
+    QString m_name;
+};
+
+} // namespace stylos::widgets

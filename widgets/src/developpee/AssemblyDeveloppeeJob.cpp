@@ -1,0 +1,75 @@
+#include "stylos/widgets/developpee/AssemblyDeveloppeeJob.h"
+
+#include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/core/developpee/AssemblyDeveloppee.h"
+#include "stylos/core/util/SubProgress.h"
+
+#include "tasks/JobResult.h"
+
+#include <utility>
+
+namespace stylos::widgets {
+
+AssemblyDeveloppeeJob::AssemblyDeveloppeeJob(QString drumPath, quint64 drumId, core::unroll::Axis axis,
+                                             std::vector<Piece> pieces, DeveloppeeSettings settings, QString assemblyName)
+    : m_drumPath(std::move(drumPath)), m_drumId(drumId), m_axis(std::move(axis)), m_pieces(std::move(pieces)),
+      m_settings(std::move(settings)), m_name(std::move(assemblyName))
+{
+}
+
+QString AssemblyDeveloppeeJob::label() const { return tr("Développée of %1").arg(m_name); }
+
+core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* progress) const
+{
+    const std::string source = m_drumPath.toStdString();
+    if (const QString problem = m_settings.problem(); !problem.isEmpty())
+        return core::Error{core::ErrorCode::InvalidArgument, source + ": " + problem.toStdString()};
+    core::SubProgress reading(progress, 0.0, 0.2);
+    auto drum = core::cloud::loadPointCloud(source, {}, &reading);
+    if (!drum) return drum.error();
+    drum->source = source;
+    std::vector<core::cloud::PointCloud> clouds;
+    clouds.reserve(m_pieces.size());
+    for (const Piece& p : m_pieces) {
+        auto cloud = core::cloud::loadPointCloud(p.octreePath.toStdString());
+        if (!cloud) return cloud.error();
+        clouds.push_back(std::move(cloud).value());
+    }
+    std::vector<core::developpee::AssemblyPiece> pieces;
+    for (std::size_t k = 0; k < m_pieces.size(); ++k) pieces.push_back({&clouds[k], m_pieces[k].toDrum, m_pieces[k].fragmentId});
+    core::developpee::DeveloppeeOptions options = m_settings.options();
+    options.axis = m_axis;
+    core::SubProgress computing(progress, 0.2, 0.97);
+    auto made = core::developpee::computeAssemblyDeveloppee(*drum, pieces, options, progress ? &computing : nullptr);
+    if (!made) return made.error();
+    DeveloppeeResult result;
+    result.fragmentId = m_drumId;
+    result.octreePath = m_drumPath;
+    result.settings = m_settings;
+    result.image = DeveloppeeJob::toImage(made->developpee.shaded);
+    result.fit = made->developpee.fit;
+    result.unroll = made->developpee.unroll;
+    result.timings = made->developpee.timings;
+    result.heights = std::make_shared<const core::shading::HeightField>(std::move(made->developpee.field));
+    result.shaded = std::make_shared<const core::shading::ShadedImage>(std::move(made->developpee.shaded));
+    result.map = std::move(made->developpee.map);
+    result.pieceAt = std::make_shared<const std::vector<std::uint64_t>>(std::move(made->pieceAt));
+    if (progress) progress->update(1.0);
+    return result;
+}
+
+void AssemblyDeveloppeeJob::operator()(QPromise<DeveloppeeResult>& promise, core::ProgressSink& progress) const
+{
+    deliverJobResult(promise, progress, [this](core::ProgressSink* sink) { return run(sink); },
+                     [this](const core::Error& error) {
+        DeveloppeeResult failed;
+        failed.fragmentId = m_drumId;
+        failed.octreePath = m_drumPath;
+        failed.settings = m_settings;
+        failed.error = DeveloppeeJob::errorText(m_drumPath, error);
+        failed.errorCode = error.code;
+        return failed;
+    });
+}
+
+} // namespace stylos::widgets
