@@ -16,7 +16,7 @@ using stylos::test::TempDir;
 
 namespace {
 
-const std::vector<std::string> CommandNames{"info", "generate", "normals", "build", "unroll", "ao"};
+const std::vector<std::string> CommandNames{"info", "generate", "normals", "build", "unroll", "ao", "annotate", "export"};
 
 std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
