@@ -13,5 +13,7 @@ int runUnroll(const std::vector<std::string>& args);
 int runAo(const std::vector<std::string>& args);
 int runGuides(const std::vector<std::string>& args);
 int runDock(const std::vector<std::string>& args);
+int runAnnotate(const std::vector<std::string>& args);
+int runExport(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

@@ -28,6 +28,8 @@ constexpr Command Commands[] = {
     {"ao", runAo, "ao IN -o OUT.ply|poct", "3D skydome (ambient occlusion) of the octree's cells"},
     {"guides", runGuides, "guides DRUM -o G.json", "guides of an intact drum: axis, leading radius, flutes and their lines"},
     {"dock", runDock, "dock FRAGMENT --drum DRUM", "dock a fragment against a drum's guides: flute snap and registration"},
+    {"annotate", runAnnotate, "annotate IN.poct ...", "label the leaves from a label raster painted on a développée"},
+    {"export", runExport, "export IN.poct -o OUT.ply", "one point per leaf with its annotation and ambient layers"},
 };
 
 void printUsage()

@@ -16,7 +16,7 @@ using stylos::test::TempDir;
 
 namespace {
 
-const std::vector<std::string> CommandNames{"info", "generate", "normals", "build", "unroll", "ao"};
+const std::vector<std::string> CommandNames{"info", "generate", "normals", "build", "unroll", "ao", "annotate", "export"};
 
 std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n'); }
 
@@ -60,7 +60,7 @@ TEST(CliCommandLine, HelpOnEveryCommandPrintsTheUsageAndExitsZero)
 
 TEST(CliCommandLine, NoCommandOrAnUnknownOneIsOneLine)
 {
-    const std::string commands = " (commands: info, generate, normals, build, unroll, ao, guides, dock; stylos-cli --help for details)";
+    const std::string commands = " (commands: info, generate, normals, build, unroll, ao, guides, dock, annotate, export; stylos-cli --help for details)";
     expectUsageLine(runCli({}), "stylos-cli: no command given" + commands);
     expectUsageLine(runCli({"frobnicate"}), "stylos-cli: unknown command \"frobnicate\"" + commands);
 }

@@ -32,8 +32,8 @@ enum class AttributeType : std::uint8_t { UInt8 = 1, UInt16 = 2, Float32 = 3 };
  * @brief A per-leaf attribute layer: `components` values of `type` per leaf, in leaf order
  *        (breadth-first order of the leaf level). `bytes` holds leaves × components × size(type) bytes,
  *        little-endian. Names are ASCII, 1..15 characters, unique in a file; "colour" (UInt8 × 3) is the
- *        average RGB the builders write; "ambient" and "class" are reserved for ambient occlusion
- *        and annotation classes.
+ *        average RGB the builders write; "ambient" (Float32) holds ambient occlusion and
+ *        "material" / "toolmark" (UInt8) the annotation class ids (core/annotation/LeafLabels.h).
  */
 struct AttributeLayer {
     std::string name;

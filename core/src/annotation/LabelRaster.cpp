@@ -1,0 +1,189 @@
+// Label rasters on a développée's grid: 8-bit PNG/TIFF files, checks, and the transfer to and from leaves.
+#include "stylos/core/annotation/LabelRaster.h"
+
+#include "../image/TemporaryImageFile.h"
+
+#include <OpenImageIO/imageio.h>
+
+#include <Eigen/Core>
+
+#include <algorithm>
+#include <cassert>
+#include <cctype>
+#include <cmath>
+#include <cstdio>
+
+namespace stylos::core::annotation {
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string lowerExtension(const fs::path& path)
+{
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+bool isRasterExtension(const fs::path& path)
+{
+    const std::string ext = lowerExtension(path);
+    return ext == ".png" || ext == ".tif" || ext == ".tiff";
+}
+
+std::string pixelText(std::size_t index, int width)
+{
+    return "pixel (" + std::to_string(index % std::size_t(width)) + ", " + std::to_string(index / std::size_t(width)) + ")";
+}
+
+} // namespace
+
+Result<LabelRaster> readLabelRaster(const fs::path& path)
+{
+    const std::string name = path.string();
+    std::error_code error;
+    const auto status = fs::status(path, error);
+    if (!fs::exists(status)) return Error::at(ErrorCode::NotFound, name, {}, "no such file");
+    if (fs::is_directory(status)) return Error::at(ErrorCode::Unreadable, name, {}, "is a directory");
+    if (!isRasterExtension(path)) return Error::at(ErrorCode::UnknownFormat, name, {}, "a label raster must be .png or .tif");
+    auto in = OIIO::ImageInput::open(name);
+    if (!in) return Error::at(ErrorCode::Unreadable, name, {}, "cannot read the image: " + OIIO::geterror());
+    const OIIO::ImageSpec& spec = in->spec();
+    if (spec.format != OIIO::TypeDesc::UINT8)
+        return Error::at(ErrorCode::Unsupported, name, {}, "a label raster has 8-bit samples, not " + std::string(spec.format.c_str()));
+    if (spec.nchannels != 1 && !(spec.nchannels == 2 && spec.alpha_channel == 1))
+        return Error::at(ErrorCode::Unsupported, name, {},
+                         std::to_string(spec.nchannels) + " channels: a label raster is one grey channel of class ids, not colours");
+    if (spec.width < 1 || spec.height < 1 || spec.depth > 1) return Error::at(ErrorCode::Unsupported, name, {}, "not a 2D image");
+    LabelRaster raster(spec.width, spec.height);
+    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, raster.ids.data()))
+        return Error::at(ErrorCode::Unreadable, name, {}, "cannot read the pixels: " + in->geterror());
+    return raster;
+}
+
+Status writeLabelRaster(const LabelRaster& raster, const fs::path& path, double pixelSize)
+{
+    const std::string name = path.string();
+    if (!isRasterExtension(path)) return Error::at(ErrorCode::InvalidArgument, name, {}, "a label raster must be .png or .tif");
+    if (raster.width < 1 || raster.height < 1 || raster.ids.size() != std::size_t(raster.width) * std::size_t(raster.height))
+        return Error::at(ErrorCode::InvalidArgument, name, {}, "an empty or inconsistent label raster");
+    if (!(pixelSize > 0) || !std::isfinite(pixelSize))
+        return Error::at(ErrorCode::InvalidArgument, name, {}, "the pixel size must be positive and finite");
+    auto temporary = image::TemporaryImageFile::beside(path);
+    if (!temporary) return temporary.error();
+    OIIO::ImageSpec spec(raster.width, raster.height, 1, OIIO::TypeDesc::UINT8);
+    spec.channelnames = {"Y"};
+    char size[64];
+    std::snprintf(size, sizeof size, "%.17g", pixelSize);
+    spec.attribute("stylos:content", "labels");
+    spec.attribute("stylos:pixel_size_m", size);
+    spec.attribute("Software", "Stylos");
+    if (lowerExtension(path) == ".png") {
+        spec.attribute("png:compressionLevel", 6);
+        spec.attribute("XResolution", float(0.0254 / pixelSize));
+        spec.attribute("YResolution", float(0.0254 / pixelSize));
+        spec.attribute("ResolutionUnit", "inch");
+    } else {
+        spec.attribute("compression", "zip");
+        spec.attribute("XResolution", float(0.01 / pixelSize));
+        spec.attribute("YResolution", float(0.01 / pixelSize));
+        spec.attribute("ResolutionUnit", "cm");
+        spec.attribute("ImageDescription", std::string("stylos:content=labels\nstylos:pixel_size_m=") + size);
+    }
+    {
+        auto out = OIIO::ImageOutput::create(temporary->path().string());
+        if (!out || !out->open(temporary->path().string(), spec))
+            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + (out ? out->geterror() : OIIO::geterror()));
+        if (!out->write_image(OIIO::TypeDesc::UINT8, raster.ids.data()) || !out->close())
+            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + out->geterror());
+    }
+    return temporary->commit();
+}
+
+Status checkLabelRaster(const LabelRaster& raster, const std::string& rasterName, const unroll::UnrollMap& map,
+                        const std::string& mapName, const Legend& legend, AnnotationLayer layer)
+{
+    if (raster.width != map.width() || raster.height != map.height())
+        return Error::at(ErrorCode::InvalidArgument, rasterName, {},
+                         std::to_string(raster.width) + " x " + std::to_string(raster.height) + " pixels, but the map " +
+                             mapName + " is " + std::to_string(map.width()) + " x " + std::to_string(map.height()));
+    std::array<bool, 256> known{};
+    known[0] = true;
+    for (const LegendClass& c : legend.classes(layer)) known[c.id] = true;
+    for (std::size_t i = 0; i < raster.ids.size(); ++i)
+        if (!known[raster.ids[i]])
+            return Error::at(ErrorCode::InvalidArgument, rasterName, pixelText(i, raster.width),
+                             "class id " + std::to_string(raster.ids[i]) + " is not in the " + layerName(layer) +
+                                 " legend");
+    return {};
+}
+
+Result<std::vector<std::int64_t>> leafPixels(const octree::PackedOctree& octree, const unroll::UnrollMap& map,
+                                             ProgressSink* progress)
+{
+    const std::uint64_t leaves = octree.cellCount(octree.depth());
+    std::vector<std::int64_t> pixels(leaves, -1);
+    bool cancelled = false;
+    octree.forEachCell(octree.depth(), [&](const octree::CellView& cell) {
+        const auto hit = map.pixelOf(Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]));
+        if (hit) {
+            const double c = std::floor(hit->column), r = std::floor(hit->row);
+            if (c >= 0 && r >= 0 && c < map.width() && r < map.height())
+                pixels[cell.index] = std::int64_t(r) * map.width() + std::int64_t(c);
+        }
+        if (progress && (cell.index & 0xFFFF) == 0) {
+            progress->update(double(cell.index) / double(leaves));
+            if (progress->isCancelRequested()) return !(cancelled = true);
+        }
+        return true;
+    });
+    if (cancelled) return Error::at(ErrorCode::Cancelled, octree.path().string(), {}, "cancelled");
+    return pixels;
+}
+
+std::uint64_t applyLabelRaster(const LabelRaster& raster, std::span<const std::int64_t> pixels, std::span<std::uint8_t> labels)
+{
+    assert(pixels.size() == labels.size() && "applyLabelRaster(): one pixel per label");
+    std::uint64_t changed = 0;
+    for (std::size_t i = 0; i < labels.size(); ++i) {
+        if (pixels[i] < 0) continue;
+        assert(std::size_t(pixels[i]) < raster.ids.size() && "applyLabelRaster(): pixel outside the raster");
+        const std::uint8_t id = raster.ids[std::size_t(pixels[i])];
+        if (id != 0 && labels[i] != id) {
+            labels[i] = id;
+            ++changed;
+        }
+    }
+    return changed;
+}
+
+LabelRaster labelRasterFromLeaves(std::span<const std::uint8_t> labels, std::span<const std::int64_t> pixels, int width,
+                                  int height)
+{
+    assert(pixels.size() == labels.size() && "labelRasterFromLeaves(): one pixel per label");
+    LabelRaster raster(width, height);
+    std::vector<std::uint64_t> keys; // pixel << 8 | label
+    keys.reserve(labels.size());
+    for (std::size_t i = 0; i < labels.size(); ++i)
+        if (pixels[i] >= 0) keys.push_back(std::uint64_t(pixels[i]) << 8 | labels[i]);
+    std::sort(keys.begin(), keys.end());
+    for (std::size_t i = 0; i < keys.size();) {
+        const std::uint64_t pixel = keys[i] >> 8;
+        std::size_t bestCount = 0;
+        std::uint8_t best = 0;
+        while (i < keys.size() && keys[i] >> 8 == pixel) {
+            std::size_t j = i;
+            while (j < keys.size() && keys[j] == keys[i]) ++j;
+            if (j - i > bestCount) { // ascending ids: a tie keeps the smaller
+                bestCount = j - i;
+                best = std::uint8_t(keys[i] & 0xFF);
+            }
+            i = j;
+        }
+        raster.ids[pixel] = best;
+    }
+    return raster;
+}
+
+} // namespace stylos::core::annotation
