@@ -2,7 +2,7 @@
 #include "stylos/core/annotation/LeafExport.h"
 
 #include "stylos/core/annotation/LeafLabels.h"
-#include "stylos/core/io/PlyWriter.h"
+#include "stylos/core/octree/LeafPly.h"
 
 #include <cstring>
 #include <set>
@@ -44,10 +44,8 @@ bool isExportableLayer(const std::string& name) { return name == "material" || n
 Result<std::uint64_t> exportLeafPly(const octree::PackedOctree& octree, const std::vector<std::string>& layers,
                                     const std::filesystem::path& output, ProgressSink* progress)
 {
-    io::PointSchema schema;
-    io::PlyWriterOptions options;
-    options.positionType = io::PlyScalarType::Float64;
     std::vector<Column> columns;
+    std::vector<std::string> names;
     std::set<std::string> seen;
     for (const std::string& name : layers) {
         if (!isExportableLayer(name))
@@ -57,37 +55,16 @@ Result<std::uint64_t> exportLeafPly(const octree::PackedOctree& octree, const st
         auto column = readColumn(octree, name);
         if (!column) return column.error();
         columns.push_back(std::move(column).value());
-        schema.scalarNames.push_back(name);
-        options.scalarTypes.push_back(name == "ambient" ? io::PlyScalarType::Float32 : io::PlyScalarType::UInt8);
+        names.push_back(name);
     }
-    options.comments = {"stylos leaves: one vertex per leaf centre of an octree of depth " + std::to_string(octree.depth())};
-    auto writer = io::PlyWriter::create(output, schema, options);
-    if (!writer) return writer.error();
-
-    constexpr std::size_t kBatch = 64 * 1024;
-    const std::uint64_t leaves = leafCount(octree);
-    io::PointBatch batch;
-    batch.reset(schema, kBatch);
-    Status status;
-    auto flush = [&] {
-        status = writer->write(batch);
-        batch.reset(schema, kBatch);
-        if (status && progress) {
-            progress->update(leaves ? double(writer->pointsWritten()) / double(leaves) : 1.0);
-            if (progress->isCancelRequested())
-                status = Error::at(ErrorCode::Cancelled, output.string(), "", "cancelled while writing");
-        }
-        return bool(status);
-    };
-    octree.forEachCell(octree.depth(), [&](const octree::CellView& cell) {
-        batch.positions.insert(batch.positions.end(), cell.centre.begin(), cell.centre.end());
-        for (std::size_t k = 0; k < columns.size(); ++k) batch.scalars[k].push_back(columns[k].at(cell.index));
-        return batch.size() < kBatch || flush();
-    });
-    if (status && !batch.empty()) flush();
-    if (!status) return status.error();
-    if (auto s = writer->finish(); !s) return s.error();
-    return writer->pointsWritten();
+    std::vector<octree::LeafPlyColumn> plyColumns;
+    for (std::size_t k = 0; k < columns.size(); ++k)
+        plyColumns.push_back({names[k], names[k] == "ambient" ? io::PlyScalarType::Float32 : io::PlyScalarType::UInt8,
+                              [&column = columns[k]](std::uint64_t leaf) { return column.at(leaf); }});
+    return octree::writeLeafPly(octree, plyColumns,
+                                "stylos leaves: one vertex per leaf centre of an octree of depth " +
+                                    std::to_string(octree.depth()),
+                                output, progress);
 }
 
 } // namespace stylos::core::annotation

@@ -1,7 +1,7 @@
 // Writing the skydome's per-leaf values: the "ambient" layer of a .poct, or a PLY of the leaf centres.
 #include "stylos/core/ao/AoExport.h"
 
-#include "stylos/core/io/PlyWriter.h"
+#include "stylos/core/octree/LeafPly.h"
 
 #include <cstring>
 #include <string>
@@ -74,40 +74,12 @@ Result<std::uint64_t> writeAmbientPly(const octree::PackedOctree& octree, std::s
                                       const fs::path& output, ProgressSink* progress)
 {
     if (auto s = checkCount(octree, perLeaf, output); !s) return s.error();
-    io::PointSchema schema;
-    schema.scalarNames = {AmbientLayerName};
-    io::PlyWriterOptions options;
-    options.positionType = io::PlyScalarType::Float64;
-    options.scalarTypes = {io::PlyScalarType::Float32};
-    options.comments = {"stylos ambient occlusion: one vertex per leaf centre of an octree of depth " +
-                        std::to_string(octree.depth())};
-    auto writer = io::PlyWriter::create(output, schema, options);
-    if (!writer) return writer.error();
-
-    constexpr std::size_t kBatch = 64 * 1024;
-    const std::uint64_t leaves = leafCount(octree);
-    io::PointBatch batch;
-    batch.reset(schema, kBatch);
-    Status status;
-    auto flush = [&] {
-        status = writer->write(batch);
-        batch.reset(schema, kBatch);
-        if (status && progress) {
-            progress->update(leaves ? double(writer->pointsWritten()) / double(leaves) : 1.0);
-            if (progress->isCancelRequested())
-                status = Error::at(ErrorCode::Cancelled, output.string(), "", "cancelled while writing");
-        }
-        return bool(status);
-    };
-    octree.forEachCell(octree.depth(), [&](const octree::CellView& cell) {
-        batch.positions.insert(batch.positions.end(), cell.centre.begin(), cell.centre.end());
-        batch.scalars[0].push_back(double(perLeaf[cell.index]));
-        return batch.size() < kBatch || flush();
-    });
-    if (status && !batch.empty()) flush();
-    if (!status) return status.error(); // the writer's destructor removes its temporary file
-    if (auto s = writer->finish(); !s) return s.error();
-    return writer->pointsWritten();
+    return octree::writeLeafPly(octree,
+                                {{AmbientLayerName, io::PlyScalarType::Float32,
+                                  [perLeaf](std::uint64_t leaf) { return double(perLeaf[leaf]); }}},
+                                "stylos ambient occlusion: one vertex per leaf centre of an octree of depth " +
+                                    std::to_string(octree.depth()),
+                                output, progress);
 }
 
 } // namespace stylos::core::ao
