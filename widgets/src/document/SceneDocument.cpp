@@ -14,6 +14,9 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QFileInfo>
+
+#include <algorithm>
+#include <set>
 #include <QUndoStack>
 
 #include <optional>
@@ -282,6 +285,18 @@ void SceneDocument::applyStructure(const SceneStructure& structure)
     for (const auto& [id, where] : structure.fragments)
         if (const Fragment* f = m_scene.find(id); f && f->assembly != where.first) treeChanges = true;
     if (treeChanges) Q_EMIT structureAboutToChange();
+    // The assemblies whose name, pose, drum or visibility change (or that come or go): their members' place,
+    // visibility or drum change with them.
+    std::set<core::scene::AssemblyId> changed;
+    for (const auto& a : structure.assemblies)
+        if (const core::scene::Assembly* now = m_scene.findAssembly(a.id); !now || !(*now == a)) changed.insert(a.id);
+    for (const auto& a : m_scene.assemblies())
+        if (std::none_of(structure.assemblies.begin(), structure.assemblies.end(),
+                         [&a](const core::scene::Assembly& b) { return b.id == a.id; }))
+            changed.insert(a.id);
+    std::vector<FragmentId> affected;
+    for (const Fragment& f : m_scene.fragments())
+        if (structure.fragments.count(f.id) || changed.count(f.assembly)) affected.push_back(f.id);
     m_scene.setAssemblies(structure.assemblies, structure.nextAssemblyId);
     for (const auto& [id, where] : structure.fragments)
         if (Fragment* f = m_scene.find(id)) {
@@ -289,8 +304,9 @@ void SceneDocument::applyStructure(const SceneStructure& structure)
             f->pose = where.second;
         }
     if (treeChanges) Q_EMIT structureChanged();
-    for (const auto& a : structure.assemblies) Q_EMIT assemblyChanged(a.id);
-    for (const Fragment& f : m_scene.fragments()) Q_EMIT fragmentChanged(f.id);
+    for (const auto& a : structure.assemblies)
+        if (changed.count(a.id)) Q_EMIT assemblyChanged(a.id);
+    for (FragmentId id : affected) Q_EMIT fragmentChanged(id);
 }
 
 void SceneDocument::newProject()
