@@ -94,3 +94,41 @@ TEST(LeafLabels, LayerOfTheWrongTypeIsMalformed)
     EXPECT_EQ(labels.error().code, stylos::core::ErrorCode::Malformed);
     EXPECT_NE(labels.error().message.find("w.poct"), std::string::npos);
 }
+
+TEST(LeafLabels, BothLayersInOnePassOntoTheOpenedFile)
+{
+    const auto& drum = stylos::test::annotatedDrum();
+    stylos::test::TempDir dir;
+    fs::copy_file(drum.poct, dir / "own.poct");
+    const auto octree = openPoct(dir / "own.poct");
+    const std::size_t n = leafCount(octree);
+    std::vector<std::uint8_t> material(n, 0), toolmark(n, 0);
+    material[0] = 3;
+    material[n - 1] = 1;
+    toolmark[n / 2] = 5;
+    std::vector<oct::AttributeLayer> layers{labelAttribute(AnnotationLayer::Material, material),
+                                            labelAttribute(AnnotationLayer::Toolmark, toolmark)};
+    const auto written = writeAttributesPoct(octree, layers, dir / "own.poct");
+    ASSERT_TRUE(written.ok()) << written.error().message;
+    // The opened octree still reads (it maps the replaced file) and still has no labels.
+    EXPECT_EQ(readLeafLabels(octree, AnnotationLayer::Material).value(), std::vector<std::uint8_t>(n, 0));
+    const auto reopened = openPoct(dir / "own.poct");
+    EXPECT_EQ(readLeafLabels(reopened, AnnotationLayer::Material).value(), material);
+    EXPECT_EQ(readLeafLabels(reopened, AnnotationLayer::Toolmark).value(), toolmark);
+    // Written again with one layer changed: still one layer of each name, the other kept.
+    material[1] = 2;
+    const auto again = writeAttributesPoct(reopened, {labelAttribute(AnnotationLayer::Material, material)},
+                                           dir / "own.poct");
+    ASSERT_TRUE(again.ok()) << again.error().message;
+    const auto last = openPoct(dir / "own.poct");
+    EXPECT_EQ(readLeafLabels(last, AnnotationLayer::Material).value(), material);
+    EXPECT_EQ(readLeafLabels(last, AnnotationLayer::Toolmark).value(), toolmark);
+    // A layer given twice is refused, naming the output, and the file is untouched.
+    const auto twice = writeAttributesPoct(last, {labelAttribute(AnnotationLayer::Material, material),
+                                                  labelAttribute(AnnotationLayer::Material, material)},
+                                           dir / "own.poct");
+    ASSERT_FALSE(twice.ok());
+    EXPECT_NE(twice.error().message.find("own.poct"), std::string::npos);
+    EXPECT_NE(twice.error().message.find("given twice"), std::string::npos);
+    EXPECT_EQ(readLeafLabels(openPoct(dir / "own.poct"), AnnotationLayer::Material).value(), material);
+}

@@ -54,6 +54,12 @@ Scene sampleScene(const fs::path& folder)
     scene.takeAssembly(scene.addAssembly(Assembly{}));
     scene.find(2)->assembly = id;
     scene.find(2)->pose = Pose::fromTranslationAngles({{0.01, 0.02, 0.03}, {0.1, 0.2, 0.3}});
+    // A legend changed from the defaults: a renamed class, a new one, a removed one.
+    annotation::Legend legend = annotation::Legend::defaults();
+    legend.material[0].name = "marbre conservé";
+    legend.material.push_back({9, "patine", {10, 20, 30}, annotation::Hatch::Dots});
+    legend.toolmark.pop_back();
+    scene.setLegend(legend);
     return scene;
 }
 
@@ -258,6 +264,9 @@ TEST(ProjectFileTest, EveryBadKeyIsNamed)
          ErrorCode::Malformed, "fragments[0].guides[0].direction: is not a unit vector"},
         {"annotations number", [](J& j) { j["fragments"][0]["annotations"] = 1; }, ErrorCode::Malformed,
          "fragments[0].annotations: "},
+        {"legend text", [](J& j) { j["legend"] = "defaults"; }, ErrorCode::Malformed, "legend: a legend must be"},
+        {"legend class id", [](J& j) { j["legend"] = J::parse(annotation::Legend::defaults().toJson().dump()); j["legend"]["layers"]["material"][1]["id"] = 1; },
+         ErrorCode::Malformed, "legend: layers.material[1].id: "},
         {"low nextId", [](J& j) { j["nextId"] = 1; }, ErrorCode::Malformed, "nextId: "},
         {"text nextId", [](J& j) { j["nextId"] = "2"; }, ErrorCode::Malformed, "nextId: "},
     };
@@ -302,6 +311,23 @@ TEST(ProjectFileTest, AnAssemblysMembersKeepTheirPlaceInTheScene)
     EXPECT_EQ(json["fragments"][0]["assembly"], 0);
 }
 
+TEST(ProjectFileTest, TheLegendTravelsWithTheProject)
+{
+    test::TempDir dir;
+    const Scene scene = sampleScene(dir / "project");
+    const fs::path path = dir / "project" / "site.stylos";
+    ASSERT_TRUE(ProjectFile::save(scene, path).ok());
+    const auto loaded = ProjectFile::load(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_EQ(loaded->scene.legend(), scene.legend());
+    EXPECT_EQ(loaded->scene.legend().material[0].name, "marbre conservé");
+    ASSERT_NE(loaded->scene.legend().find(annotation::AnnotationLayer::Material, 9), nullptr);
+    EXPECT_EQ(loaded->scene.legend().toolmark.size(), annotation::Legend::defaults().toolmark.size() - 1);
+    const auto json = nlohmann::json::parse(contents(path));
+    EXPECT_EQ(json["legend"]["format"], "stylos-legend");
+    EXPECT_EQ(json["legend"]["layers"]["material"][4]["name"], "patine");
+}
+
 TEST(ProjectFileTest, OptionalKeysTakeTheirDefaults)
 {
     nlohmann::json document = validDocument();
@@ -318,6 +344,7 @@ TEST(ProjectFileTest, OptionalKeysTakeTheirDefaults)
     EXPECT_TRUE(f.guides.empty());
     EXPECT_EQ(f.annotationLayer, "");
     EXPECT_EQ(result->scene.nextId(), 2u);
+    EXPECT_EQ(result->scene.legend(), annotation::Legend::defaults()); // no "legend": the default vocabulary
     // /projects/a.poct does not exist: reported, still loaded.
     EXPECT_TRUE(f.octreeMissing);
     ASSERT_EQ(result->problems.size(), 1u);

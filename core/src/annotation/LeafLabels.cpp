@@ -1,6 +1,7 @@
 // Per-leaf annotation labels as UInt8 attribute layers of a .poct.
 #include "stylos/core/annotation/LeafLabels.h"
 
+#include <algorithm>
 #include <string>
 #include <system_error>
 
@@ -52,6 +53,22 @@ Result<std::uint64_t> writeAttributePoct(const octree::PackedOctree& octree, oct
         layers.push_back({view.name, view.type, view.components, {view.bytes.begin(), view.bytes.end()}});
     }
     if (!placed) layers.push_back(std::move(attribute));
+    return octree::writePoct(octree.levels(), output, layers, progress);
+}
+
+Result<std::uint64_t> writeAttributesPoct(const octree::PackedOctree& octree,
+                                          std::vector<octree::AttributeLayer> attributes, const fs::path& output,
+                                          ProgressSink* progress)
+{
+    std::vector<octree::AttributeLayer> layers;
+    for (const octree::AttributeView& view : octree.attributes()) {
+        if (view.name == "colour") continue; // travels with the cells (description().hasColour)
+        const auto replaced = std::find_if(attributes.begin(), attributes.end(),
+                                           [&](const octree::AttributeLayer& a) { return a.name == view.name; });
+        if (replaced != attributes.end()) continue; // written below, in the order given
+        layers.push_back({view.name, view.type, view.components, {view.bytes.begin(), view.bytes.end()}});
+    }
+    for (octree::AttributeLayer& attribute : attributes) layers.push_back(std::move(attribute));
     return octree::writePoct(octree.levels(), output, layers, progress);
 }
 

@@ -192,6 +192,11 @@ Result<LoadedProject> SceneReader::read(const json& root)
         if (!nextAssemblyId->is_number_unsigned() || !project.scene.setNextAssemblyId(nextAssemblyId->get<AssemblyId>()))
             return bad("nextAssemblyId", "is not an integer above every assembly id");
     }
+    if (const json* legend = member(root, "legend")) {
+        auto read = annotation::Legend::fromJson(*legend, m_file + ": legend");
+        if (!read) return read.error();
+        project.scene.setLegend(std::move(read).value());
+    }
     return project;
 }
 
@@ -327,6 +332,7 @@ std::string ProjectFile::toJson(const Scene& scene, const std::filesystem::path&
     for (const Assembly& a : scene.assemblies()) assemblies.push_back(assemblyJson(a));
     root["assemblies"] = std::move(assemblies);
     root["fragments"] = std::move(fragments);
+    root["legend"] = OrderedJson::parse(scene.legend().toJson().dump());
     return root.dump(2) + "\n";
 }
 

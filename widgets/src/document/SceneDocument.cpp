@@ -1,8 +1,12 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
+#include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/scene/ProjectFile.h"
 #include "document/commands/AddFragmentCommand.h"
+#include "document/commands/EditLabelsCommand.h"
+#include "document/commands/SetLegendCommand.h"
+#include "stylos/widgets/annotation/LabelStore.h"
 #include "tasks/ErrorText.h"
 #include "document/commands/RemoveFragmentCommand.h"
 #include "document/commands/RenameFragmentCommand.h"
@@ -42,7 +46,7 @@ QString qtPath(const std::filesystem::path& path)
 } // namespace
 
 SceneDocument::SceneDocument(TaskManager& tasks, QObject* parent)
-    : QObject(parent), m_tasks(tasks), m_undo(new QUndoStack(this))
+    : QObject(parent), m_tasks(tasks), m_undo(new QUndoStack(this)), m_labels(new LabelStore(this))
 {
     connect(m_undo, &QUndoStack::cleanChanged, this, [this](bool clean) { Q_EMIT modifiedChanged(!clean); });
 }
@@ -65,6 +69,7 @@ bool SceneDocument::replaceOctree(FragmentId id, OctreePtr octree)
 {
     if (!octree || !m_scene.find(id)) return false;
     m_octrees[id] = std::move(octree);
+    loadLabels(id);
     Q_EMIT octreeChanged(id);
     return true;
 }
@@ -309,6 +314,81 @@ void SceneDocument::applyStructure(const SceneStructure& structure)
     for (FragmentId id : affected) Q_EMIT fragmentChanged(id);
 }
 
+bool SceneDocument::setLabels(FragmentId id, AnnotationLayer layer, std::span<const std::uint32_t> leaves,
+                              std::uint8_t classId, const QString& text, quint64 stroke)
+{
+    if (classId != 0 && !legend().find(layer, classId)) return false;
+    LabelEdit edit = m_labels->makeEdit(id, layer, leaves, classId);
+    if (edit.empty()) return false;
+    m_undo->push(new EditLabelsCommand(*this, std::move(edit), text, stroke));
+    return true;
+}
+
+bool SceneDocument::setLegend(core::annotation::Legend legend, const QString& text)
+{
+    if (legend == m_scene.legend()) return false;
+    m_undo->push(new SetLegendCommand(*this, std::move(legend), text.isEmpty() ? tr("Change the legend") : text));
+    return true;
+}
+
+bool SceneDocument::removeLegendClass(AnnotationLayer layer, std::uint8_t classId, std::uint8_t replacement)
+{
+    const core::annotation::LegendClass* removed = legend().find(layer, classId);
+    if (!removed || replacement == classId || (replacement != 0 && !legend().find(layer, replacement))) return false;
+    core::annotation::Legend next = legend();
+    auto& classes = next.classes(layer);
+    classes.erase(std::remove_if(classes.begin(), classes.end(),
+                                 [classId](const core::annotation::LegendClass& c) { return c.id == classId; }),
+                  classes.end());
+    const QString text = tr("Remove the class %1").arg(QString::fromStdString(removed->name));
+    m_undo->beginMacro(text);
+    for (const Fragment& f : m_scene.fragments()) {
+        LabelEdit edit = m_labels->relabelEdit(f.id, layer, classId, replacement);
+        if (!edit.empty()) m_undo->push(new EditLabelsCommand(*this, std::move(edit), text));
+    }
+    m_undo->push(new SetLegendCommand(*this, std::move(next), text));
+    m_undo->endMacro();
+    return true;
+}
+
+void SceneDocument::changeLegend(const core::annotation::Legend& legend)
+{
+    m_scene.setLegend(legend);
+    Q_EMIT legendChanged();
+}
+
+void SceneDocument::loadLabels(FragmentId id)
+{
+    const OctreePtr tree = octree(id);
+    if (!tree) return;
+    const core::Status loaded = m_labels->load(id, *tree);
+    if (!loaded) m_loadErrors << ErrorText::loadFailure(qtPath(tree->path()), loaded.error());
+}
+
+bool SceneDocument::saveLabels(QString* error)
+{
+    using core::annotation::AllAnnotationLayers;
+    for (FragmentId id : m_labels->dirty()) {
+        const Fragment* f = m_scene.find(id);
+        const OctreePtr tree = octree(id);
+        if (!f || !tree) continue; // removed since: its labels wait in the store for an undo
+        std::vector<core::octree::AttributeLayer> layers;
+        for (AnnotationLayer layer : AllAnnotationLayers)
+            layers.push_back(core::annotation::labelAttribute(layer, *m_labels->labels(id, layer)));
+        const auto written = core::annotation::writeAttributesPoct(*tree, std::move(layers), f->octreePath);
+        if (!written) {
+            if (error)
+                *error = tr("Could not save the annotations of %1 into %2: %3.")
+                             .arg(QString::fromStdString(f->name), qtPath(f->octreePath.filename()),
+                                  ErrorText::reason(written.error().code)) +
+                         QLatin1Char('\n') + QString::fromStdString(written.error().message);
+            return false;
+        }
+        m_labels->markSaved(id);
+    }
+    return true;
+}
+
 void SceneDocument::newProject()
 {
     resetScene(core::scene::Scene{});
@@ -327,6 +407,7 @@ bool SceneDocument::save(QString* error)
 bool SceneDocument::saveAs(const QString& path, QString* error)
 {
     const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (!saveLabels(error)) return false;
     const core::Status saved = core::scene::ProjectFile::save(m_scene, absolute.toStdString());
     if (!saved) {
         if (error)
@@ -372,7 +453,10 @@ void SceneDocument::insertFragment(int index, Fragment fragment, OctreePtr octre
         fragment.assembly = core::scene::NoAssembly;
     Q_EMIT fragmentAboutToBeAdded(index, fragment.assembly);
     const FragmentId id = m_scene.insert(static_cast<std::size_t>(index), std::move(fragment));
-    if (octree) m_octrees[id] = std::move(octree);
+    if (octree) {
+        m_octrees[id] = std::move(octree);
+        loadLabels(id);
+    }
     Q_EMIT fragmentAdded(id);
     if (!m_octrees.count(id)) startLoad(id);
 }
@@ -408,7 +492,9 @@ void SceneDocument::resetScene(core::scene::Scene scene)
     m_scene = std::move(scene);
     m_octrees.clear();
     m_developpees.clear();
+    m_labels->clear();
     Q_EMIT sceneReset();
+    Q_EMIT legendChanged();
     setDockingDrum(core::scene::NoFragment);
 }
 
@@ -450,6 +536,7 @@ void SceneDocument::loadEnded(FragmentId id, QFutureWatcherBase* watcher)
         OpenedOctree opened = typed->result();
         if (opened.octree) {
             m_octrees[id] = std::move(opened.octree);
+            loadLabels(id);
         } else if (opened.error) {
             m_loadErrors << ErrorText::loadFailure(qtPath(f->octreePath), *opened.error);
             changeFragment(id, [](Fragment& fragment) { fragment.octreeMissing = true; });

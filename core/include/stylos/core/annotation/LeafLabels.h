@@ -41,6 +41,16 @@ octree::AttributeLayer labelAttribute(AnnotationLayer layer, std::span<const std
 Result<std::uint64_t> writeAttributePoct(const octree::PackedOctree& octree, octree::AttributeLayer attribute,
                                          const std::filesystem::path& output, ProgressSink* progress = nullptr);
 
+/**
+ * @brief Writes @p octree to @p output with every layer of @p attributes added or replacing the layer of the
+ *        same name, in one pass (writePoct: atomic). @p output may be the octree's own file: the new file
+ *        replaces it by rename, and the opened @p octree stays valid (it maps the old one).
+ * @return the size of the written file, or InvalidArgument (a layer of the wrong size, or two of one name),
+ *         WriteFailed, Cancelled.
+ */
+Result<std::uint64_t> writeAttributesPoct(const octree::PackedOctree& octree,
+                                          std::vector<octree::AttributeLayer> attributes,
+                                          const std::filesystem::path& output, ProgressSink* progress = nullptr);
 /** @brief Stores @p labels (one per leaf) as @p layer of @p octree in @p output (see writeAttributePoct). */
 Result<std::uint64_t> writeLeafLabels(const octree::PackedOctree& octree, AnnotationLayer layer,
                                       std::span<const std::uint8_t> labels, const std::filesystem::path& output,

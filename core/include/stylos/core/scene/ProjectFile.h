@@ -9,7 +9,8 @@
  *                     "pose": [16 numbers, row-major], "colour": "#d6ccba", "visible": true,
  *                     "guides": [{"name": "axis", "kind": "axis", "origin": [x, y, z],
  *                                 "direction": [x, y, z]}],
- *                     "annotations": "", "assembly": 1}]}
+ *                     "annotations": "", "assembly": 1}],
+ *      "legend": {"format": "stylos-legend", "version": 1, "layers": {…}}}
  *
  * A fragment's "pose" is relative to its "assembly" (0 or absent: the scene's top level); an assembly's
  * "drum" is the fragment whose guides its members dock against (0: none). Version 1 files (no
@@ -22,7 +23,9 @@
  * are ignored (a later writer may add some). Optional on load (defaults in brackets): "nextId"
  * [above the largest id], "nextAssemblyId" [above the largest], "assemblies" [[]], "source" [""], "colour"
  * [#c8c8c8], "visible" [true], "guides" [[]], "annotations" [""], "assembly" [0], an assembly's "drum"
- * [0] and "visible" [true]; "id", "name", "octree" and "pose" are required (an assembly's "id", "name", "pose").
+ * [0] and "visible" [true], "legend" [the default vocabulary, annotation::Legend::defaults()]: the
+ * project's annotation classes as annotation/Legend.h writes them (a Malformed legend names the project
+ * file, "legend" and the legend's key); "id", "name", "octree" and "pose" are required (an assembly's "id", "name", "pose").
  *
  * Load failures name the file and the key: NotFound, Unreadable, Empty; Malformed (not JSON: "line L,
  * column C"; a key of the wrong type or out of range: its path, e.g. "fragments[1].pose"; a duplicate

@@ -8,6 +8,7 @@
  *        through undo commands. Invariant: every fragment's assembly exists (or is NoAssembly).
  *        Thread-safety: none (a value type; confine to one thread or copy).
  */
+#include "stylos/core/annotation/Legend.h"
 #include "stylos/core/scene/Assembly.h"
 #include "stylos/core/scene/Fragment.h"
 
@@ -88,6 +89,11 @@ public:
     /** @brief The pose, relative to fragment @p id's assembly, that puts it at @p world in the scene. */
     Pose localPose(FragmentId id, const Pose& world) const;
 
+    /** @brief The project's annotation legend (its classes, colours and hatches); the default vocabulary
+     *  until changed. clear() keeps it. */
+    const annotation::Legend& legend() const { return m_legend; }
+    void setLegend(annotation::Legend legend) { m_legend = std::move(legend); }
+
     bool operator==(const Scene&) const = default;
 
 private:
@@ -95,6 +101,7 @@ private:
     std::vector<Assembly> m_assemblies;
     FragmentId m_nextId = 1;
     AssemblyId m_nextAssemblyId = 1;
+    annotation::Legend m_legend = annotation::Legend::defaults();
 };
 
 } // namespace stylos::core::scene

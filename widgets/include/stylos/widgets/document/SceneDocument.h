@@ -11,6 +11,9 @@
  */
 #include "stylos/core/scene/Scene.h"
 
+#include <cstdint>
+#include <span>
+
 #include <QObject>
 #include <QPointer>
 #include <QString>
@@ -30,6 +33,7 @@ class PackedOctree;
 namespace stylos::widgets {
 
 class TaskManager;
+class LabelStore;
 struct DeveloppeeResult;
 struct SceneStructure;
 
@@ -134,12 +138,44 @@ public:
     /** @brief Sets the docking drum (NoFragment: none); false for an unknown fragment. Emits dockingDrumChanged(). */
     bool setDockingDrum(FragmentId id);
 
+    // Annotation: the legend (part of the scene, saved in the project file) and the labels of each fragment's
+    // leaves (labels(), written into the fragments' `.poct` layers by save()).
+    using AnnotationLayer = core::annotation::AnnotationLayer;
+    const core::annotation::Legend& legend() const { return m_scene.legend(); }
+    /** @brief The labels of every fragment whose octree opened (read-only: edits go through setLabels()). */
+    const LabelStore& labels() const { return *m_labels; }
+    /** @brief A new stroke's token, for setLabels(): the steps of one stroke merge into one undo step. */
+    quint64 beginStroke() { return ++m_lastStroke; }
+    /**
+     * @brief Gives @p classId (0: unlabelled) to @p leaves (indices in leaf order; duplicates and leaves out of
+     *        range ignored) of @p id's @p layer: one undo step named @p text holding only the leaves that change.
+     *        A non-zero @p stroke (beginStroke()) merges the step into the previous one of the same stroke.
+     *        False (nothing pushed) when nothing changes, the fragment has no labels yet, or @p classId is
+     *        neither 0 nor a class of the layer's legend.
+     */
+    bool setLabels(FragmentId id, AnnotationLayer layer, std::span<const std::uint32_t> leaves, std::uint8_t classId,
+                   const QString& text, quint64 stroke = 0);
+    /** @brief Replaces the legend (names, colours, hatches, classes added): one undo step, default text
+     *         "Change the legend". False when equal. Removing a class that is used: removeLegendClass(). */
+    bool setLegend(core::annotation::Legend legend, const QString& text = {});
+    /**
+     * @brief Removes class @p classId from @p layer; every leaf holding it (in every fragment with labels) gets
+     *        @p replacement (0: unlabelled, or another class of the layer). One undo step. False when there is
+     *        no such class or @p replacement is neither 0 nor another class of the layer.
+     */
+    bool removeLegendClass(AnnotationLayer layer, std::uint8_t classId, std::uint8_t replacement);
+
     // Files.
     /** @brief An empty, unsaved project (the undo history is cleared). */
     void newProject();
-    /** @brief Saves to projectPath(); false (with @p error) when it fails or the project was never saved. */
+    /** @brief Saves to projectPath() (see saveAs()); false (with @p error) when it fails or the project was never saved. */
     bool save(QString* error = nullptr);
-    /** @brief Saves to @p path (paths inside are made relative to its folder) and makes it the project path. */
+    /**
+     * @brief Saves to @p path (paths inside are made relative to its folder) and makes it the project path.
+     *        First writes the labels of every fragment changed since its octree opened into that octree's
+     *        file (both layers, one atomic rewrite each); when one fails, nothing more is written and the
+     *        project stays modified.
+     */
     bool saveAs(const QString& path, QString* error = nullptr);
     /**
      * @brief Replaces the project by the one in @p path and opens each fragment's octree in the
@@ -176,6 +212,8 @@ Q_SIGNALS:
     void structureChanged();
     /** @brief An assembly's name, pose, drum or visibility changed (its members' fragmentChanged() follow). */
     void assemblyChanged(quint64 id);
+    /** @brief The legend changed (an edit, its undo, a new or opened project). */
+    void legendChanged();
 
 private:
     friend class AddFragmentCommand;
@@ -186,6 +224,8 @@ private:
     friend class SetFragmentVisibleCommand;
     friend class SetFragmentGuidesCommand;
     friend class SetSceneStructureCommand;
+    friend class EditLabelsCommand;
+    friend class SetLegendCommand;
 
     /** Sets the assemblies and the touched fragments' assembly and pose to @p structure's, with the signals. */
     void applyStructure(const SceneStructure& structure);
@@ -202,6 +242,13 @@ private:
     template <typename Change>
     bool changeFragment(FragmentId id, Change change);
 
+    LabelStore& labelStore() { return *m_labels; }
+    void changeLegend(const core::annotation::Legend& legend);
+    /** Writes the changed labels into their octrees' files; false with @p error at the first failure. */
+    bool saveLabels(QString* error);
+    /** Takes @p id's labels from its opened octree; a failure goes to the load errors. */
+    void loadLabels(FragmentId id);
+
     void resetScene(core::scene::Scene scene);
     void setProjectPath(const QString& path);
     void startLoad(FragmentId id);
@@ -217,6 +264,8 @@ private:
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
     QString m_path;
     FragmentId m_dockingDrum = core::scene::NoFragment;
+    LabelStore* m_labels;
+    quint64 m_lastStroke = 0;
 };
 
 template <typename Change>

@@ -1,0 +1,23 @@
+#include "document/commands/SetLegendCommand.h"
+
+#include "stylos/widgets/document/SceneDocument.h"
+
+namespace stylos::widgets {
+
+SetLegendCommand::SetLegendCommand(SceneDocument& document, core::annotation::Legend legend, const QString& text,
+                                   QUndoCommand* parent)
+    : QUndoCommand(text, parent), m_document(document), m_old(document.scene().legend()), m_new(std::move(legend))
+{
+}
+
+void SetLegendCommand::redo()
+{
+    m_document.changeLegend(m_new);
+}
+
+void SetLegendCommand::undo()
+{
+    m_document.changeLegend(m_old);
+}
+
+} // namespace stylos::widgets
