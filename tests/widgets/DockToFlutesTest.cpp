@@ -9,6 +9,7 @@
 #include "DockGeometry.h"
 #include "WidgetTestSupport.h"
 
+#include "DeveloppeeLink.h"
 #include "DockingActions.h"
 #include "MainWindow.h"
 #include "PropertiesDock.h"
@@ -16,6 +17,8 @@
 #include "Translations.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/scene/SceneEigen.h"
@@ -112,6 +115,7 @@ private Q_SLOTS:
     void aPlainFragmentMovesNothing();
     void theContactReadoutFollowsThePose();
     void theWindowDocksWithTheLocksChosen();
+    void theFragmentUnrollsAtTheDrumsLeadingRadius();
 
 private:
     /** A document holding the drum (with its fitted guides, the docking drum) at m_drumPose. */
@@ -341,6 +345,40 @@ void DockToFlutesTest::theWindowDocksWithTheLocksChosen()
     QVERIFY(readout->pointsLabel()->text() != QStringLiteral("—"));
     window.tasks().cancelAllAndWait();
     QSettings().clear();
+}
+
+void DockToFlutesTest::theFragmentUnrollsAtTheDrumsLeadingRadius()
+{
+    // The fragment (no axis of its own) at its true place against the drum: Compute in the Développée dock unrolls
+    // it about the drum's axis at the drum guides' leading radius (fitted once, in the background, first), and the
+    // drum's own développée at the same radius: the same millimetres per degree.
+    TaskManager tasks;
+    SceneDocument document(tasks);
+    DrumGuidesCache cache(document);
+    widgets::DeveloppeePanel panel;
+    app::DeveloppeeLink link(document, panel, nullptr);
+    link.setGuidesCache(&cache);
+    const scene::FragmentId drum = addDrum(document);
+    const scene::FragmentId id = addPiece(document, m_fragment, "fragment", m_drumPose * truth(m_fragment));
+    link.setFragment(id);
+    QVERIFY(panel.axisGuide().has_value()); // the drum's, carried into the fragment's frame
+    link.compute();
+    QTRY_VERIFY_WITH_TIMEOUT(document.developpee(id) != nullptr, 120000);
+    const auto guides = cache.guides(drum);
+    QVERIFY(guides != nullptr);
+    const auto& fragmentSurface = document.developpee(id)->fit.surface;
+    qInfo("leading radius %.3f mm; the fragment unrolled at %.3f mm", guides->radius * 1e3,
+          fragmentSurface.referenceRadius() * 1e3);
+    QCOMPARE(fragmentSurface.radius(), guides->radius);
+    QCOMPARE(fragmentSurface.referenceRadius(), guides->radius);
+    QVERIFY(document.developpee(id)->fit.rmsResidual < guides->fluteDepth); // on the drum's leading cylinder
+
+    link.setFragment(drum);
+    link.compute();
+    QTRY_VERIFY_WITH_TIMEOUT(document.developpee(drum) != nullptr, 120000);
+    QCOMPARE(document.developpee(drum)->fit.surface.referenceRadius(), guides->radius);
+    QCOMPARE(cache.fits(), 1);
+    tasks.cancelAllAndWait();
 }
 
 STYLOS_WIDGET_TEST_MAIN(DockToFlutesTest)
