@@ -116,6 +116,7 @@ private Q_SLOTS:
     void theContactReadoutFollowsThePose();
     void theWindowDocksWithTheLocksChosen();
     void theFragmentUnrollsAtTheDrumsLeadingRadius();
+    void theReadoutMeasuresTheOtherMembers();
 
 private:
     /** A document holding the drum (with its fitted guides, the docking drum) at m_drumPose. */
@@ -378,6 +379,45 @@ void DockToFlutesTest::theFragmentUnrollsAtTheDrumsLeadingRadius()
     QTRY_VERIFY_WITH_TIMEOUT(document.developpee(drum) != nullptr, 120000);
     QCOMPARE(document.developpee(drum)->fit.surface.referenceRadius(), guides->radius);
     QCOMPARE(cache.fits(), 1);
+    tasks.cancelAllAndWait();
+}
+
+void DockToFlutesTest::theReadoutMeasuresTheOtherMembers()
+{
+    // The drum, the fragment at its true place and a copy of it 2 mm further in, in one assembly: the fragment's
+    // readout lists the copy, about 2 mm into it (its inner face lies 2 mm inside the copy's), and follows the
+    // copy's move out of reach.
+    TaskManager tasks;
+    SceneDocument document(tasks);
+    DrumGuidesCache cache(document);
+    ContactMonitor monitor(document, cache);
+    monitor.setDelay(0);
+    widgets::ContactReadoutWidget widget(monitor);
+    const scene::FragmentId drum = addDrum(document);
+    const Eigen::Isometry3d place = truth(m_fragment);
+    const scene::FragmentId id = addPiece(document, m_fragment, "fragment", m_drumPose * place);
+    const Eigen::Isometry3d inward = test::perturbed(place, m_frame, place * m_fragment.centre, 0.0, 0.0, -0.002);
+    const scene::FragmentId copy = addPiece(document, m_fragment, "copy", m_drumPose * inward);
+    const auto assembly = document.newAssembly(QStringLiteral("Drum 1"), {drum, id, copy});
+    QVERIFY(assembly != scene::NoAssembly);
+    QVERIFY(document.setAssemblyDrum(assembly, drum));
+    monitor.setFragment(id);
+    QTRY_COMPARE_WITH_TIMEOUT(monitor.state(), ContactMonitor::State::Ready, 120000);
+    QCOMPARE(monitor.members().size(), std::size_t(1));
+    const auto& member = monitor.members()[0];
+    QCOMPARE(member.id, quint64(copy));
+    qInfo("against the copy 2 mm in: %zu points, largest %.3f mm, median %.3f mm", member.readout.points,
+          member.readout.largestInterpenetration * 1e3, member.readout.medianGap * 1e3);
+    QVERIFY(member.readout.points > 100);
+    QVERIFY2(std::abs(member.readout.largestInterpenetration - 0.002) < 0.0005,
+             qPrintable(QString::number(member.readout.largestInterpenetration)));
+    QVERIFY(widget.membersLabel()->text().contains(QStringLiteral("copy")));
+    // The copy moved 10 cm away: no contact with it any more.
+    const int deliveries = monitor.deliveries();
+    QVERIFY(document.setFragmentWorldPose(copy, poseOf(Eigen::Translation3d(0.0, 0.0, 0.1) * m_drumPose * inward)));
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.deliveries() > deliveries && monitor.state() == ContactMonitor::State::Ready, 60000);
+    QCOMPARE(monitor.members()[0].readout.points, std::size_t(0));
+    QVERIFY(widget.membersLabel()->text().contains(QStringLiteral("no contact")));
     tasks.cancelAllAndWait();
 }
 
