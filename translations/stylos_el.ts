@@ -313,6 +313,22 @@
         <source>Lock &amp;tilts</source>
         <translation>Κλείδωμα &amp;κλίσεων</translation>
     </message>
+    <message>
+        <source>Set &amp;axis from two points</source>
+        <translation>Ορισμός &amp;άξονα από δύο σημεία</translation>
+    </message>
+    <message>
+        <source>Click two points on the selected fragment in the 3D view: its axis guide goes through them (Escape cancels)</source>
+        <translation>Κάντε κλικ σε δύο σημεία του επιλεγμένου θραύσματος στην τρισδιάστατη προβολή: ο οδηγός άξονά του περνά από αυτά (το Escape ακυρώνει)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit axis…</source>
+        <translation>&amp;Επεξεργασία άξονα…</translation>
+    </message>
+    <message>
+        <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
+        <translation>Πληκτρολογήστε το σημείο και την κατεύθυνση του οδηγού άξονα του επιλεγμένου θραύσματος</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::LogDock</name>
@@ -626,6 +642,10 @@
         <source>Contact with the drum</source>
         <translation>Επαφή με το τύμπανο</translation>
     </message>
+    <message>
+        <source>Placement in the drum frame</source>
+        <translation>Θέση στο σύστημα του τυμπάνου</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::SceneDock</name>
@@ -664,6 +684,33 @@
     <message>
         <source>Développée of %1</source>
         <translation>Ανάπτυγμα του %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AxisGuideEditor</name>
+    <message>
+        <source>Set axis cancelled</source>
+        <translation>Ο ορισμός του άξονα ακυρώθηκε</translation>
+    </message>
+    <message>
+        <source>Click two points on %1 for its axis (Escape cancels)</source>
+        <translation>Κάντε κλικ σε δύο σημεία του %1 για τον άξονά του (το Escape ακυρώνει)</translation>
+    </message>
+    <message>
+        <source>The two points picked on %1 are the same: pick two points apart along its axis</source>
+        <translation>Τα δύο σημεία που επιλέχθηκαν στο %1 ταυτίζονται: επιλέξτε δύο σημεία σε απόσταση κατά μήκος του άξονά του</translation>
+    </message>
+    <message>
+        <source>Set the axis of %1 from two points</source>
+        <translation>Ορισμός του άξονα του %1 από δύο σημεία</translation>
+    </message>
+    <message>
+        <source>Axis of %1 set through the two points picked, %2 mm apart</source>
+        <translation>Ο άξονας του %1 ορίστηκε από τα δύο επιλεγμένα σημεία, σε απόσταση %2 mm</translation>
+    </message>
+    <message>
+        <source>Edit the axis of %1</source>
+        <translation>Επεξεργασία του άξονα του %1</translation>
     </message>
 </context>
 <context>
@@ -730,6 +777,18 @@
     <message>
         <source>%1 %</source>
         <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Against %1: %2</source>
+        <translation>Έναντι του %1: %2</translation>
+    </message>
+    <message>
+        <source>Against %1: no contact (no point within 5 mm)</source>
+        <translation>Έναντι του %1: καμία επαφή (κανένα σημείο εντός 5 mm)</translation>
+    </message>
+    <message>
+        <source>Against %1: largest interpenetration %2, median gap %3, 90 % gap %4 (%5 points)</source>
+        <translation>Έναντι του %1: μέγιστη αλληλοδιείσδυση %2, διάμεσο κενό %3, κενό 90 % %4 (%5 σημεία)</translation>
     </message>
 </context>
 <context>
@@ -915,6 +974,10 @@
         <source>Skydome</source>
         <translation>Θόλος ουρανού</translation>
     </message>
+    <message>
+        <source>the unrolling radius must be a positive length</source>
+        <translation>η ακτίνα ξετυλίγματος πρέπει να είναι θετικό μήκος</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeView</name>
@@ -1007,6 +1070,84 @@
     <message>
         <source>Dock %1</source>
         <translation>Πρόσδεση του %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DrumFramePoseWidget</name>
+    <message>
+        <source>θ about the axis:</source>
+        <translation>θ γύρω από τον άξονα:</translation>
+    </message>
+    <message>
+        <source>z along the axis:</source>
+        <translation>z κατά μήκος του άξονα:</translation>
+    </message>
+    <message>
+        <source>r from the axis:</source>
+        <translation>r από τον άξονα:</translation>
+    </message>
+    <message>
+        <source>Lean:</source>
+        <translation>Κλίση:</translation>
+    </message>
+    <message>
+        <source>Roll:</source>
+        <translation>Περιστροφή:</translation>
+    </message>
+    <message>
+        <source>Azimuth of the fragment&apos;s centre about the drum axis, from the drum&apos;s reference direction (as in its développée); typing turns the fragment about the axis</source>
+        <translation>Αζιμούθιο του κέντρου του θραύσματος γύρω από τον άξονα του τυμπάνου, από τη διεύθυνση αναφοράς του τυμπάνου (όπως στο ανάπτυγμά του)· η πληκτρολόγηση περιστρέφει το θραύσμα γύρω από τον άξονα</translation>
+    </message>
+    <message>
+        <source>Height of the fragment&apos;s centre along the drum axis, from the axis guide&apos;s point</source>
+        <translation>Ύψος του κέντρου του θραύσματος κατά μήκος του άξονα του τυμπάνου, από το σημείο του οδηγού άξονα</translation>
+    </message>
+    <message>
+        <source>Distance of the fragment&apos;s centre from the drum axis</source>
+        <translation>Απόσταση του κέντρου του θραύσματος από τον άξονα του τυμπάνου</translation>
+    </message>
+    <message>
+        <source>Turn about the tangent through the fragment&apos;s centre (leans it in or out)</source>
+        <translation>Περιστροφή γύρω από την εφαπτομένη που περνά από το κέντρο του θραύσματος (το γέρνει προς τα μέσα ή έξω)</translation>
+    </message>
+    <message>
+        <source>Turn about the radial direction through the fragment&apos;s centre (turns its flutes sideways)</source>
+        <translation>Περιστροφή γύρω από την ακτινική διεύθυνση που περνά από το κέντρο του θραύσματος (στρέφει τις ραβδώσεις του πλάγια)</translation>
+    </message>
+    <message>
+        <source>This fragment has no drum with an axis guide (put it in an assembly with a drum, or Tools › Dock against this drum), or its octree is not open yet.</source>
+        <translation>Αυτό το θραύσμα δεν έχει τύμπανο με οδηγό άξονα (βάλτε το σε συναρμολόγηση με τύμπανο, ή Εργαλεία › Πρόσδεση σε αυτό το τύμπανο), ή το οκταδικό του δέντρο δεν έχει ανοίξει ακόμη.</translation>
+    </message>
+    <message>
+        <source>No fragment selected.</source>
+        <translation>Δεν έχει επιλεγεί θραύσμα.</translation>
+    </message>
+    <message>
+        <source>In the frame of %1:</source>
+        <translation>Στο σύστημα του %1:</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::EditAxisDialog</name>
+    <message>
+        <source>Edit axis</source>
+        <translation>Επεξεργασία άξονα</translation>
+    </message>
+    <message>
+        <source>The axis guide in the fragment&apos;s own frame: a point on it and its direction.</source>
+        <translation>Ο οδηγός άξονα στο σύστημα του ίδιου του θραύσματος: ένα σημείο του και η κατεύθυνσή του.</translation>
+    </message>
+    <message>
+        <source>Point (x, y, z):</source>
+        <translation>Σημείο (x, y, z):</translation>
+    </message>
+    <message>
+        <source>Direction (x, y, z):</source>
+        <translation>Κατεύθυνση (x, y, z):</translation>
+    </message>
+    <message>
+        <source>The direction of the axis cannot be zero: give at least one non-zero component (for a vertical axis: 0, 0, 1).</source>
+        <translation>Η κατεύθυνση του άξονα δεν μπορεί να είναι μηδενική: δώστε τουλάχιστον μία μη μηδενική συνιστώσα (για κατακόρυφο άξονα: 0, 0, 1).</translation>
     </message>
 </context>
 <context>

@@ -313,6 +313,22 @@
         <source>Lock &amp;tilts</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Set &amp;axis from two points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click two points on the selected fragment in the 3D view: its axis guide goes through them (Escape cancels)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Edit axis…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::LogDock</name>
@@ -626,6 +642,10 @@
         <source>Contact with the drum</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Placement in the drum frame</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::SceneDock</name>
@@ -663,6 +683,33 @@
     <name>stylos::widgets::AssemblyDeveloppeeJob</name>
     <message>
         <source>Développée of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AxisGuideEditor</name>
+    <message>
+        <source>Set axis cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Click two points on %1 for its axis (Escape cancels)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The two points picked on %1 are the same: pick two points apart along its axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Set the axis of %1 from two points</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Axis of %1 set through the two points picked, %2 mm apart</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Edit the axis of %1</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -729,6 +776,18 @@
     </message>
     <message>
         <source>%1 %</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Against %1: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Against %1: no contact (no point within 5 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Against %1: largest interpenetration %2, median gap %3, 90 % gap %4 (%5 points)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -915,6 +974,10 @@
         <source>Skydome</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>the unrolling radius must be a positive length</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeView</name>
@@ -1006,6 +1069,84 @@
     </message>
     <message>
         <source>Dock %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DrumFramePoseWidget</name>
+    <message>
+        <source>θ about the axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>z along the axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>r from the axis:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lean:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Roll:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Azimuth of the fragment&apos;s centre about the drum axis, from the drum&apos;s reference direction (as in its développée); typing turns the fragment about the axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Height of the fragment&apos;s centre along the drum axis, from the axis guide&apos;s point</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Distance of the fragment&apos;s centre from the drum axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn about the tangent through the fragment&apos;s centre (leans it in or out)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn about the radial direction through the fragment&apos;s centre (turns its flutes sideways)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>This fragment has no drum with an axis guide (put it in an assembly with a drum, or Tools › Dock against this drum), or its octree is not open yet.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>No fragment selected.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>In the frame of %1:</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::EditAxisDialog</name>
+    <message>
+        <source>Edit axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis guide in the fragment&apos;s own frame: a point on it and its direction.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Point (x, y, z):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Direction (x, y, z):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The direction of the axis cannot be zero: give at least one non-zero component (for a vertical axis: 0, 0, 1).</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

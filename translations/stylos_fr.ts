@@ -313,6 +313,22 @@
         <source>Lock &amp;tilts</source>
         <translation>Verrouiller les &amp;inclinaisons</translation>
     </message>
+    <message>
+        <source>Set &amp;axis from two points</source>
+        <translation>Définir l’&amp;axe par deux points</translation>
+    </message>
+    <message>
+        <source>Click two points on the selected fragment in the 3D view: its axis guide goes through them (Escape cancels)</source>
+        <translation>Cliquez deux points sur le fragment sélectionné dans la vue 3D : son guide d’axe passe par eux (Échap annule)</translation>
+    </message>
+    <message>
+        <source>&amp;Edit axis…</source>
+        <translation>&amp;Modifier l’axe…</translation>
+    </message>
+    <message>
+        <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
+        <translation>Saisir le point et la direction du guide d’axe du fragment sélectionné</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::LogDock</name>
@@ -626,6 +642,10 @@
         <source>Contact with the drum</source>
         <translation>Contact avec le tambour</translation>
     </message>
+    <message>
+        <source>Placement in the drum frame</source>
+        <translation>Placement dans le repère du tambour</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::SceneDock</name>
@@ -664,6 +684,33 @@
     <message>
         <source>Développée of %1</source>
         <translation>Développée de %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::AxisGuideEditor</name>
+    <message>
+        <source>Set axis cancelled</source>
+        <translation>Définition de l’axe annulée</translation>
+    </message>
+    <message>
+        <source>Click two points on %1 for its axis (Escape cancels)</source>
+        <translation>Cliquez deux points sur %1 pour son axe (Échap annule)</translation>
+    </message>
+    <message>
+        <source>The two points picked on %1 are the same: pick two points apart along its axis</source>
+        <translation>Les deux points choisis sur %1 sont confondus : choisissez deux points écartés le long de son axe</translation>
+    </message>
+    <message>
+        <source>Set the axis of %1 from two points</source>
+        <translation>Définir l’axe de %1 par deux points</translation>
+    </message>
+    <message>
+        <source>Axis of %1 set through the two points picked, %2 mm apart</source>
+        <translation>Axe de %1 défini par les deux points choisis, distants de %2 mm</translation>
+    </message>
+    <message>
+        <source>Edit the axis of %1</source>
+        <translation>Modifier l’axe de %1</translation>
     </message>
 </context>
 <context>
@@ -730,6 +777,18 @@
     <message>
         <source>%1 %</source>
         <translation>%1 %</translation>
+    </message>
+    <message>
+        <source>Against %1: %2</source>
+        <translation>Contre %1 : %2</translation>
+    </message>
+    <message>
+        <source>Against %1: no contact (no point within 5 mm)</source>
+        <translation>Contre %1 : aucun contact (aucun point à moins de 5 mm)</translation>
+    </message>
+    <message>
+        <source>Against %1: largest interpenetration %2, median gap %3, 90 % gap %4 (%5 points)</source>
+        <translation>Contre %1 : interpénétration maximale %2, écart médian %3, écart à 90 % %4 (%5 points)</translation>
     </message>
 </context>
 <context>
@@ -915,6 +974,10 @@
         <source>Skydome</source>
         <translation>Skydome</translation>
     </message>
+    <message>
+        <source>the unrolling radius must be a positive length</source>
+        <translation>le rayon de déroulement doit être une longueur positive</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeView</name>
@@ -1007,6 +1070,84 @@
     <message>
         <source>Dock %1</source>
         <translation>Amarrer %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DrumFramePoseWidget</name>
+    <message>
+        <source>θ about the axis:</source>
+        <translation>θ autour de l’axe :</translation>
+    </message>
+    <message>
+        <source>z along the axis:</source>
+        <translation>z le long de l’axe :</translation>
+    </message>
+    <message>
+        <source>r from the axis:</source>
+        <translation>r depuis l’axe :</translation>
+    </message>
+    <message>
+        <source>Lean:</source>
+        <translation>Dévers :</translation>
+    </message>
+    <message>
+        <source>Roll:</source>
+        <translation>Roulis :</translation>
+    </message>
+    <message>
+        <source>Azimuth of the fragment&apos;s centre about the drum axis, from the drum&apos;s reference direction (as in its développée); typing turns the fragment about the axis</source>
+        <translation>Azimut du centre du fragment autour de l’axe du tambour, depuis la direction de référence du tambour (comme dans sa développée) ; une saisie tourne le fragment autour de l’axe</translation>
+    </message>
+    <message>
+        <source>Height of the fragment&apos;s centre along the drum axis, from the axis guide&apos;s point</source>
+        <translation>Hauteur du centre du fragment le long de l’axe du tambour, depuis le point du guide d’axe</translation>
+    </message>
+    <message>
+        <source>Distance of the fragment&apos;s centre from the drum axis</source>
+        <translation>Distance du centre du fragment à l’axe du tambour</translation>
+    </message>
+    <message>
+        <source>Turn about the tangent through the fragment&apos;s centre (leans it in or out)</source>
+        <translation>Rotation autour de la tangente par le centre du fragment (l’incline vers l’intérieur ou l’extérieur)</translation>
+    </message>
+    <message>
+        <source>Turn about the radial direction through the fragment&apos;s centre (turns its flutes sideways)</source>
+        <translation>Rotation autour de la direction radiale par le centre du fragment (tourne ses cannelures de côté)</translation>
+    </message>
+    <message>
+        <source>This fragment has no drum with an axis guide (put it in an assembly with a drum, or Tools › Dock against this drum), or its octree is not open yet.</source>
+        <translation>Ce fragment n’a pas de tambour avec un guide d’axe (placez-le dans un assemblage avec un tambour, ou Outils › Amarrer contre ce tambour), ou son octree n’est pas encore ouvert.</translation>
+    </message>
+    <message>
+        <source>No fragment selected.</source>
+        <translation>Aucun fragment sélectionné.</translation>
+    </message>
+    <message>
+        <source>In the frame of %1:</source>
+        <translation>Dans le repère de %1 :</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::EditAxisDialog</name>
+    <message>
+        <source>Edit axis</source>
+        <translation>Modifier l’axe</translation>
+    </message>
+    <message>
+        <source>The axis guide in the fragment&apos;s own frame: a point on it and its direction.</source>
+        <translation>Le guide d’axe dans le repère propre du fragment : un point de l’axe et sa direction.</translation>
+    </message>
+    <message>
+        <source>Point (x, y, z):</source>
+        <translation>Point (x, y, z) :</translation>
+    </message>
+    <message>
+        <source>Direction (x, y, z):</source>
+        <translation>Direction (x, y, z) :</translation>
+    </message>
+    <message>
+        <source>The direction of the axis cannot be zero: give at least one non-zero component (for a vertical axis: 0, 0, 1).</source>
+        <translation>La direction de l’axe ne peut pas être nulle : donnez au moins une composante non nulle (pour un axe vertical : 0, 0, 1).</translation>
     </message>
 </context>
 <context>

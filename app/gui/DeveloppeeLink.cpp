@@ -6,6 +6,7 @@
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/docking/DrumGuidesCache.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
@@ -109,12 +110,61 @@ void DeveloppeeLink::refreshFragment()
     m_dock.view()->setGuideLines(fluteLines(m_document, *f));
 }
 
+void DeveloppeeLink::setGuidesCache(widgets::DrumGuidesCache* cache)
+{
+    if (m_cache) disconnect(m_cache, nullptr, this, nullptr);
+    m_cache = cache;
+    if (!cache) return;
+    connect(cache, &widgets::DrumGuidesCache::ready, this, [this](quint64 drum) { guidesArrived(drum, false); });
+    connect(cache, &widgets::DrumGuidesCache::failed, this, [this](quint64 drum, const QString&) { guidesArrived(drum, true); });
+}
+
+core::scene::FragmentId DeveloppeeLink::guidesOwner(const core::scene::Fragment& fragment) const
+{
+    if (core::scene::firstGuide(fragment, core::scene::GuideKind::Axis)) return fragment.id;
+    const core::scene::FragmentId drumId = m_document.drumFor(fragment.id);
+    const core::scene::Fragment* drum = drumId != fragment.id ? m_document.fragment(drumId) : nullptr;
+    return drum && core::scene::firstGuide(*drum, core::scene::GuideKind::Axis) ? drumId : core::scene::NoFragment;
+}
+
+bool DeveloppeeLink::leadingRadius(core::scene::FragmentId owner, std::optional<double>& radius)
+{
+    radius.reset();
+    if (!m_cache || owner == core::scene::NoFragment || owner == m_fitFailed) return true;
+    switch (m_cache->request(owner)) {
+    case widgets::DrumGuidesCache::State::Ready: radius = m_cache->guides(owner)->radius; return true;
+    case widgets::DrumGuidesCache::State::Fitting: return false;
+    case widgets::DrumGuidesCache::State::Unavailable: return true;
+    }
+    return true;
+}
+
+void DeveloppeeLink::guidesArrived(core::scene::FragmentId owner, bool failed)
+{
+    if (failed) m_fitFailed = owner;
+    if (!m_waiting || m_waiting->owner != owner) return;
+    const Waiting waiting = *m_waiting;
+    m_waiting.reset();
+    m_dock.setBusy(m_jobs.isRunning(m_dock.fragmentId()));
+    if (waiting.assembly != core::scene::NoAssembly) computeAssembly(waiting.assembly);
+    else if (waiting.fragment == m_dock.fragmentId()) compute();
+}
+
 void DeveloppeeLink::compute()
 {
     const core::scene::Fragment* f = m_document.fragment(m_dock.fragmentId());
     if (!f || m_jobs.isRunning(f->id)) return;
     const core::scene::FragmentId id = f->id;
-    const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), id, m_dock.settings());
+    widgets::DeveloppeeSettings settings = m_dock.settings();
+    if (settings.axis) {
+        const core::scene::FragmentId owner = guidesOwner(*f);
+        if (!leadingRadius(owner, settings.radius)) { // the guides are being fitted: compute when they are in
+            m_waiting = Waiting{owner, id, core::scene::NoAssembly};
+            m_dock.setBusy(true);
+            return;
+        }
+    }
+    const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), id, settings);
     const QString name = QString::fromStdString(f->name);
     const auto deliver = [this, name](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
         if (future.resultCount() == 0) { // cancelled from the Tasks dock
@@ -155,9 +205,15 @@ bool DeveloppeeLink::computeAssembly(core::scene::AssemblyId id)
         Q_EMIT finished(tr("The développée of %1 cannot start: its drum is still opening or busy").arg(name), true);
         return false;
     }
+    widgets::DeveloppeeSettings settings = m_dock.settings();
+    if (!leadingRadius(drumId, settings.radius)) {
+        m_waiting = Waiting{drumId, core::scene::NoFragment, id};
+        m_dock.setBusy(true);
+        return true;
+    }
     const widgets::AssemblyDeveloppeeJob job(QString::fromStdString(drum->octreePath.string()), drumId,
                                              core::unroll::Axis{axis->origin, axis->direction}, std::move(pieces),
-                                             m_dock.settings(), name);
+                                             settings, name);
     const auto deliver = [this, name](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
         if (future.resultCount() == 0) {
             Q_EMIT finished(tr("Développée of %1 cancelled").arg(name), false);

@@ -8,7 +8,10 @@
  *        computed for it (kept by the document, listed in the Scene dock). Several fragments may be
  *        computing at once; each result goes to its fragment. The jobs run through FragmentJobs: another
  *        project, or the fragment's removal, cancels them, and a result whose fragment or octree file is no
- *        longer the one it was computed for is dropped. GUI thread only.
+ *        longer the one it was computed for is dropped. The unrolling radius: with the guides' axis (the fragment's
+ *        own, or its drum's), the leading radius of those guides (DrumGuidesCache, fitted first when needed), so a
+ *        docked fragment and its drum unroll at the same scale; without the cache or usable guides (no flutes), the
+ *        radius fitted about the axis. GUI thread only.
  */
 #include "stylos/core/scene/Assembly.h"
 #include "stylos/core/scene/Fragment.h"
@@ -19,9 +22,12 @@
 
 #include <Eigen/Core>
 
+#include <optional>
+
 
 namespace stylos::widgets {
 class DeveloppeePanel;
+class DrumGuidesCache;
 struct DeveloppeeResult;
 class SceneDocument;
 class ViewportWidget;
@@ -37,6 +43,9 @@ public:
      *  TaskManager. */
     DeveloppeeLink(widgets::SceneDocument& document, widgets::DeveloppeePanel& dock, widgets::ViewportWidget* viewport,
                    QObject* parent = nullptr);
+
+    /** @brief The drum guides the unrolling radius comes from (not owned; null: none, the radius is fitted). */
+    void setGuidesCache(widgets::DrumGuidesCache* cache);
 
     /** @brief The fragment Compute works on (the Scene dock's current one); NoFragment for none. */
     void setFragment(core::scene::FragmentId id);
@@ -65,12 +74,28 @@ Q_SIGNALS:
 private:
     void markInView(quint64 fragmentId, const Eigen::Vector3d& octreePoint);
     void refreshFragment();
+    /** The fragment whose guides give @p fragment's axis: itself with an Axis guide, else its drum; NoFragment. */
+    core::scene::FragmentId guidesOwner(const core::scene::Fragment& fragment) const;
+    /** The leading radius for @p owner's guides: set in @p radius, true; false (a fit started, compute again on its
+     *  end: m_waiting) while it is fitted. Without guides to fit, true and no radius. */
+    bool leadingRadius(core::scene::FragmentId owner, std::optional<double>& radius);
+    void guidesArrived(core::scene::FragmentId owner, bool failed);
 
     widgets::SceneDocument& m_document;
     widgets::FragmentJobs m_jobs;
     widgets::DeveloppeePanel& m_dock;
     QPointer<widgets::ViewportWidget> m_viewport;
     core::scene::FragmentId m_fragment = core::scene::NoFragment;
+    QPointer<widgets::DrumGuidesCache> m_cache;
+    /** A computation waiting for its guides' fit: the guides' owner and what to compute (a fragment, or an
+     *  assembly when @c assembly). */
+    struct Waiting {
+        core::scene::FragmentId owner = core::scene::NoFragment;
+        core::scene::FragmentId fragment = core::scene::NoFragment;
+        core::scene::AssemblyId assembly = core::scene::NoAssembly;
+    };
+    std::optional<Waiting> m_waiting;
+    core::scene::FragmentId m_fitFailed = core::scene::NoFragment; ///< the guides whose fit failed last (no radius)
 };
 
 } // namespace stylos::app

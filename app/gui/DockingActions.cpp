@@ -1,6 +1,7 @@
 #include "DockingActions.h"
 
 #include "stylos/core/view/GuideGeometry.h"
+#include "stylos/widgets/docking/AxisGuideEditor.h"
 #include "stylos/widgets/docking/ContactMonitor.h"
 #include "stylos/widgets/docking/DockRunner.h"
 #include "stylos/widgets/docking/DrumGuidesCache.h"
@@ -21,7 +22,9 @@ DockingActions::DockingActions(widgets::SceneDocument& document, widgets::Viewpo
       m_cache(new widgets::DrumGuidesCache(document, this)), m_docker(new widgets::DockRunner(document, *m_cache, this)),
       m_contact(new widgets::ContactMonitor(document, *m_cache, this)), m_moveTool(new QAction(this)),
       m_frames(new QActionGroup(this)), m_dockAgainst(new QAction(this)), m_dockToFlutes(new QAction(this)),
-      m_fitGuides(new QAction(this)), m_deleteGuides(new QAction(this)), m_showGuides(new QAction(this))
+      m_fitGuides(new QAction(this)), m_setAxis(new QAction(this)), m_editAxis(new QAction(this)),
+      m_axisEditor(new widgets::AxisGuideEditor(document, viewport, this)), m_window(window),
+      m_deleteGuides(new QAction(this)), m_showGuides(new QAction(this))
 {
     m_moveTool->setObjectName(QStringLiteral("actionMoveTool"));
     m_dockAgainst->setObjectName(QStringLiteral("actionDockAgainst"));
@@ -79,6 +82,7 @@ DockingActions::DockingActions(widgets::SceneDocument& document, widgets::Viewpo
     connect(m_fits, &widgets::GuideFitRunner::failed, this,
             [this](quint64, const QString& message) { Q_EMIT reported(message, true); });
     createDocking();
+    createAxisEditing(viewport);
     connect(&document, &widgets::SceneDocument::fragmentChanged, this, &DockingActions::updateEnabled);
     connect(&document, &widgets::SceneDocument::dockingDrumChanged, this, &DockingActions::updateEnabled);
     connect(&document, &widgets::SceneDocument::structureChanged, this, &DockingActions::updateEnabled);
@@ -118,6 +122,19 @@ void DockingActions::createDocking()
     connect(&m_document, &widgets::SceneDocument::fragmentRemoved, this, &DockingActions::updateEnabled);
 }
 
+void DockingActions::createAxisEditing(widgets::ViewportWidget* viewport)
+{
+    m_setAxis->setObjectName(QStringLiteral("actionSetAxisFromPoints"));
+    m_editAxis->setObjectName(QStringLiteral("actionEditAxis"));
+    connect(m_setAxis, &QAction::triggered, this, [this, viewport] {
+        m_moveTool->setChecked(false); // the pick tool takes the view's tool from the gizmo
+        if (viewport) viewport->setFocus();
+        m_axisEditor->startPicking(m_fragment);
+    });
+    connect(m_editAxis, &QAction::triggered, this, [this] { m_axisEditor->editAxis(m_fragment, &m_window); });
+    connect(m_axisEditor, &widgets::AxisGuideEditor::reported, this, &DockingActions::reported);
+}
+
 void DockingActions::populate(QMenu& tools, QMenu& view)
 {
     tools.addSeparator();
@@ -132,6 +149,8 @@ void DockingActions::populate(QMenu& tools, QMenu& view)
     m_lockMenu->addActions(m_locks);
     tools.addSeparator();
     tools.addAction(m_fitGuides);
+    tools.addAction(m_setAxis);
+    tools.addAction(m_editAxis);
     tools.addAction(m_deleteGuides);
     view.addAction(m_showGuides);
     retranslateUi();
@@ -154,6 +173,8 @@ void DockingActions::updateEnabled()
     m_dockAgainst->setEnabled(f && core::view::drumAxisOf(*f).has_value());
     m_dockToFlutes->setEnabled(m_docker->canDock(m_fragment));
     m_fitGuides->setEnabled(f != nullptr);
+    m_setAxis->setEnabled(f != nullptr && m_gizmo != nullptr);
+    m_editAxis->setEnabled(f != nullptr);
     m_deleteGuides->setEnabled(f && !f->guides.empty());
 }
 
@@ -176,6 +197,11 @@ void DockingActions::retranslateUi()
     for (int i = 0; i < m_locks.size(); ++i) m_locks[i]->setText(locks.value(i));
     m_fitGuides->setText(tr("Fit drum &guides"));
     m_fitGuides->setStatusTip(tr("Fit the axis and the flute lines of the selected drum in the background"));
+    m_setAxis->setText(tr("Set &axis from two points"));
+    m_setAxis->setStatusTip(tr("Click two points on the selected fragment in the 3D view: its axis guide goes through "
+                               "them (Escape cancels)"));
+    m_editAxis->setText(tr("&Edit axis…"));
+    m_editAxis->setStatusTip(tr("Type the point and direction of the selected fragment's axis guide"));
     m_deleteGuides->setText(tr("De&lete guides"));
     m_deleteGuides->setStatusTip(tr("Remove the axis and flute guides of the selected fragment"));
     m_showGuides->setText(tr("Show &guides"));

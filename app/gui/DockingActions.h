@@ -2,7 +2,7 @@
 /** @file
  * @brief The docking actions: Tools › Move tool (the gizmo, W in the 3D view), Gizmo frame (World, Fragment,
  *        Drum; L in the view cycles them), Dock against this drum, Dock to flutes (Ctrl+J) and its Docking locks
- *        (z, r, θ, tilts), Fit drum guides, Delete guides; View › Show guides. They act on the current fragment
+ *        (z, r, θ, tilts), Fit drum guides, Set axis from two points, Edit axis…, Delete guides; View › Show guides. They act on the current fragment
  *        through the widgets' GizmoController, DockRunner, GuideFitRunner and GuidesDisplay, and keep its contact
  *        readout (ContactMonitor, shown by the Properties dock) on it; results and failures of the fits and docks
  *        go out as reported() for the window's log. GUI thread only.
@@ -19,6 +19,7 @@ class QMenu;
 class QWidget;
 
 namespace stylos::widgets {
+class AxisGuideEditor;
 class ContactMonitor;
 class DockRunner;
 class DrumGuidesCache;
@@ -50,8 +51,13 @@ public:
     widgets::GuideFitRunner& guideFits() const { return *m_fits; }
     widgets::DockRunner& docker() const { return *m_docker; }
     widgets::ContactMonitor& contact() const { return *m_contact; }
+    /** @brief The drums' fitted guides (the développée's unrolling radius comes from them too). */
+    widgets::DrumGuidesCache& guidesCache() const { return *m_cache; }
     QAction* moveToolAction() const { return m_moveTool; }
     QAction* fitGuidesAction() const { return m_fitGuides; }
+    QAction* setAxisAction() const { return m_setAxis; }
+    QAction* editAxisAction() const { return m_editAxis; }
+    widgets::AxisGuideEditor& axisEditor() const { return *m_axisEditor; }
     QAction* showGuidesAction() const { return m_showGuides; }
     QAction* dockToFlutesAction() const { return m_dockToFlutes; }
     /** @brief The lock actions: z, r, θ, tilts (checkable). */
@@ -64,6 +70,7 @@ Q_SIGNALS:
 private:
     void updateEnabled();
     void createDocking();
+    void createAxisEditing(widgets::ViewportWidget* viewport);
 
     widgets::SceneDocument& m_document;
     widgets::GizmoController* m_gizmo = nullptr;
@@ -81,6 +88,10 @@ private:
     QMenu* m_lockMenu = nullptr;
     QList<QAction*> m_locks;
     QAction* m_fitGuides;
+    QAction* m_setAxis;
+    QAction* m_editAxis;
+    widgets::AxisGuideEditor* m_axisEditor;
+    QWidget& m_window;
     QAction* m_deleteGuides;
     QAction* m_showGuides;
 };

@@ -140,6 +140,7 @@ void MainWindow::createMenus()
     m_docking = new DockingActions(*m_document, m_viewport, *this);
     m_docking->populate(*m_actions->toolsMenu(), *viewMenu);
     connect(m_docking, &DockingActions::reported, this, &MainWindow::report);
+    m_developpeeLink->setGuidesCache(&m_docking->guidesCache());
     m_assemblies = new AssemblyActions(*m_document, *m_sceneDock, *this);
     m_assemblies->populate(*m_actions->toolsMenu());
     connect(m_assemblies, &AssemblyActions::reported, this, &MainWindow::report);

@@ -2,6 +2,7 @@
 
 #include "DisplaySettingsWidget.h"
 #include "stylos/widgets/docking/ContactReadoutWidget.h"
+#include "stylos/widgets/docking/DrumFramePoseWidget.h"
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 
 #include <QEvent>
@@ -12,7 +13,8 @@
 namespace stylos::app {
 
 PropertiesDock::PropertiesDock(widgets::SceneDocument& document, widgets::ViewportWidget* viewport, QWidget* parent)
-    : QDockWidget(parent), m_fragmentBox(new QGroupBox), m_fragment(new widgets::FragmentPropertiesWidget(document))
+    : QDockWidget(parent), m_fragmentBox(new QGroupBox), m_drumFrameBox(new QGroupBox),
+      m_drumFrame(new widgets::DrumFramePoseWidget(document)), m_fragment(new widgets::FragmentPropertiesWidget(document))
 {
     setObjectName(QStringLiteral("propertiesDock"));
     auto* contents = new QWidget;
@@ -21,6 +23,9 @@ PropertiesDock::PropertiesDock(widgets::SceneDocument& document, widgets::Viewpo
     fragmentLayout->setContentsMargins(4, 4, 4, 4);
     fragmentLayout->addWidget(m_fragment);
     layout->addWidget(m_fragmentBox);
+    m_drumFrameBox->setObjectName(QStringLiteral("drumFrameBox"));
+    (new QVBoxLayout(m_drumFrameBox))->addWidget(m_drumFrame);
+    layout->addWidget(m_drumFrameBox);
     if (viewport) {
         m_displayBox = new QGroupBox;
         m_display = new DisplaySettingsWidget(*viewport);
@@ -41,6 +46,7 @@ PropertiesDock::PropertiesDock(widgets::SceneDocument& document, widgets::Viewpo
 void PropertiesDock::setFragment(core::scene::FragmentId id)
 {
     m_fragment->setFragment(id);
+    m_drumFrame->setFragment(id);
 }
 
 void PropertiesDock::addContactReadout(widgets::ContactMonitor& monitor)
@@ -53,7 +59,7 @@ void PropertiesDock::addContactReadout(widgets::ContactMonitor& monitor)
     layout->setContentsMargins(4, 4, 4, 4);
     layout->addWidget(m_contact);
     auto* contents = static_cast<QVBoxLayout*>(m_fragmentBox->parentWidget()->layout());
-    contents->insertWidget(contents->indexOf(m_fragmentBox) + 1, m_contactBox);
+    contents->insertWidget(contents->indexOf(m_drumFrameBox) + 1, m_contactBox);
     retranslateUi();
 }
 
@@ -72,6 +78,7 @@ void PropertiesDock::retranslateUi()
 {
     setWindowTitle(tr("Properties"));
     m_fragmentBox->setTitle(tr("Fragment"));
+    m_drumFrameBox->setTitle(tr("Placement in the drum frame"));
     if (m_displayBox) m_displayBox->setTitle(tr("Display"));
     if (m_contactBox) m_contactBox->setTitle(tr("Contact with the drum"));
 }

@@ -1,7 +1,7 @@
 #pragma once
 /** @file
  * @brief The Properties dock: the selected fragment (FragmentPropertiesWidget: name, visibility, colour,
- *        pose, point and cell counts), its contact with the docking drum (ContactReadoutWidget, once
+ *        pose, point and cell counts), its placement in its drum's frame (DrumFramePoseWidget), its contact with the docking drum (ContactReadoutWidget, once
  *        addContactReadout() is called) and the 3D view's display settings (DisplaySettingsWidget), in a
  *        scroll area. GUI thread only.
  */
@@ -15,6 +15,7 @@ class QScrollArea;
 namespace stylos::widgets {
 class ContactMonitor;
 class ContactReadoutWidget;
+class DrumFramePoseWidget;
 class FragmentPropertiesWidget;
 class SceneDocument;
 class ViewportWidget;
@@ -39,6 +40,7 @@ public:
     /** @brief Scrolls the dock so that the contact box shows (after addContactReadout()). */
     void showContactReadout();
     widgets::FragmentPropertiesWidget* fragmentWidget() const { return m_fragment; }
+    widgets::DrumFramePoseWidget* drumFrameWidget() const { return m_drumFrame; }
     /** @brief Null without a 3D view. */
     DisplaySettingsWidget* displaySettings() const { return m_display; }
 
@@ -52,6 +54,8 @@ private:
     QScrollArea* m_scroll;
     QGroupBox* m_displayBox = nullptr;
     QGroupBox* m_contactBox = nullptr;
+    QGroupBox* m_drumFrameBox;
+    widgets::DrumFramePoseWidget* m_drumFrame;
     widgets::ContactReadoutWidget* m_contact = nullptr;
     widgets::FragmentPropertiesWidget* m_fragment;
     DisplaySettingsWidget* m_display = nullptr;

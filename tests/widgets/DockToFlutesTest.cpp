@@ -9,6 +9,7 @@
 #include "DockGeometry.h"
 #include "WidgetTestSupport.h"
 
+#include "DeveloppeeLink.h"
 #include "DockingActions.h"
 #include "MainWindow.h"
 #include "PropertiesDock.h"
@@ -16,6 +17,8 @@
 #include "Translations.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/scene/SceneEigen.h"
@@ -112,6 +115,8 @@ private Q_SLOTS:
     void aPlainFragmentMovesNothing();
     void theContactReadoutFollowsThePose();
     void theWindowDocksWithTheLocksChosen();
+    void theFragmentUnrollsAtTheDrumsLeadingRadius();
+    void theReadoutMeasuresTheOtherMembers();
 
 private:
     /** A document holding the drum (with its fitted guides, the docking drum) at m_drumPose. */
@@ -341,6 +346,79 @@ void DockToFlutesTest::theWindowDocksWithTheLocksChosen()
     QVERIFY(readout->pointsLabel()->text() != QStringLiteral("—"));
     window.tasks().cancelAllAndWait();
     QSettings().clear();
+}
+
+void DockToFlutesTest::theFragmentUnrollsAtTheDrumsLeadingRadius()
+{
+    // The fragment (no axis of its own) at its true place against the drum: Compute in the Développée dock unrolls
+    // it about the drum's axis at the drum guides' leading radius (fitted once, in the background, first), and the
+    // drum's own développée at the same radius: the same millimetres per degree.
+    TaskManager tasks;
+    SceneDocument document(tasks);
+    DrumGuidesCache cache(document);
+    widgets::DeveloppeePanel panel;
+    app::DeveloppeeLink link(document, panel, nullptr);
+    link.setGuidesCache(&cache);
+    const scene::FragmentId drum = addDrum(document);
+    const scene::FragmentId id = addPiece(document, m_fragment, "fragment", m_drumPose * truth(m_fragment));
+    link.setFragment(id);
+    QVERIFY(panel.axisGuide().has_value()); // the drum's, carried into the fragment's frame
+    link.compute();
+    QTRY_VERIFY_WITH_TIMEOUT(document.developpee(id) != nullptr, 120000);
+    const auto guides = cache.guides(drum);
+    QVERIFY(guides != nullptr);
+    const auto& fragmentSurface = document.developpee(id)->fit.surface;
+    qInfo("leading radius %.3f mm; the fragment unrolled at %.3f mm", guides->radius * 1e3,
+          fragmentSurface.referenceRadius() * 1e3);
+    QCOMPARE(fragmentSurface.radius(), guides->radius);
+    QCOMPARE(fragmentSurface.referenceRadius(), guides->radius);
+    QVERIFY(document.developpee(id)->fit.rmsResidual < guides->fluteDepth); // on the drum's leading cylinder
+
+    link.setFragment(drum);
+    link.compute();
+    QTRY_VERIFY_WITH_TIMEOUT(document.developpee(drum) != nullptr, 120000);
+    QCOMPARE(document.developpee(drum)->fit.surface.referenceRadius(), guides->radius);
+    QCOMPARE(cache.fits(), 1);
+    tasks.cancelAllAndWait();
+}
+
+void DockToFlutesTest::theReadoutMeasuresTheOtherMembers()
+{
+    // The drum, the fragment at its true place and a copy of it 2 mm further in, in one assembly: the fragment's
+    // readout lists the copy, about 2 mm into it (its inner face lies 2 mm inside the copy's), and follows the
+    // copy's move out of reach.
+    TaskManager tasks;
+    SceneDocument document(tasks);
+    DrumGuidesCache cache(document);
+    ContactMonitor monitor(document, cache);
+    monitor.setDelay(0);
+    widgets::ContactReadoutWidget widget(monitor);
+    const scene::FragmentId drum = addDrum(document);
+    const Eigen::Isometry3d place = truth(m_fragment);
+    const scene::FragmentId id = addPiece(document, m_fragment, "fragment", m_drumPose * place);
+    const Eigen::Isometry3d inward = test::perturbed(place, m_frame, place * m_fragment.centre, 0.0, 0.0, -0.002);
+    const scene::FragmentId copy = addPiece(document, m_fragment, "copy", m_drumPose * inward);
+    const auto assembly = document.newAssembly(QStringLiteral("Drum 1"), {drum, id, copy});
+    QVERIFY(assembly != scene::NoAssembly);
+    QVERIFY(document.setAssemblyDrum(assembly, drum));
+    monitor.setFragment(id);
+    QTRY_COMPARE_WITH_TIMEOUT(monitor.state(), ContactMonitor::State::Ready, 120000);
+    QCOMPARE(monitor.members().size(), std::size_t(1));
+    const auto& member = monitor.members()[0];
+    QCOMPARE(member.id, quint64(copy));
+    qInfo("against the copy 2 mm in: %zu points, largest %.3f mm, median %.3f mm", member.readout.points,
+          member.readout.largestInterpenetration * 1e3, member.readout.medianGap * 1e3);
+    QVERIFY(member.readout.points > 100);
+    QVERIFY2(std::abs(member.readout.largestInterpenetration - 0.002) < 0.0005,
+             qPrintable(QString::number(member.readout.largestInterpenetration)));
+    QVERIFY(widget.membersLabel()->text().contains(QStringLiteral("copy")));
+    // The copy moved 10 cm away: no contact with it any more.
+    const int deliveries = monitor.deliveries();
+    QVERIFY(document.setFragmentWorldPose(copy, poseOf(Eigen::Translation3d(0.0, 0.0, 0.1) * m_drumPose * inward)));
+    QTRY_VERIFY_WITH_TIMEOUT(monitor.deliveries() > deliveries && monitor.state() == ContactMonitor::State::Ready, 60000);
+    QCOMPARE(monitor.members()[0].readout.points, std::size_t(0));
+    QVERIFY(widget.membersLabel()->text().contains(QStringLiteral("no contact")));
+    tasks.cancelAllAndWait();
 }
 
 STYLOS_WIDGET_TEST_MAIN(DockToFlutesTest)

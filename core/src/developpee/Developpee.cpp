@@ -22,6 +22,42 @@ struct Split {
     double fit, unroll, shade;
 };
 
+/** The surface about the given axis at the given unrolling radius: a cylinder as it is (its RMS over every point),
+ *  a cone or a revolution fitted, then measured at @p radius. */
+Result<unroll::FitReport> givenSurface(const cloud::PointCloud& cloud, const unroll::FitOptions& fitOptions,
+                                       double radius, ProgressSink* progress)
+{
+    if (fitOptions.kind != unroll::SurfaceKind::Cylinder) {
+        auto fit = unroll::fitSurface(cloud, fitOptions, progress);
+        if (!fit) return fit;
+        const unroll::Surface& s = fit->surface;
+        auto surface = s.kind() == unroll::SurfaceKind::Cone ? unroll::Surface::cone(s.axis(), s.radius(), s.slope(), radius)
+                                                             : unroll::Surface::revolution(s.axis(), *s.meridian(), radius);
+        if (!surface) return surface.error();
+        fit->surface = std::move(surface).value();
+        return fit;
+    }
+    const auto start = Clock::now();
+    auto surface = unroll::Surface::cylinder(*fitOptions.axis, radius);
+    if (!surface) return surface.error();
+    unroll::FitReport report{.surface = std::move(surface).value()};
+    const unroll::Axis& axis = *fitOptions.axis;
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < cloud.size(); ++i) {
+        const Eigen::Vector3d d = cloud.world(i) - axis.point;
+        const double rho = (d - d.dot(axis.direction) * axis.direction).norm();
+        sum += (rho - radius) * (rho - radius);
+        ++n;
+    }
+    report.rmsResidual = n > 0 ? std::sqrt(sum / double(n)) : 0.0;
+    report.inlierFraction = 1.0;
+    report.points = n;
+    report.seconds = secondsSince(start);
+    if (progress) progress->update(1.0);
+    return report;
+}
+
 /**
  * Fit, unroll, shade @p cloud; @p release is called once the points are no longer needed (the file
  * version frees them before shading). @p timings.load is the caller's.
@@ -39,7 +75,8 @@ Result<Developpee> develop(const cloud::PointCloud& cloud, const DeveloppeeOptio
         fitOptions.axis = axis;
     }
     SubProgress fitStep(progress, from, split.fit);
-    auto fit = unroll::fitSurface(cloud, fitOptions, &fitStep);
+    auto fit = fitOptions.axis && options.radius ? givenSurface(cloud, fitOptions, *options.radius, &fitStep)
+                                                 : unroll::fitSurface(cloud, fitOptions, &fitStep);
     if (!fit) return fit.error();
     timings.fit = fit->seconds;
 
@@ -82,6 +119,7 @@ Status DeveloppeeOptions::check(const std::string& source) const
         return invalid("the light elevation must be between 0 and 90 degrees");
     if (axis && (!axis->point.allFinite() || !axis->direction.allFinite() || axis->direction.norm() < 1e-12))
         return invalid("the axis needs a finite point and a non-zero direction");
+    if (radius && !(std::isfinite(*radius) && *radius > 0.0)) return invalid("the unrolling radius must be a positive length in metres");
     return {};
 }
 

@@ -25,6 +25,21 @@ double quantile(const std::vector<double>& values, double p)
 
 } // namespace
 
+ContactReadout summariseContact(std::vector<double> d)
+{
+    ContactReadout readout;
+    readout.points = d.size();
+    if (d.empty()) return readout;
+    std::sort(d.begin(), d.end());
+    readout.largestInterpenetration = std::max(0.0, -d.front());
+    readout.medianGap = quantile(d, 0.5);
+    readout.gap90 = quantile(d, 0.9);
+    readout.gap99 = quantile(d, 0.99);
+    const auto within = std::count_if(d.begin(), d.end(), [](double v) { return std::abs(v) <= kHalfMillimetre; });
+    readout.withinHalfMillimetre = double(within) / double(d.size());
+    return readout;
+}
+
 double profileDistance(const FluteModel& model, const Eigen::Vector3d& p, Eigen::Vector3d* normal)
 {
     const double rho = std::max(std::hypot(p.x(), p.y()), 1e-12);
@@ -64,17 +79,7 @@ Result<ContactReadout> measureContact(const cloud::PointCloud& fragment, const D
             continue;
         d.push_back(distance);
     }
-    ContactReadout readout;
-    readout.points = d.size();
-    if (d.empty()) return readout;
-    std::sort(d.begin(), d.end());
-    readout.largestInterpenetration = std::max(0.0, -d.front());
-    readout.medianGap = quantile(d, 0.5);
-    readout.gap90 = quantile(d, 0.9);
-    readout.gap99 = quantile(d, 0.99);
-    const auto within = std::count_if(d.begin(), d.end(), [](double v) { return std::abs(v) <= kHalfMillimetre; });
-    readout.withinHalfMillimetre = double(within) / double(d.size());
-    return readout;
+    return summariseContact(std::move(d));
 }
 
 } // namespace stylos::core::dock

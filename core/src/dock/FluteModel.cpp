@@ -22,6 +22,14 @@ DrumFrame::DrumFrame(const DrumGuides& guides)
     rows.row(2) = d.transpose();
 }
 
+DrumFrame::DrumFrame(const unroll::Axis& axis)
+{
+    DrumGuides guides;
+    guides.axis = axis;
+    guides.reference = unroll::defaultReferenceDir(axis.direction.normalized());
+    *this = DrumFrame(guides);
+}
+
 Result<FluteModel> FluteModel::fromGuides(const DrumGuides& g)
 {
     const int bins = int(g.profile.size());

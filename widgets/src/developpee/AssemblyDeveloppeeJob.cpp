@@ -39,6 +39,7 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
     for (std::size_t k = 0; k < m_pieces.size(); ++k) pieces.push_back({&clouds[k], m_pieces[k].toDrum, m_pieces[k].fragmentId});
     core::developpee::DeveloppeeOptions options = m_settings.options();
     options.axis = m_axis;
+    options.radius = m_settings.radius; // the drum guides' leading radius, when known
     core::SubProgress computing(progress, 0.2, 0.97);
     auto made = core::developpee::computeAssemblyDeveloppee(*drum, pieces, options, progress ? &computing : nullptr);
     if (!made) return made.error();

@@ -98,6 +98,7 @@ DeveloppeeSettings DeveloppeePanel::settings() const
     s.directions = m_directions->value();
     s.pixelSize = m_pixelSize->value() * 1e-3;
     s.axis.reset();
+    s.radius.reset();
     if (m_axisGuide && m_useAxis->isChecked()) s.axis = m_axisGuide;
     return s;
 }
@@ -106,6 +107,7 @@ void DeveloppeePanel::setSettings(const DeveloppeeSettings& settings)
 {
     m_hidden = settings;
     m_hidden.axis.reset();
+    m_hidden.radius.reset();
     m_surface->setCurrentIndex(m_surface->findData(static_cast<int>(settings.surface)));
     m_shading->setCurrentIndex(m_shading->findData(static_cast<int>(settings.shading)));
     m_directions->setValue(settings.directions);

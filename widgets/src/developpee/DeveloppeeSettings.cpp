@@ -31,6 +31,7 @@ QString DeveloppeeSettings::problem() const
         return tr("the light elevation must be between 0° and 90°");
     if (axis && (!finite(axis->point) || !finite(axis->direction) || axis->direction.norm() < 1e-12))
         return tr("the axis needs a finite point and a non-zero direction");
+    if (radius && !(std::isfinite(*radius) && *radius > 0.0)) return tr("the unrolling radius must be a positive length");
     return {};
 }
 
@@ -66,6 +67,7 @@ core::developpee::DeveloppeeOptions DeveloppeeSettings::options() const
     core::developpee::DeveloppeeOptions o;
     o.surface = surface;
     o.axis = axis;
+    if (axis) o.radius = radius;
     o.shading = shading;
     o.directions = directions;
     o.light = light;
@@ -112,7 +114,7 @@ bool DeveloppeeSettings::operator==(const DeveloppeeSettings& o) const
     return surface == o.surface && shading == o.shading && directions == o.directions &&
            light.azimuth == o.light.azimuth && light.elevation == o.light.elevation &&
            light.verticalExaggeration == o.light.verticalExaggeration && stretch == o.stretch &&
-           pixelSize == o.pixelSize && sameAxis(axis, o.axis);
+           pixelSize == o.pixelSize && sameAxis(axis, o.axis) && radius == o.radius;
 }
 
 } // namespace stylos::widgets

@@ -14,7 +14,11 @@ ContactMonitor::ContactMonitor(SceneDocument& document, DrumGuidesCache& cache, 
     m_timer->setSingleShot(true);
     m_timer->setInterval(300);
     connect(m_timer, &QTimer::timeout, this, &ContactMonitor::measure);
-    const auto concerns = [this](quint64 id) { return id == m_fragment || id == m_document.drumFor(m_fragment); };
+    const auto concerns = [this](quint64 id) {
+        if (id == m_fragment || id == m_document.drumFor(m_fragment)) return true;
+        const core::scene::Fragment *f = m_document.fragment(m_fragment), *other = m_document.fragment(id);
+        return f && other && f->assembly != core::scene::NoAssembly && other->assembly == f->assembly;
+    };
     connect(&m_document, &SceneDocument::fragmentChanged, this, [this, concerns](quint64 id) {
         if (concerns(id)) schedule();
     });
@@ -27,6 +31,7 @@ ContactMonitor::ContactMonitor(SceneDocument& document, DrumGuidesCache& cache, 
     });
     connect(&m_document, &SceneDocument::dockingDrumChanged, this, &ContactMonitor::schedule);
     connect(&m_document, &SceneDocument::assemblyChanged, this, &ContactMonitor::schedule); // its drum or pose
+    connect(&m_document, &SceneDocument::structureChanged, this, &ContactMonitor::schedule); // its members
     connect(&m_document, &SceneDocument::sceneReset, this, [this] { setFragment(core::scene::NoFragment); });
     connect(&m_cache, &DrumGuidesCache::ready, this, [this](quint64 drum) {
         if (drum == m_document.drumFor(m_fragment)) schedule();
@@ -57,6 +62,23 @@ std::optional<Eigen::Isometry3d> ContactMonitor::relativePose() const
            Eigen::Isometry3d(core::scene::toEigen(m_document.worldPose(f->id)));
 }
 
+std::vector<ContactJob::Other> ContactMonitor::others() const
+{
+    std::vector<ContactJob::Other> list;
+    const core::scene::Fragment* f = m_document.fragment(m_fragment);
+    if (!f || f->assembly == core::scene::NoAssembly) return list;
+    const FragmentId drum = m_document.drumFor(m_fragment);
+    const Eigen::Isometry3d toFragment =
+        Eigen::Isometry3d(core::scene::toEigen(m_document.worldPose(m_fragment))).inverse();
+    for (FragmentId id : m_document.scene().membersOf(f->assembly)) {
+        const core::scene::Fragment* other = m_document.fragment(id);
+        if (id == m_fragment || id == drum || !other || !m_document.octree(id)) continue;
+        list.push_back({QString::fromStdString(other->octreePath.string()), id, QString::fromStdString(other->name),
+                        toFragment * Eigen::Isometry3d(core::scene::toEigen(m_document.worldPose(id)))});
+    }
+    return list;
+}
+
 void ContactMonitor::schedule()
 {
     const core::scene::Fragment* d = m_document.fragment(m_document.drumFor(m_fragment));
@@ -83,8 +105,12 @@ void ContactMonitor::measure()
     case DrumGuidesCache::State::Unavailable: return setState(State::Off);
     }
     m_jobs.cancel(m_fragment); // an older pose's readout is of no use any more
-    const ContactJob job(QString::fromStdString(f->octreePath.string()), m_fragment, drum, m_cache.guides(drum), *pose,
-                         QString::fromStdString(f->name));
+    ContactJob job(QString::fromStdString(f->octreePath.string()), m_fragment, drum, m_cache.guides(drum), *pose,
+                   QString::fromStdString(f->name));
+    auto list = others();
+    m_measuredOthers.clear();
+    for (const ContactJob::Other& other : list) m_measuredOthers.emplace_back(other.id, other.toFragment.matrix());
+    job.setOthers(std::move(list));
     m_jobs.start<ContactJobResult>(m_fragment, job.label(), job, [this](FragmentId, const QFuture<ContactJobResult>& future) {
         if (!future.isCanceled() && future.resultCount() > 0) delivered(future.result());
     });
@@ -97,9 +123,13 @@ void ContactMonitor::delivered(const ContactJobResult& result)
     if (result.fragmentId != m_fragment || result.drumId != m_document.drumFor(m_fragment) || !pose ||
         pose->matrix() != result.pose.matrix())
         return;
+    std::vector<std::pair<quint64, Eigen::Matrix4d>> now;
+    for (const ContactJob::Other& other : others()) now.emplace_back(other.id, other.toFragment.matrix());
+    if (now != m_measuredOthers) return; // a member has moved since: its own readout is on its way
     ++m_deliveries;
     if (!result.ok()) return setState(State::Failed, result.error);
     m_readout = result.readout;
+    m_members = result.members;
     setState(State::Ready);
 }
 

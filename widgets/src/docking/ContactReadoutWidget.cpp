@@ -6,11 +6,13 @@
 #include <QFormLayout>
 #include <QLabel>
 #include <QLocale>
+#include <QStringList>
 
 namespace stylos::widgets {
 
 ContactReadoutWidget::ContactReadoutWidget(ContactMonitor& monitor, QWidget* parent)
-    : QWidget(parent), m_monitor(monitor), m_form(new QFormLayout(this)), m_status(new QLabel(this))
+    : QWidget(parent), m_monitor(monitor), m_form(new QFormLayout(this)), m_status(new QLabel(this)),
+      m_members(new QLabel(this))
 {
     setObjectName(QStringLiteral("contactReadout"));
     m_form->setContentsMargins(0, 0, 0, 0);
@@ -23,6 +25,10 @@ ContactReadoutWidget::ContactReadoutWidget(ContactMonitor& monitor, QWidget* par
         m_values[i]->setTextInteractionFlags(Qt::TextSelectableByMouse);
         m_form->addRow(m_labels[i], m_values[i]);
     }
+    m_members->setObjectName(QStringLiteral("contactMembers"));
+    m_members->setWordWrap(true);
+    m_members->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_form->addRow(m_members);
     connect(&m_monitor, &ContactMonitor::changed, this, &ContactReadoutWidget::refresh);
     retranslateUi();
 }
@@ -70,6 +76,19 @@ void ContactReadoutWidget::refresh()
     m_values[3]->setText(ready ? mm(r.gap99) : none);
     m_values[4]->setText(ready ? tr("%1 %").arg(locale.toString(r.withinHalfMillimetre * 100.0, 'f', 1)) : none);
     m_values[5]->setText(ready ? locale.toString(qulonglong(r.points)) : none);
+    QStringList lines;
+    if (m_monitor.state() == ContactMonitor::State::Ready) {
+        for (const MemberContact& m : m_monitor.members()) {
+            if (!m.error.isEmpty()) lines << tr("Against %1: %2").arg(m.name, m.error);
+            else if (m.readout.points == 0) lines << tr("Against %1: no contact (no point within 5 mm)").arg(m.name);
+            else
+                lines << tr("Against %1: largest interpenetration %2, median gap %3, 90 % gap %4 (%5 points)")
+                             .arg(m.name, mm(m.readout.largestInterpenetration), mm(m.readout.medianGap),
+                                  mm(m.readout.gap90), locale.toString(qulonglong(m.readout.points)));
+        }
+    }
+    m_members->setText(lines.join(QLatin1Char('\n')));
+    m_members->setVisible(!lines.isEmpty());
 }
 
 } // namespace stylos::widgets

@@ -1,7 +1,7 @@
 #pragma once
 /** @file
  * @brief The développée of a scan in one call, for every caller (stylos-cli unroll, the workbench's
- *        Développée dock, plates): load → fit the surface (or take the given axis) → unroll → fill the
+ *        Développée dock, plates): load → fit the surface (or take the given axis, and radius) → unroll → fill the
  *        small holes → shade → contrast stretch. One options struct owns every default; the result keeps
  *        the height field with its Measured / Filled / Empty states, the full-precision shading (a plate can
  *        print it in 16 bits) and the pixel ↔ 3D map.
@@ -45,6 +45,11 @@ struct DeveloppeeOptions {
     /** Given axis in the file's frame (any non-zero direction, normalised here): only the radius, slope or
      *  profile is fitted. A fragment needs it. */
     std::optional<unroll::Axis> axis;
+    /** With a given axis: the unrolling radius (metres, > 0), e.g. the leading radius of the drum's guides, so a
+     *  fragment and its drum unroll at the same scale. A cylinder is then that cylinder about the axis (nothing
+     *  fitted; the fit report's RMS is that of the distances from it, over every point); a cone or a surface of
+     *  revolution is fitted and measures arc length at this radius (its referenceRadius). Ignored without an axis. */
+    std::optional<double> radius;
     Shading shading = Shading::Skydome;
     int directions = 40;                     ///< skydome azimuths, [kMinDirections, kMaxDirections]
     bool stretch = true;                     ///< skydome: stretch 1–99 % to [0, 1] (false: the exact Ω / 2π)

@@ -29,6 +29,7 @@
 #include <Eigen/Geometry>
 
 #include <cstddef>
+#include <vector>
 
 namespace stylos::core::dock {
 
@@ -46,6 +47,10 @@ struct ContactReadout {
     double gap99 = 0.0;                   ///< 99th percentile, metres
     double withinHalfMillimetre = 0.0;    ///< share of the points with |d| ≤ 0.5 mm, 0..1
 };
+
+/** @brief The readout of the signed distances @p distances (metres, any order): their number, the largest
+ *         interpenetration, the percentiles and the share within 0.5 mm as above; zeros when empty. */
+ContactReadout summariseContact(std::vector<double> distances);
 
 /** @brief The signed distance (metres) of @p framePoint (drum frame) to the profile of @p model along its normal,
  *         and that unit normal (drum frame, outward) in @p normal when given. See the file comment. */

@@ -24,6 +24,9 @@ struct DrumFrame {
     Eigen::Matrix3d rows = Eigen::Matrix3d::Identity(); ///< rows e1, e2, d: world → frame rotation
 
     explicit DrumFrame(const DrumGuides& guides);
+    /** The frame of an axis alone (a drum's Axis guide): e1 = unroll::defaultReferenceDir(d), as the fitted
+     *  guides' reference (so azimuths read the same as theirs and the développée's). */
+    explicit DrumFrame(const unroll::Axis& axis);
     DrumFrame() = default;
     Eigen::Vector3d toFrame(const Eigen::Vector3d& world) const { return rows * (world - origin); }
     Eigen::Vector3d toWorld(const Eigen::Vector3d& frame) const { return origin + rows.transpose() * frame; }

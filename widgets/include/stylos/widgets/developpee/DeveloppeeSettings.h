@@ -38,6 +38,9 @@ public:
     double pixelSize = 0.0;       ///< metres; 0 = automatic (the core's rule: the sampling spacing, ≥ 3 leaf edges)
     /** Given axis in the octree's frame (unit direction not required: normalised by the job). */
     std::optional<core::unroll::Axis> axis;
+    /** With the axis: the unrolling radius (metres), the leading radius of the drum's guides, so that a fragment and
+     *  its drum unroll at the same scale (core::developpee::DeveloppeeOptions::radius); not saved. */
+    std::optional<double> radius;
 
     /** @brief An empty string when usable; else a translated reason (directions, pixel size or axis out of range). */
     QString problem() const;
@@ -53,7 +56,7 @@ public:
     static const char* shadingKey(DeveloppeeShading shading);
     static std::optional<DeveloppeeShading> shadingFromKey(const QString& key);
 
-    /** @brief Writes everything but the axis (it belongs to a fragment) under the group "developpee". */
+    /** @brief Writes everything but the axis and radius (they belong to a fragment) under the group "developpee". */
     void save(QSettings& settings) const;
     /** @brief Reads what save() wrote; missing or invalid values keep their defaults. */
     static DeveloppeeSettings load(QSettings& settings);
