@@ -63,7 +63,7 @@ TEST(SplatBufferTest, LeavesOfTheFourLeafTreeExactly)
         const SplatVertex& v = splats.vertices[i];
         EXPECT_EQ(v.position, centres[leaf]) << "leaf " << leaf;
         EXPECT_EQ(v.position, cut.cells[i].centre);
-        EXPECT_EQ(v.size, std::max(1.0f, tree->leafSpacing(leaf))) << "leaf " << leaf; // the larger of edge and spacing
+        EXPECT_EQ(v.size, std::max(1.0f, 2.0f * tree->leafSpacing(leaf))) << "leaf " << leaf; // the larger of edge and spacing
         EXPECT_EQ(v.normal, normals[leaf]) << "leaf " << leaf;
         EXPECT_EQ(v.colour, colours[leaf]) << "leaf " << leaf;
     }
@@ -84,7 +84,7 @@ TEST(SplatBufferTest, InnerCellsTakeTheirFirstLeafAndTheShuffleIsAPermutation)
     ASSERT_EQ(inner.vertices.size(), 2u);
     for (std::size_t i = 0; i < 2; ++i) {
         const SplatVertex& v = inner.vertices[i];
-        EXPECT_EQ(v.size, 2.0f);
+        EXPECT_EQ(v.size, std::max(2.0f, 2.0f * tree->leafSpacing(view::firstLeafOf(*tree, 1, level1.cells[i].index))));
         EXPECT_EQ(v.position, level1.cells[i].centre);
         const auto expected = level1.cells[i].index == 0 ? std::array<std::uint8_t, 4>{10, 20, 30, 255}
                                                          : std::array<std::uint8_t, 4>{70, 80, 90, 255};
