@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 using namespace stylos::core;
 using stylos::core::view::Camera;
 using stylos::core::view::StandardView;
@@ -140,4 +143,54 @@ TEST(ScenePickTest, OrthographicRaysStartOnTheNearPlane)
     ASSERT_TRUE(pick);
     EXPECT_NEAR((pick->point - (O + Eigen::Vector3d(0.5, 0.5, 0.5))).norm(), 0, 1e-12);
     EXPECT_NEAR(pick->along, 9.9, 1e-9);
+}
+
+TEST(ScenePickTest, SceneCornersAreTheOccupiedCellsPosed)
+{
+    stylos::test::TempDir dir;
+    const auto tree = stylos::test::fourLeafOctree(dir);
+    ASSERT_NE(tree, nullptr);
+    // Four 1 m leaves, centres from (0.5, 0.5, 0.5) to (3.5, 2.5, 2.5): eight corners each, whole cells.
+    const auto corners = view::sceneCorners({viewFragment(1, tree)});
+    ASSERT_EQ(corners.size(), std::size_t{32});
+    Eigen::AlignedBox3d box;
+    for (const auto& c : corners) box.extend(c);
+    expectBox(box, O, O + Eigen::Vector3d(4, 3, 3));
+
+    ViewFragment moved = viewFragment(2, tree, translation(10, 0, -1));
+    moved.selected = true;
+    const auto selected = view::sceneCorners({viewFragment(1, tree), moved}, true);
+    ASSERT_EQ(selected.size(), std::size_t{32});
+    box.setEmpty();
+    for (const auto& c : selected) box.extend(c);
+    expectBox(box, O + Eigen::Vector3d(10, 0, -1), O + Eigen::Vector3d(14, 3, 2));
+    ViewFragment hidden = moved;
+    hidden.visible = false;
+    EXPECT_TRUE(view::sceneCorners({hidden}).empty());
+    EXPECT_TRUE(view::sceneCorners({viewFragment(1, tree)}, true).empty());
+}
+
+TEST(ScenePickTest, FitFramesTheOccupiedCells)
+{
+    // The four leaves seen from the front (x right, z up), 800 × 600, 45° vertical field: their picture is
+    // x ∈ [0, 4] by z ∈ [0, 3], depth y ∈ [0, 3] (the near face at y = 0). The eye is where the near face's
+    // edges touch the frustum: width 4 needs 2 / tanX from the near face, height 3 needs 1.5 / tanY; the
+    // larger, from the depth of the centre (1.5 m behind the near face), times the 5 % margin.
+    stylos::test::TempDir dir;
+    const auto tree = stylos::test::fourLeafOctree(dir);
+    ASSERT_NE(tree, nullptr);
+    Camera camera;
+    camera.setViewport(800, 600);
+    camera.setStandardView(StandardView::Front);
+    camera.fit(view::sceneCorners({viewFragment(1, tree)}));
+    const double tanY = std::tan(M_PI / 8), tanX = tanY * 800.0 / 600.0;
+    const double fromNearFace = std::max(2.0 / tanX, 1.5 / tanY);
+    EXPECT_NEAR(camera.distance(), 1.05 * (fromNearFace + 1.5), 1e-9);
+    EXPECT_NEAR((camera.target() - (O + Eigen::Vector3d(2, 1.5, 1.5))).norm(), 0.0, 1e-9);
+    // It fills the view: the top and bottom edges of the near face at 1 / 1.05 of the half height.
+    const auto top = camera.project(O + Eigen::Vector3d(2, 0, 3));
+    ASSERT_TRUE(top);
+    const double nearDepth = camera.distance() - 1.5;
+    EXPECT_NEAR(std::abs(top->y() - 300.0) / 300.0, 1.5 / (nearDepth * tanY), 1e-9);
+    EXPECT_GT(std::abs(top->y() - 300.0) / 300.0, 0.85);
 }
