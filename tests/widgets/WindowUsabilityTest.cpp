@@ -13,6 +13,7 @@
 #include "WidgetTestSupport.h"
 #include "stylos/core/scene/ImportPlacement.h"
 #include "stylos/core/view/GuideGeometry.h"
+#include "stylos/core/view/ScenePick.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 #include "stylos/widgets/document/SceneDocument.h"
@@ -33,6 +34,7 @@
 #include <QTreeView>
 #include <QUndoStack>
 
+#include <algorithm>
 #include <memory>
 
 using namespace stylos;

@@ -5,7 +5,7 @@
  */
 #include "stylos/widgets/document/CommandText.h"
 
-#include "document/commands/DocumentCommand.h"
+#include <QUndoCommand>
 
 namespace stylos::widgets {
 
