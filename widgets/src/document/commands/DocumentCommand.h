@@ -9,7 +9,7 @@
 
 namespace stylos::widgets {
 
-class DocumentCommand : public DocumentCommand {
+class DocumentCommand : public QUndoCommand {
 public:
     using QUndoCommand::QUndoCommand;
 
