@@ -171,10 +171,6 @@
         <translation>Χρώμα σάρωσης</translation>
     </message>
     <message>
-        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight</source>
-        <translation>Ο θόλος ουρανού απαιτεί Εργαλεία › Υπολογισμός θόλου ουρανού· χωρίς αυτόν, το θραύσμα φωτίζεται από το φως της κάμερας</translation>
-    </message>
-    <message>
         <source> ×</source>
         <translation> ×</translation>
     </message>
@@ -211,8 +207,24 @@
         <translation>Επίπεδο λεπτομέρειας</translation>
     </message>
     <message>
-        <source>Level</source>
-        <translation>Επίπεδο</translation>
+        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), or in the scan&apos;s colours</source>
+        <translation>Πώς φωτίζονται τα σημεία: από ένα φως στο μάτι (προβολέας), από τον ουρανό που βλέπει κάθε κελί (θόλος ουρανού· χρειάζεται Εργαλεία › Υπολογισμός θόλου ουρανού, αλλιώς ο προβολέας) ή με τα χρώματα της σάρωσης</translation>
+    </message>
+    <message>
+        <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
+        <translation>Μέγεθος των σημείων που σχεδιάζονται, ως πολλαπλάσιο του μεγέθους του κελιού τους στο οκταδικό δέντρο</translation>
+    </message>
+    <message>
+        <source>View-dependent: finer cells near the camera, within the point budget; global level: every fragment drawn at the one octree level below</source>
+        <translation>Κατά την όψη: λεπτότερα κελιά κοντά στην κάμερα, εντός του ορίου σημείων· καθολικό επίπεδο: κάθε θραύσμα σχεδιάζεται στο ένα επίπεδο οκταδικού δέντρου παρακάτω</translation>
+    </message>
+    <message>
+        <source>The octree level drawn when the level of detail is global (0: the root cell)</source>
+        <translation>Το επίπεδο του οκταδικού δέντρου που σχεδιάζεται όταν το επίπεδο λεπτομέρειας είναι καθολικό (0: το κελί ρίζα)</translation>
+    </message>
+    <message>
+        <source>Octree level</source>
+        <translation>Επίπεδο δέντρου</translation>
     </message>
     <message>
         <source>Eye-dome lighting</source>
@@ -525,10 +537,6 @@
         </translation>
     </message>
     <message>
-        <source>Skydome of %1: %2 cells at level %3, %4 directions, %5 s</source>
-        <translation>Θόλος ουρανού του %1: %2 κελιά στο επίπεδο %3, %4 διευθύνσεις, %5 s</translation>
-    </message>
-    <message>
         <source>The skydome of the selection is being computed already, or its octrees are not open yet</source>
         <translation>Ο θόλος ουρανού της επιλογής υπολογίζεται ήδη ή τα οκταδικά δέντρα της δεν έχουν ανοίξει ακόμη</translation>
     </message>
@@ -547,6 +555,10 @@
     <message>
         <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
         <translation>Η τρισδιάστατη προβολή απαιτεί OpenGL 3.3 (core profile), το οποίο δεν παρέχει αυτή η οθόνη.</translation>
+    </message>
+    <message>
+        <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
+        <translation>Θόλος ουρανού του %1: %2 κελιά στο επίπεδο %3, %4 κατευθύνσεις ουρανού, %5 s</translation>
     </message>
 </context>
 <context>
@@ -841,6 +853,10 @@
         <source>Drum 1 reconstruction</source>
         <translation>Αναστήλωση τυμπάνου 1</translation>
     </message>
+    <message>
+        <source>Flute %1</source>
+        <translation>Ράβδωση %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>
@@ -868,10 +884,6 @@
         <translation>Σκίαση</translation>
     </message>
     <message>
-        <source>Directions</source>
-        <translation>Διευθύνσεις</translation>
-    </message>
-    <message>
         <source>Pixel</source>
         <translation>Εικονοστοιχείο</translation>
     </message>
@@ -882,10 +894,6 @@
     <message>
         <source>How the heights become grey: the sky each point sees, one light, or height</source>
         <translation>Πώς τα ύψη γίνονται τόνοι του γκρι: ο ουρανός που βλέπει κάθε σημείο, ένα φως ή το ύψος</translation>
-    </message>
-    <message>
-        <source>Skydome: azimuths of the horizon search (more is smoother and slower)</source>
-        <translation>Θόλος ουρανού: αζιμούθια της αναζήτησης ορίζοντα (περισσότερα δίνουν ομαλότερο αλλά πιο αργό αποτέλεσμα)</translation>
     </message>
     <message>
         <source> mm</source>
@@ -938,6 +946,14 @@
     <message>
         <source>Press Compute for the développée of %1.</source>
         <translation>Πατήστε Υπολογισμός για το ανάπτυγμα του %1.</translation>
+    </message>
+    <message>
+        <source>Horizon directions</source>
+        <translation>Κατευθύνσεις ορίζοντα</translation>
+    </message>
+    <message>
+        <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
+        <translation>Σκίαση θόλου ουρανού του ξετυλίγματος: πόσα αζιμούθια ερευνά κάθε εικονοστοιχείο για τον ορίζοντά του (περισσότερα: ομαλότερο και πιο αργό). Όχι ο θόλος ουρανού της τρισδιάστατης όψης.</translation>
     </message>
 </context>
 <context>

@@ -171,10 +171,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source> ×</source>
         <translation type="unfinished"></translation>
     </message>
@@ -211,7 +207,23 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Level</source>
+        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), or in the scan&apos;s colours</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>View-dependent: finer cells near the camera, within the point budget; global level: every fragment drawn at the one octree level below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The octree level drawn when the level of detail is global (0: the root cell)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Octree level</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -525,10 +537,6 @@
         </translation>
     </message>
     <message>
-        <source>Skydome of %1: %2 cells at level %3, %4 directions, %5 s</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>The skydome of the selection is being computed already, or its octrees are not open yet</source>
         <translation type="unfinished"></translation>
     </message>
@@ -546,6 +554,10 @@
     </message>
     <message>
         <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -841,6 +853,10 @@
         <source>Drum 1 reconstruction</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Flute %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>
@@ -868,10 +884,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Directions</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Pixel</source>
         <translation type="unfinished"></translation>
     </message>
@@ -881,10 +893,6 @@
     </message>
     <message>
         <source>How the heights become grey: the sky each point sees, one light, or height</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>Skydome: azimuths of the horizon search (more is smoother and slower)</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -937,6 +945,14 @@
     </message>
     <message>
         <source>Press Compute for the développée of %1.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Horizon directions</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

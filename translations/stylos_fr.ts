@@ -171,10 +171,6 @@
         <translation>Couleur du relevé</translation>
     </message>
     <message>
-        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight</source>
-        <translation>Le skydome nécessite Outils › Calculer le skydome ; sans lui, le fragment reçoit l’éclairage frontal</translation>
-    </message>
-    <message>
         <source> ×</source>
         <translation> ×</translation>
     </message>
@@ -211,8 +207,24 @@
         <translation>Niveau de détail</translation>
     </message>
     <message>
-        <source>Level</source>
-        <translation>Niveau</translation>
+        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), or in the scan&apos;s colours</source>
+        <translation>Comment les points sont éclairés : par une lumière à l&apos;œil (phare), par le ciel que voit chaque cellule (skydome ; il faut Outils › Calculer le skydome, sinon le phare), ou dans les couleurs du scan</translation>
+    </message>
+    <message>
+        <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
+        <translation>Taille des points dessinés, en multiple de la taille de leur cellule d&apos;octree</translation>
+    </message>
+    <message>
+        <source>View-dependent: finer cells near the camera, within the point budget; global level: every fragment drawn at the one octree level below</source>
+        <translation>Selon la vue : des cellules plus fines près de la caméra, dans la limite du budget de points ; niveau global : chaque fragment dessiné au niveau d&apos;octree choisi ci-dessous</translation>
+    </message>
+    <message>
+        <source>The octree level drawn when the level of detail is global (0: the root cell)</source>
+        <translation>Le niveau d&apos;octree dessiné quand le niveau de détail est global (0 : la cellule racine)</translation>
+    </message>
+    <message>
+        <source>Octree level</source>
+        <translation>Niveau d&apos;octree</translation>
     </message>
     <message>
         <source>Eye-dome lighting</source>
@@ -525,10 +537,6 @@
         </translation>
     </message>
     <message>
-        <source>Skydome of %1: %2 cells at level %3, %4 directions, %5 s</source>
-        <translation>Skydome de %1 : %2 cellules au niveau %3, %4 directions, %5 s</translation>
-    </message>
-    <message>
         <source>The skydome of the selection is being computed already, or its octrees are not open yet</source>
         <translation>Le skydome de la sélection est déjà en cours de calcul, ou ses octrees ne sont pas encore ouverts</translation>
     </message>
@@ -547,6 +555,10 @@
     <message>
         <source>The 3D view needs OpenGL 3.3 (core profile), which this display does not offer.</source>
         <translation>La vue 3D nécessite OpenGL 3.3 (profil core), que cet affichage ne fournit pas.</translation>
+    </message>
+    <message>
+        <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
+        <translation>Skydome de %1 : %2 cellules au niveau %3, %4 directions du ciel, %5 s</translation>
     </message>
 </context>
 <context>
@@ -841,6 +853,10 @@
         <source>Drum 1 reconstruction</source>
         <translation>Reconstruction du tambour 1</translation>
     </message>
+    <message>
+        <source>Flute %1</source>
+        <translation>Cannelure %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeJob</name>
@@ -868,10 +884,6 @@
         <translation>Ombrage</translation>
     </message>
     <message>
-        <source>Directions</source>
-        <translation>Directions</translation>
-    </message>
-    <message>
         <source>Pixel</source>
         <translation>Pixel</translation>
     </message>
@@ -882,10 +894,6 @@
     <message>
         <source>How the heights become grey: the sky each point sees, one light, or height</source>
         <translation>Comment les hauteurs deviennent des niveaux de gris : le ciel vu par chaque point, une lumière unique, ou la hauteur</translation>
-    </message>
-    <message>
-        <source>Skydome: azimuths of the horizon search (more is smoother and slower)</source>
-        <translation>Skydome : azimuts de la recherche d’horizon (davantage donne un rendu plus lisse mais plus lent)</translation>
     </message>
     <message>
         <source> mm</source>
@@ -938,6 +946,14 @@
     <message>
         <source>Press Compute for the développée of %1.</source>
         <translation>Cliquez sur Calculer pour obtenir la développée de %1.</translation>
+    </message>
+    <message>
+        <source>Horizon directions</source>
+        <translation>Directions d&apos;horizon</translation>
+    </message>
+    <message>
+        <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
+        <translation>Ombrage skydome de la développée : le nombre d&apos;azimuts où chaque pixel cherche son horizon (plus, c&apos;est plus lisse et plus lent). Pas le skydome de la vue 3D.</translation>
     </message>
 </context>
 <context>

@@ -11,6 +11,7 @@
 #include <QSettings>
 #include <QSlider>
 
+#include <array>
 #include <cmath>
 
 namespace stylos::app {
@@ -41,15 +42,31 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     m_budget->setDecimals(1);
     m_detail->addItems({QString(), QString()});
     m_level->setRange(0, MaxLevel);
-    m_levelValue->setMinimumWidth(24);
+    // Wide enough for the largest level, whatever the font.
+    m_levelValue->setMinimumWidth(m_levelValue->fontMetrics().horizontalAdvance(QString::number(MaxLevel)));
+    m_levelValue->setAlignment(Qt::AlignRight | Qt::AlignVCenter);
     auto* levelRow = new QHBoxLayout;
     levelRow->addWidget(m_level, 1);
     levelRow->addWidget(m_levelValue);
-    m_form->addRow(QString(), m_shading);
-    m_form->addRow(QString(), m_splat);
-    m_form->addRow(QString(), m_budget);
-    m_form->addRow(QString(), m_detail);
-    m_form->addRow(QString(), levelRow);
+    // Labels beside their fields while the dock is wide enough, above them when it is not (long French
+    // and Greek labels): the fields keep their full width either way.
+    m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
+    const std::array<QWidget*, 5> fields = {m_shading, m_splat, m_budget, m_detail, m_level};
+    for (std::size_t row = 0; row < fields.size(); ++row) {
+        auto* label = new QLabel(this);
+        label->setBuddy(fields[row]);
+        m_labels[row] = label;
+        if (row + 1 < fields.size())
+            m_form->addRow(label, fields[row]);
+        else
+            m_form->addRow(label, levelRow);
+    }
+    m_shading->setObjectName(QStringLiteral("displayShading"));
+    m_splat->setObjectName(QStringLiteral("displaySplat"));
+    m_budget->setObjectName(QStringLiteral("displayBudget"));
+    m_detail->setObjectName(QStringLiteral("displayDetail"));
+    m_level->setObjectName(QStringLiteral("displayLevel"));
 
     const QSettings settings;
     m_updating = true;
@@ -116,19 +133,26 @@ void DisplaySettingsWidget::retranslateUi()
     m_shading->setItemText(1, tr("Skydome"));
     m_shading->setItemText(2, tr("Scan colour"));
     m_shading->setItemText(3, tr("Eye-dome lighting"));
-    m_shading->setToolTip(tr("Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight"));
+    m_shading->setToolTip(tr("How the points are lit: by a light at the eye (headlight), by the sky each cell sees "
+                             "(skydome; needs Tools › Compute skydome, else the headlight), in the scan's "
+                             "colours, or by eye-dome lighting (the relief from the depth alone)"));
     m_splat->setSuffix(tr(" ×"));
+    m_splat->setToolTip(tr("Size of the drawn points, as a multiple of the size of their octree cell"));
     m_budget->setSuffix(tr(" M points"));
     m_budget->setToolTip(tr("Points drawn at most; the view refines up to it when the camera stops"));
     m_detail->setItemText(0, tr("View-dependent"));
     m_detail->setItemText(1, tr("Global level"));
+    m_detail->setToolTip(tr("View-dependent: finer cells near the camera, within the point budget; global level: "
+                            "every fragment drawn at the one octree level below"));
+    m_level->setToolTip(tr("The octree level drawn when the level of detail is global (0: the root cell)"));
     const QStringList labels = {tr("Shading"), tr("Splat size"), tr("Point budget"), tr("Level of detail"),
-                                tr("Level")};
-    for (int row = 0; row < m_form->rowCount(); ++row)
-        if (auto* label = qobject_cast<QLabel*>(m_form->itemAt(row, QFormLayout::LabelRole)
-                                                    ? m_form->itemAt(row, QFormLayout::LabelRole)->widget()
-                                                    : nullptr))
-            label->setText(labels.value(row));
+                                tr("Octree level")};
+    for (std::size_t row = 0; row < m_labels.size(); ++row) {
+        m_labels[row]->setText(labels.value(static_cast<int>(row)));
+        m_labels[row]->setToolTip(m_form->itemAt(static_cast<int>(row), QFormLayout::FieldRole)->widget()
+                                      ? m_form->itemAt(static_cast<int>(row), QFormLayout::FieldRole)->widget()->toolTip()
+                                      : m_level->toolTip());
+    }
 }
 
 } // namespace stylos::app

@@ -7,6 +7,8 @@
  */
 #include <QWidget>
 
+#include <array>
+
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
@@ -31,6 +33,8 @@ public:
     QDoubleSpinBox* budgetSpin() const { return m_budget; }
     QComboBox* detailBox() const { return m_detail; }
     QSlider* levelSlider() const { return m_level; }
+    /** @brief The label of row @p row (0 shading … 4 level), for tests. */
+    QLabel* label(int row) const { return m_labels.at(static_cast<std::size_t>(row)); }
 
     /** @brief Shows the view's current shading (after a menu changed it). */
     void syncFromViewport();
@@ -51,6 +55,7 @@ private:
     QComboBox* m_detail;
     QSlider* m_level;
     QLabel* m_levelValue;
+    std::array<QLabel*, 5> m_labels{};
     bool m_updating = false;
 };
 

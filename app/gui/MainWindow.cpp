@@ -10,6 +10,7 @@
 #include "PropertiesDock.h"
 #include "SceneDock.h"
 #include "TasksDock.h"
+#include "UndoShortcuts.h"
 #include "StatusReadout.h"
 #include "Translations.h"
 #include "ViewportSync.h"
@@ -133,6 +134,7 @@ void MainWindow::createMenus()
 
     m_actions = new MainActions(*m_document, m_viewport, m_translations, *this);
     QMenu* viewMenu = m_actions->populate(*menuBar());
+    new UndoShortcuts(*this, *m_actions->undoAction(), *m_actions->redoAction());
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_propertiesDock),
                               static_cast<QDockWidget*>(m_developpeeDock), static_cast<QDockWidget*>(m_tasksDock),
                               static_cast<QDockWidget*>(m_logDock)})
@@ -165,9 +167,10 @@ void MainWindow::createMenus()
 
     connect(m_actions, &MainActions::removeRequested, this, [this] {
         const auto ids = m_sceneDock->selectedFragments();
-        if (ids.size() > 1) m_document->undoStack()->beginMacro(tr("Remove %n fragment(s)", nullptr, int(ids.size())));
+        const int n = static_cast<int>(ids.size());
+        if (n > 1) m_document->beginMacro([n] { return tr("Remove %n fragment(s)", nullptr, n); });
         for (const auto id : ids) m_document->removeFragment(id);
-        if (ids.size() > 1) m_document->undoStack()->endMacro();
+        if (n > 1) m_document->endMacro();
     });
     connect(m_actions, &MainActions::skydomeRequested, this, &MainWindow::computeSkydome);
     connect(m_actions, &MainActions::developpeeRequested, this, &MainWindow::showDeveloppee);
@@ -219,7 +222,7 @@ void MainWindow::connectDocument()
     });
     connect(m_skydome, &widgets::SkydomeRunner::computed, this, [this](quint64, const widgets::SkydomeResult& r) {
         const auto* f = m_document->fragment(r.fragmentId);
-        report(tr("Skydome of %1: %2 cells at level %3, %4 directions, %5 s")
+        report(tr("Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s")
                    .arg(f ? QString::fromStdString(f->name) : r.octreePath)
                    .arg(r.cells)
                    .arg(r.level)
@@ -330,6 +333,8 @@ void MainWindow::closeEvent(QCloseEvent* event)
 void MainWindow::changeEvent(QEvent* event)
 {
     if (event->type() == QEvent::LanguageChange) {
+        m_demo->relabel(*m_document); // the demo's names, then the undo steps that name them
+        m_document->retranslate(); // before the Edit menu shows the undo step's text
         retranslateUi();
         m_actions->retranslateUi();
         m_docking->retranslateUi();

@@ -8,6 +8,7 @@
 #include <QEvent>
 #include <QGroupBox>
 #include <QScrollArea>
+#include <QStyle>
 #include <QVBoxLayout>
 
 namespace stylos::app {
@@ -39,6 +40,10 @@ PropertiesDock::PropertiesDock(widgets::SceneDocument& document, widgets::Viewpo
     m_scroll->setWidgetResizable(true);
     m_scroll->setFrameShape(QFrame::NoFrame);
     m_scroll->setWidget(contents);
+    // Never cut sideways: the dock is at least as wide as its contents need (labels wrap above their fields
+    // first), in every language; it scrolls only up and down.
+    m_scroll->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    contents->installEventFilter(this);
     setWidget(m_scroll);
     retranslateUi();
 }
@@ -66,6 +71,15 @@ void PropertiesDock::addContactReadout(widgets::ContactMonitor& monitor)
 void PropertiesDock::showContactReadout()
 {
     if (m_contactBox) m_scroll->ensureWidgetVisible(m_contactBox, 0, 0);
+}
+
+bool PropertiesDock::eventFilter(QObject* watched, QEvent* event)
+{
+    if (watched == m_scroll->widget() && event->type() == QEvent::LayoutRequest) {
+        const int scrollBar = m_scroll->style()->pixelMetric(QStyle::PM_ScrollBarExtent, nullptr, m_scroll);
+        m_scroll->setMinimumWidth(m_scroll->widget()->minimumSizeHint().width() + scrollBar);
+    }
+    return QDockWidget::eventFilter(watched, event);
 }
 
 void PropertiesDock::changeEvent(QEvent* event)

@@ -20,7 +20,9 @@ SceneDock::SceneDock(widgets::SceneDocument& document, QWidget* parent)
     m_view->setObjectName(QStringLiteral("sceneTree"));
     m_view->setModel(m_model);
     m_view->setSelectionMode(QAbstractItemView::ExtendedSelection);
-    m_view->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::SelectedClicked);
+    // Rename by F2 or a double click only: a click on the selected row must not open an editor (which would
+    // take the focus and swallow the next shortcut, Ctrl+Z or Delete).
+    m_view->setEditTriggers(QAbstractItemView::EditKeyPressed | QAbstractItemView::DoubleClicked);
     m_view->setHeaderHidden(true);
     m_view->setUniformRowHeights(true);
     m_view->header()->setStretchLastSection(true);

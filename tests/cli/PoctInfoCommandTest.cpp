@@ -47,8 +47,11 @@ TEST(CliPoctInfo, JsonDescribesTheOctree)
     EXPECT_EQ(j["file_bytes"], fs::file_size(path));
     EXPECT_DOUBLE_EQ(j["bytes_per_cell"].get<double>(),
                      static_cast<double>(fs::file_size(path)) / j["cells"].get<double>());
-    EXPECT_EQ(j["attributes"], nlohmann::json::array());
-    EXPECT_EQ(j["layers"], nlohmann::json::array());
+    // The builder stores each leaf's sampling spacing (float32, one per leaf) for the splats.
+    EXPECT_EQ(j["attributes"], (std::vector<std::string>{"spacing"}));
+    ASSERT_EQ(j["layers"].size(), 1u);
+    EXPECT_EQ(j["layers"][0]["type"], "float32");
+    EXPECT_EQ(j["layers"][0]["bytes"], 4 * j["leaves"].get<int>());
     // The root box is the cube around the drum (radius 0.55 m, height 0.5 m, axis z from 0): about
     // 1.1 m (the sampled points reach the fillet circle within a few mm), centred at z = 0.25 m.
     const double size = j["root_box"]["size"].get<double>();
@@ -66,7 +69,7 @@ TEST(CliPoctInfo, TextSummary)
     const auto run = runCli({"info", path});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     for (const std::string line : {"format:      poct (version 1)", "depth:       8", "normal code: paper15",
-                                   "points:      30000", "  level  0:  1", "attributes:  (none)", "bytes per cell"})
+                                   "points:      30000", "  level  0:  1", "attributes:  spacing (float32 x 1)", "bytes per cell"})
         EXPECT_NE(run.out.find(line), std::string::npos) << line << "\n" << run.out;
     EXPECT_NE(run.out.find("cells:       " + std::to_string(built["cells"].get<std::uint64_t>())), std::string::npos)
         << run.out;
@@ -87,8 +90,8 @@ TEST(CliPoctInfo, ColourLayerIsListed)
     const auto build = runCli({"build", (dir / "c.ply").string(), "-o", path, "--depth", "3"});
     ASSERT_EQ(build.exitCode, 0) << build.err;
     const auto j = nlohmann::json::parse(runCli({"info", path, "--json"}).out);
-    EXPECT_EQ(j["attributes"], (std::vector<std::string>{"colour"}));
-    ASSERT_EQ(j["layers"].size(), 1u);
+    EXPECT_EQ(j["attributes"], (std::vector<std::string>{"colour", "spacing"}));
+    ASSERT_EQ(j["layers"].size(), 2u);
     EXPECT_EQ(j["layers"][0]["type"], "uint8");
     EXPECT_EQ(j["layers"][0]["components"], 3);
     EXPECT_EQ(j["layers"][0]["bytes"], 3 * j["leaves"].get<int>());

@@ -7,6 +7,9 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
+
 using namespace stylos::core;
 using stylos::core::view::Camera;
 using stylos::core::view::StandardView;
@@ -140,4 +143,62 @@ TEST(ScenePickTest, OrthographicRaysStartOnTheNearPlane)
     ASSERT_TRUE(pick);
     EXPECT_NEAR((pick->point - (O + Eigen::Vector3d(0.5, 0.5, 0.5))).norm(), 0, 1e-12);
     EXPECT_NEAR(pick->along, 9.9, 1e-9);
+}
+
+TEST(ScenePickTest, SceneCornersAreTheOccupiedCellsPosed)
+{
+    stylos::test::TempDir dir;
+    const auto tree = stylos::test::fourLeafOctree(dir);
+    ASSERT_NE(tree, nullptr);
+    // Four 1 m leaves, centres from (0.5, 0.5, 0.5) to (3.5, 2.5, 2.5): eight corners each, whole cells.
+    const auto corners = view::sceneCorners({viewFragment(1, tree)});
+    ASSERT_EQ(corners.size(), std::size_t{32});
+    Eigen::AlignedBox3d box;
+    for (const auto& c : corners) box.extend(c);
+    expectBox(box, O, O + Eigen::Vector3d(4, 3, 3));
+
+    ViewFragment moved = viewFragment(2, tree, translation(10, 0, -1));
+    moved.selected = true;
+    const auto selected = view::sceneCorners({viewFragment(1, tree), moved}, true);
+    ASSERT_EQ(selected.size(), std::size_t{32});
+    box.setEmpty();
+    for (const auto& c : selected) box.extend(c);
+    expectBox(box, O + Eigen::Vector3d(10, 0, -1), O + Eigen::Vector3d(14, 3, 2));
+    ViewFragment hidden = moved;
+    hidden.visible = false;
+    EXPECT_TRUE(view::sceneCorners({hidden}).empty());
+    EXPECT_TRUE(view::sceneCorners({viewFragment(1, tree)}, true).empty());
+}
+
+TEST(ScenePickTest, FitFramesTheOccupiedCells)
+{
+    // The four leaves seen from the front (x right, z up), 800 × 600, 45° vertical field: every corner of the
+    // occupied cells in view, the picture exactly centred along the axis that sets the distance, where it spans
+    // 1 / 1.05 of the view (the 5 % margin), and within it along the other.
+    stylos::test::TempDir dir;
+    const auto tree = stylos::test::fourLeafOctree(dir);
+    ASSERT_NE(tree, nullptr);
+    Camera camera;
+    camera.setViewport(800, 600);
+    camera.setStandardView(StandardView::Front);
+    const auto corners = view::sceneCorners({viewFragment(1, tree)});
+    camera.fit(corners);
+    double loX = INFINITY, hiX = -INFINITY, loY = INFINITY, hiY = -INFINITY;
+    for (const auto& c : corners) {
+        const auto p = camera.project(c);
+        ASSERT_TRUE(p);
+        loX = std::min(loX, p->x());
+        hiX = std::max(hiX, p->x());
+        loY = std::min(loY, p->y());
+        hiY = std::max(hiY, p->y());
+    }
+    const double fillX = (hiX - loX) / 800.0, fillY = (hiY - loY) / 600.0;
+    EXPECT_NEAR(std::max(fillX, fillY), 1.0 / 1.05, 1e-9);
+    EXPECT_GT(std::min(fillX, fillY), 0.5); // the other axis is well filled too (its extent is 3 m against 4 m)
+    if (fillX >= fillY) EXPECT_NEAR(400.0 - loX, hiX - 400.0, 1e-6);
+    else EXPECT_NEAR(300.0 - loY, hiY - 300.0, 1e-6);
+    EXPECT_GE(loX, 0.0);
+    EXPECT_LE(hiX, 800.0);
+    EXPECT_GE(loY, 0.0);
+    EXPECT_LE(hiY, 600.0);
 }

@@ -117,7 +117,7 @@ void LodSchedulerTest::refinesToTheLeafLevelWhenStill()
     QCOMPARE(std::uint64_t(vertices.size()), octree.cellCount(octree.depth()));
     std::set<Key> cut, leaves;
     for (const auto& v : vertices) {
-        QVERIFY(std::abs(v.size - leaf) < 1e-6 * leaf);
+        QVERIFY(v.size >= leaf * (1 - 1e-6)); // at least the cell; wider where the sampling is sparser (spacing)
         cut.insert(keyOf(v.position[0], v.position[1], v.position[2], leaf));
     }
     octree.forEachCell(octree.depth(), [&](const stylos::core::octree::CellView& c) {

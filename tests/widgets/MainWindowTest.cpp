@@ -197,6 +197,7 @@ void MainWindowTest::aPoseEditReachesTheViewAsAPoseOnly()
     widgets::SceneDocument& document = window->document();
     const auto id = document.scene().fragments()[0].id;
     const std::uint64_t cuts = viewport->scheduler().cutsStarted();
+    const Eigen::Matrix4d imported = viewport->fragments()[0].pose; // where the import placed it
 
     const auto pose = core::scene::Pose::translation({0.25, -0.5, 1});
     QVERIFY(document.setFragmentPose(id, pose));
@@ -210,7 +211,7 @@ void MainWindowTest::aPoseEditReachesTheViewAsAPoseOnly()
     QVERIFY(*viewport->renderer().points().modelMatrix(id) == model);
 
     window->document().undoStack()->undo(); // undone: a pose again
-    QTRY_VERIFY(viewport->fragments()[0].pose == Eigen::Matrix4d::Identity());
+    QTRY_VERIFY(viewport->fragments()[0].pose == imported);
     QVERIFY(document.renameFragment(id, QStringLiteral("Drum II"))); // nothing the view shows
     QTest::qWait(50);
     QCOMPARE(viewport->scheduler().cutsStarted(), cuts);
@@ -287,7 +288,8 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     // about its axis, so on its surface everywhere: it covers the drum's développée).
     const Eigen::Vector3d a(axisPoint[0], axisPoint[1], axisPoint[2]);
     const Eigen::Isometry3d turn(Eigen::Translation3d(a) * Eigen::AngleAxisd(0.3, axisDir) * Eigen::Translation3d(-a));
-    QVERIFY(document.setFragmentWorldPose(ids[1], core::scene::poseFromEigen(turn.matrix())));
+    const Eigen::Matrix4d drumWorld = core::scene::toEigen(document.worldPose(ids[0])); // where its import put it
+    QVERIFY(document.setFragmentWorldPose(ids[1], core::scene::poseFromEigen(drumWorld * turn.matrix())));
     QAction* unroll = window->assemblies().developpeeAction();
     window->sceneDock().view()->setCurrentIndex(window->sceneDock().model()->indexOfAssembly(assembly.id));
     QVERIFY(unroll->isEnabled());
@@ -304,12 +306,14 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     // Moving the assembly moves both members in the view, not the third.
     widgets::ViewportWidget* viewport = window->viewport();
     const auto shift = core::scene::Pose::translation({0, 0, 2});
-    const double z1 = document.worldPose(ids[1])(2, 3);
+    const double z0 = document.worldPose(ids[0])(2, 3), z1 = document.worldPose(ids[1])(2, 3);
+    const double z2 = document.worldPose(ids[2])(2, 3); // each where its import placed it
+    const core::scene::Pose drumBefore = document.worldPose(ids[0]);
     QVERIFY(document.setAssemblyPose(assembly.id, shift * assembly.pose));
     if (viewport) {
         QTRY_VERIFY(viewport->fragments().size() == 3 && std::abs(viewport->fragments()[1].pose(2, 3) - (z1 + 2.0)) < 1e-12);
-        QCOMPARE(viewport->fragments()[0].pose(2, 3), 2.0);
-        QCOMPARE(viewport->fragments()[2].pose(2, 3), 0.0);
+        QCOMPARE(viewport->fragments()[0].pose(2, 3), z0 + 2.0);
+        QCOMPARE(viewport->fragments()[2].pose(2, 3), z2);
     }
     // Hiding the assembly hides its members in the view.
     QVERIFY(document.setAssemblyVisible(assembly.id, false));
@@ -321,7 +325,7 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     QVERIFY(remove->isEnabled());
     remove->trigger();
     QVERIFY(document.scene().assemblies().empty());
-    QCOMPARE(document.worldPose(ids[0]), shift);
+    QCOMPARE(document.worldPose(ids[0]), shift * drumBefore);
     QCOMPARE(window->sceneDock().model()->rowCount(), 3);
 }
 

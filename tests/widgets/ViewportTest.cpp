@@ -179,7 +179,21 @@ void ViewportTest::keysChangeTheView()
         return c;
     }());
     QTest::keyClick(m_view.get(), Qt::Key_F);
-    QVERIFY((m_view->camera().target() - m_view->sceneBounds().center()).norm() < 1e-9);
+    { // Fit: every corner of the occupied cells in view, and the picture filling most of it along one axis.
+        double loX = INFINITY, hiX = -INFINITY, loY = INFINITY, hiY = -INFINITY;
+        for (const Eigen::Vector3d& corner : stylos::core::view::sceneCorners(m_view->fragments())) {
+            const auto p = m_view->camera().project(corner);
+            QVERIFY(p.has_value());
+            loX = std::min(loX, p->x());
+            hiX = std::max(hiX, p->x());
+            loY = std::min(loY, p->y());
+            hiY = std::max(hiY, p->y());
+        }
+        const double w = m_view->camera().width(), h = m_view->camera().height();
+        QVERIFY2(loX >= -1e-6 && hiX <= w + 1e-6 && loY >= -1e-6 && hiY <= h + 1e-6,
+                 qPrintable(QString("%1 %2 %3 %4").arg(loX).arg(hiX).arg(loY).arg(hiY)));
+        QVERIFY(std::max((hiX - loX) / w, (hiY - loY) / h) > 0.85);
+    }
     waitRefined();
     QVERIFY(coveredFraction(m_view->grabFramebuffer(), QRect(190, 140, 20, 20)) > 0.95);
 }

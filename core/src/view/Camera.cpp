@@ -81,17 +81,48 @@ void Camera::setStandardView(StandardView view) { m_orientation = standardOrient
 void Camera::fit(const Eigen::AlignedBox3d& box)
 {
     if (box.isEmpty()) return;
+    std::vector<Eigen::Vector3d> corners;
+    for (int corner = 0; corner < 8; ++corner) corners.push_back(box.corner(Eigen::AlignedBox3d::CornerType(corner)));
+    fit(corners);
+}
+
+void Camera::fit(const std::vector<Eigen::Vector3d>& points)
+{
+    if (points.empty()) return;
+    // The margin narrows the field the points must fit in (their picture spans 1 / Margin of the view), so that
+    // the eye placed for that field keeps the picture exactly centred.
     constexpr double Margin = 1.05;
-    const double tanY = std::tan(0.5 * m_fov), tanX = tanY * aspect();
-    double needed = 0; // perspective: distance; orthographic: half the view height
-    for (int corner = 0; corner < 8; ++corner) {
-        const Eigen::Vector3d v = box.corner(Eigen::AlignedBox3d::CornerType(corner)) - box.center();
-        const double x = std::abs(v.dot(right())), y = std::abs(v.dot(up())), z = v.dot(-forward());
-        needed = m_orthographic ? std::max({needed, y, x / aspect()})
-                                : std::max({needed, z + x / tanX, z + y / tanY});
+    const double tanY = std::tan(0.5 * m_fov) / Margin, tanX = tanY * aspect();
+    const Eigen::Vector3d r = right(), u = up(), back = -forward();
+    // In the camera's axes (x right, y up, z towards the eye). A point is in a perspective view from the eye
+    // (ex, ey, ez) when |x − ex| ≤ tanX (ez − z): ex − tanX ez ≤ x − tanX z and ex + tanX ez ≥ x + tanX z for
+    // all points, so the nearest eye has ez = (max(x + tanX z) − min(x − tanX z)) / (2 tanX) (and the same in
+    // y), ex halfway: the picture centred.
+    Eigen::AlignedBox3d box;
+    double loX = INFINITY, hiX = -INFINITY, loY = INFINITY, hiY = -INFINITY;
+    for (const Eigen::Vector3d& p : points) {
+        const Eigen::Vector3d c(p.dot(r), p.dot(u), p.dot(back));
+        box.extend(c);
+        loX = std::min(loX, c.x() - tanX * c.z());
+        hiX = std::max(hiX, c.x() + tanX * c.z());
+        loY = std::min(loY, c.y() - tanY * c.z());
+        hiY = std::max(hiY, c.y() + tanY * c.z());
     }
-    m_target = box.center();
-    setDistance(Margin * (m_orthographic ? needed / tanY : needed));
+    const Eigen::Vector3d centre = box.center();
+    Eigen::Vector3d target = centre; // camera axes
+    double distance = 0;
+    if (m_orthographic) {
+        // Orthographic: the view height is 2 · distance · tanY.
+        distance = std::max(0.5 * box.sizes().y(), 0.5 * box.sizes().x() / aspect()) / tanY;
+    } else {
+        // The target straight ahead of that eye, at the depth of the box centre.
+        const double ez = std::max((hiX - loX) / (2 * tanX), (hiY - loY) / (2 * tanY));
+        target = Eigen::Vector3d(0.5 * (loX + hiX), 0.5 * (loY + hiY), centre.z());
+        distance = ez - centre.z();
+    }
+    if (!(distance > 0)) distance = 1e-3; // a single point
+    m_target = target.x() * r + target.y() * u + target.z() * back;
+    setDistance(distance);
 }
 
 Eigen::Matrix4d Camera::viewMatrix() const

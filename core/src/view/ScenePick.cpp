@@ -38,6 +38,23 @@ Eigen::AlignedBox3d sceneBounds(const std::vector<ViewFragment>& fragments, bool
     return box;
 }
 
+std::vector<Eigen::Vector3d> sceneCorners(const std::vector<ViewFragment>& fragments, bool selectedOnly)
+{
+    std::vector<Eigen::Vector3d> corners;
+    for (const ViewFragment& f : fragments) {
+        if (!f.visible || !f.octree || (selectedOnly && !f.selected)) continue;
+        const Eigen::Matrix3d r = f.pose.topLeftCorner<3, 3>();
+        const Eigen::Vector3d t = f.pose.topRightCorner<3, 1>();
+        f.octree->forEachCell(std::min(BoundsLevel, f.octree->depth()), [&](const octree::CellView& cell) {
+            const Eigen::AlignedBox3d box(scene::toEigen(cell.centre) - Eigen::Vector3d::Constant(cell.size / 2),
+                                          scene::toEigen(cell.centre) + Eigen::Vector3d::Constant(cell.size / 2));
+            for (int k = 0; k < 8; ++k) corners.push_back(r * box.corner(Eigen::AlignedBox3d::CornerType(k)) + t);
+            return true;
+        });
+    }
+    return corners;
+}
+
 std::optional<ScenePick> pickScene(const std::vector<ViewFragment>& fragments, const Camera& camera, double x,
                                    double y, double radiusPixels)
 {

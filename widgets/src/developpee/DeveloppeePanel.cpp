@@ -168,7 +168,7 @@ void DeveloppeePanel::retranslateUi()
 {
     m_surfaceLabel->setText(tr("Surface"));
     m_shadingLabel->setText(tr("Shading"));
-    m_directionsLabel->setText(tr("Directions"));
+    m_directionsLabel->setText(tr("Horizon directions"));
     m_pixelLabel->setText(tr("Pixel"));
     for (int i = 0; i < m_surface->count(); ++i)
         m_surface->setItemText(i, DeveloppeeSettings::surfaceName(static_cast<SurfaceKind>(m_surface->itemData(i).toInt())));
@@ -176,7 +176,8 @@ void DeveloppeePanel::retranslateUi()
         m_shading->setItemText(i, DeveloppeeSettings::shadingName(static_cast<DeveloppeeShading>(m_shading->itemData(i).toInt())));
     m_surface->setToolTip(tr("The surface the développée is unrolled from"));
     m_shading->setToolTip(tr("How the heights become grey: the sky each point sees, one light, or height"));
-    m_directions->setToolTip(tr("Skydome: azimuths of the horizon search (more is smoother and slower)"));
+    m_directions->setToolTip(tr("Skydome shading of the développée: how many azimuths each pixel searches for its "
+                                "horizon (more is smoother and slower). Not the 3D view's skydome."));
     m_pixelSize->setSuffix(tr(" mm"));
     m_pixelSize->setSpecialValueText(tr("Automatic"));
     m_pixelSize->setToolTip(tr("Side of a pixel; Automatic uses the octree's leaf size"));

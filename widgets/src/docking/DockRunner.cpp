@@ -129,9 +129,9 @@ void DockRunner::delivered(FragmentId id, const QFuture<DockJobResult>& future)
     const Eigen::Isometry3d inScene = isometry(launched.drumPose) * result.dock.pose;
     const core::scene::Pose pose = core::scene::poseFromEigen(inScene.matrix());
     if (pose != launched.fragmentPose) {
-        m_document.undoStack()->beginMacro(tr("Dock %1").arg(name));
+        m_document.beginMacro([this, id, name] { return tr("Dock %1").arg(m_document.nameOf(id, name)); });
         m_document.setFragmentWorldPose(id, pose);
-        m_document.undoStack()->endMacro();
+        m_document.endMacro();
     }
     Q_EMIT docked(id, result);
 }

@@ -20,7 +20,10 @@ bool GuideFitRunner::deleteGuides(FragmentId id)
 {
     const core::scene::Fragment* f = m_document.fragment(id);
     if (!f || f->guides.empty()) return false;
-    return m_document.setFragmentGuides(id, {}, tr("Delete the guides of %1").arg(QString::fromStdString(f->name)));
+    return m_document.setFragmentGuides(id, {},
+                                       [this, id, n = QString::fromStdString(f->name)] {
+                                           return tr("Delete the guides of %1").arg(m_document.nameOf(id, n));
+                                       });
 }
 
 void GuideFitRunner::delivered(FragmentId id, const QFuture<GuideFitResult>& future)
@@ -33,7 +36,10 @@ void GuideFitRunner::delivered(FragmentId id, const QFuture<GuideFitResult>& fut
     }
     const core::scene::Fragment* f = m_document.fragment(id);
     if (!f) return;
-    m_document.setFragmentGuides(id, result.guides, tr("Fit the guides of %1").arg(QString::fromStdString(f->name)));
+    m_document.setFragmentGuides(id, result.guides,
+                               [this, id, n = QString::fromStdString(f->name)] {
+                                   return tr("Fit the guides of %1").arg(m_document.nameOf(id, n));
+                               });
     Q_EMIT fitted(id, result);
 }
 

@@ -3,6 +3,7 @@
 #include "stylos/core/scene/ProjectFile.h"
 #include "stylos/core/synth/DemoProject.h"
 #include "tasks/ErrorText.h"
+#include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QDir>
@@ -73,6 +74,70 @@ std::vector<DemoScene::Item> DemoScene::items()
             {tr("Omphalos"), QStringLiteral("omphalos.poct"), SyntheticKind::Omphalos, 4}};
 }
 
+DemoScene::Names DemoScene::names()
+{
+    Names names;
+    for (const Item& item : items()) names.items << item.name;
+    names.axis = tr("Axis");
+    names.flute = tr("Flute %1");
+    names.assembly = tr("Drum 1 reconstruction");
+    return names;
+}
+
+bool DemoScene::applyNames(core::scene::Scene& scene, const QString& folder, const Names& to, const Names* from)
+{
+    const auto items = DemoScene::items();
+    bool changed = false;
+    const auto give = [&changed, from](std::string& name, const QString& before, const QString& after) {
+        if (from && QString::fromStdString(name) != before) return; // renamed by the user
+        if (name == after.toStdString()) return;
+        name = after.toStdString();
+        changed = true;
+    };
+    const QDir dir(folder);
+    bool demo = false;
+    for (const core::scene::Fragment& f : scene.fragments()) {
+        const QFileInfo octree(QString::fromStdString(f.octreePath.string()));
+        int item = -1;
+        for (std::size_t i = 0; i < items.size(); ++i)
+            if (octree.fileName() == items[i].fileName && QDir(octree.absolutePath()) == dir) item = static_cast<int>(i);
+        if (item < 0) continue;
+        demo = true;
+        core::scene::Fragment* mine = scene.find(f.id);
+        give(mine->name, from ? from->items.value(item) : QString(), to.items.value(item));
+        int flute = 0;
+        for (core::scene::Guide& g : mine->guides) {
+            if (g.kind == core::scene::GuideKind::Axis) give(g.name, from ? from->axis : QString(), to.axis);
+            else {
+                ++flute;
+                give(g.name, from ? from->flute.arg(flute) : QString(), to.flute.arg(flute));
+            }
+        }
+    }
+    // The demo's one assembly (only in a scene of the demo's fragments).
+    if (demo)
+        for (const core::scene::Assembly& a : scene.assemblies())
+            give(scene.findAssembly(a.id)->name, from ? from->assembly : QString(), to.assembly);
+    return changed;
+}
+
+void DemoScene::localiseProject()
+{
+    m_shown = names();
+    auto project = core::scene::ProjectFile::load(projectPath().toStdString());
+    if (!project) return; // the document's open() will say what is wrong
+    if (applyNames(project->scene, m_directory, m_shown))
+        (void)core::scene::ProjectFile::save(project->scene, projectPath().toStdString()); // the cache only
+}
+
+void DemoScene::relabel(SceneDocument& document)
+{
+    if (m_shown.items.isEmpty() || QFileInfo(document.projectPath()).absoluteFilePath() != QFileInfo(projectPath()).absoluteFilePath()) return;
+    const Names before = m_shown, after = names();
+    m_shown = after;
+    document.relabel([&](core::scene::Scene& scene) { applyNames(scene, m_directory, after, &before); });
+}
+
 QString DemoScene::projectPath() const
 {
     return QDir(m_directory).absoluteFilePath(QStringLiteral("demo.stylos"));
@@ -107,7 +172,10 @@ bool DemoScene::prepare()
     if (isPreparing()) return false;
     if (isGenerated()) {
         // Queued, so callers see the same asynchronous contract whether or not the files exist.
-        QTimer::singleShot(0, this, [this] { Q_EMIT ready(projectPath()); });
+        QTimer::singleShot(0, this, [this] {
+            localiseProject();
+            Q_EMIT ready(projectPath());
+        });
         return true;
     }
     if (!QDir().mkpath(m_directory)) {
@@ -157,6 +225,7 @@ void DemoScene::generationEnded(QFutureWatcherBase* watcher)
     }
     const Outcome outcome = typed->result();
     if (!outcome.error) {
+        localiseProject(); // the language may have changed while it was made
         Q_EMIT ready(projectPath());
         return;
     }

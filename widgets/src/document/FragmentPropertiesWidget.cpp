@@ -64,8 +64,13 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
     QWidget* fields[RowCount] = {m_name,     m_visible,   m_colour,    m_pose[0],     m_pose[1],
                                  m_pose[2],  m_pose[3],   m_pose[4],   m_pose[5],     m_points,
                                  m_leafCells, m_totalCells, m_depth,  m_file};
+    // Labels beside their fields while the dock is wide enough, above them when it is not (the longer
+    // French and Greek labels): each field keeps its full width.
+    m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
+    m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
     for (std::size_t row = 0; row < RowCount; ++row) {
         m_labels[row] = new QLabel(this);
+        m_labels[row]->setBuddy(fields[row]);
         m_form->addRow(m_labels[row], fields[row]);
     }
 

@@ -2,6 +2,8 @@
 
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/scene/ImportPlacement.h"
+#include "stylos/core/view/GuideGeometry.h"
 #include "tasks/ErrorText.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/tasks/TaskManager.h"
@@ -145,11 +147,21 @@ void ScanImporter::importEnded(const QString& input, const QString& output, QFut
         fragment.octreePath = (output.isEmpty() ? input : output).toStdString();
         if (!output.isEmpty()) fragment.sourcePath = input.toStdString();
         fragment.colour = core::scene::defaultFragmentColour(m_document.scene().size());
+        fragment.pose = placement(*result.octree);
         const auto id = m_document.addFragment(std::move(fragment), result.octree,
-                                               tr("Import %1").arg(QFileInfo(input).fileName()));
+                                               [file = QFileInfo(input).fileName()] { return tr("Import %1").arg(file); });
         Q_EMIT fragmentImported(id);
     }
     if (m_pending.isEmpty()) Q_EMIT importsFinished(std::exchange(m_errors, {}));
+}
+
+core::scene::Pose ScanImporter::placement(const core::octree::PackedOctree& octree) const
+{
+    std::vector<core::scene::PlacedExtent> placed;
+    for (const core::scene::Fragment& f : m_document.scene().fragments())
+        if (const auto opened = m_document.octree(f.id))
+            placed.push_back({core::view::occupiedBounds(*opened), m_document.worldPose(f.id)});
+    return core::scene::placeImport(placed, core::view::occupiedBounds(octree));
 }
 
 void ScanImporter::fail(const QString& input, const QString& message)

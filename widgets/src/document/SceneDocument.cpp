@@ -104,7 +104,79 @@ bool SceneDocument::isModified() const
     return !m_undo->isClean();
 }
 
-FragmentId SceneDocument::addFragment(Fragment fragment, OctreePtr octree, const QString& commandText)
+void SceneDocument::beginMacro(const CommandText& text)
+{
+    m_undo->beginMacro(text.text());
+    // The macro is the stack's last command from now on (QUndoStack::beginMacro appends it).
+    if (m_undo->count() > 0) m_macroTexts[m_undo->command(m_undo->count() - 1)] = text;
+}
+
+void SceneDocument::endMacro()
+{
+    m_undo->endMacro();
+}
+
+void SceneDocument::retranslate()
+{
+    std::map<const QUndoCommand*, CommandText> kept;
+    for (int i = 0; i < m_undo->count(); ++i) {
+        // The stack owns its commands and hands them out const; their text is ours to set.
+        auto* command = const_cast<QUndoCommand*>(m_undo->command(i));
+        if (auto* own = dynamic_cast<DocumentCommand*>(command)) {
+            own->retranslate();
+        } else if (const auto it = m_macroTexts.find(command); it != m_macroTexts.end()) {
+            command->setText(it->second.text());
+            kept.insert(*it);
+        }
+    }
+    m_macroTexts = std::move(kept); // forget the macros no longer on the stack
+    // QUndoStack signals the texts only when its index moves: the Edit menu asks again.
+    Q_EMIT m_undo->undoTextChanged(m_undo->undoText());
+    Q_EMIT m_undo->redoTextChanged(m_undo->redoText());
+}
+
+int SceneDocument::relabel(const std::function<void(core::scene::Scene&)>& rename)
+{
+    core::scene::Scene named = m_scene;
+    rename(named);
+    int changed = 0;
+    for (const Fragment& f : named.fragments()) {
+        Fragment* mine = m_scene.find(f.id);
+        if (!mine) continue;
+        bool differs = mine->name != f.name;
+        for (std::size_t g = 0; g < f.guides.size() && g < mine->guides.size(); ++g)
+            differs = differs || mine->guides[g].name != f.guides[g].name;
+        if (!differs) continue;
+        ++changed;
+        changeFragment(f.id, [&f](Fragment& target) {
+            target.name = f.name;
+            for (std::size_t g = 0; g < f.guides.size() && g < target.guides.size(); ++g)
+                target.guides[g].name = f.guides[g].name;
+        });
+    }
+    for (const core::scene::Assembly& a : named.assemblies()) {
+        core::scene::Assembly* mine = m_scene.findAssembly(a.id);
+        if (!mine || mine->name == a.name) continue;
+        mine->name = a.name;
+        ++changed;
+        Q_EMIT assemblyChanged(a.id);
+    }
+    return changed;
+}
+
+QString SceneDocument::nameOf(FragmentId id, const QString& fallback) const
+{
+    const core::scene::Fragment* f = m_scene.find(id);
+    return f ? QString::fromStdString(f->name) : fallback;
+}
+
+QString SceneDocument::assemblyNameOf(core::scene::AssemblyId id, const QString& fallback) const
+{
+    const core::scene::Assembly* a = m_scene.findAssembly(id);
+    return a ? QString::fromStdString(a->name) : fallback;
+}
+
+FragmentId SceneDocument::addFragment(Fragment fragment, OctreePtr octree, const CommandText& commandText)
 {
     if (fragment.id != core::scene::NoFragment && m_scene.find(fragment.id)) return core::scene::NoFragment;
     auto* command = new AddFragmentCommand(*this, std::move(fragment), std::move(octree), commandText);
@@ -152,7 +224,7 @@ bool SceneDocument::setFragmentVisible(FragmentId id, bool visible)
     return true;
 }
 
-bool SceneDocument::setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const QString& commandText)
+bool SceneDocument::setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const CommandText& commandText)
 {
     const Fragment* f = m_scene.find(id);
     if (!f || f->guides == guides) return false;
@@ -191,7 +263,7 @@ bool SceneDocument::setFragmentWorldPose(FragmentId id, const core::scene::Pose&
 }
 
 template <typename Edit>
-bool SceneDocument::editStructure(const std::vector<FragmentId>& touched, const QString& text, Edit edit)
+bool SceneDocument::editStructure(const std::vector<FragmentId>& touched, const CommandText& text, Edit edit)
 {
     core::scene::Scene after = m_scene;
     if (!edit(after)) return false;
@@ -205,7 +277,7 @@ core::scene::AssemblyId SceneDocument::newAssembly(const QString& name, const st
 {
     if (name.trimmed().isEmpty()) return core::scene::NoAssembly;
     const AssemblyId id = m_scene.nextAssemblyId();
-    const bool pushed = editStructure(members, tr("New assembly %1").arg(name.trimmed()), [&](core::scene::Scene& s) {
+    const bool pushed = editStructure(members, [n = name.trimmed()] { return tr("New assembly %1").arg(n); }, [&](core::scene::Scene& s) {
         core::scene::Assembly a;
         a.name = name.trimmed().toStdString();
         if (!members.empty() && s.find(members.front())) a.pose = s.worldPose(members.front());
@@ -221,7 +293,8 @@ bool SceneDocument::removeAssembly(AssemblyId id)
 {
     const core::scene::Assembly* a = m_scene.findAssembly(id);
     if (!a) return false;
-    return editStructure(m_scene.membersOf(id), tr("Remove assembly %1").arg(QString::fromStdString(a->name)),
+    return editStructure(m_scene.membersOf(id),
+                         [n = QString::fromStdString(a->name)] { return tr("Remove assembly %1").arg(n); },
                          [id](core::scene::Scene& s) { return s.takeAssembly(id).has_value(); });
 }
 
@@ -229,7 +302,7 @@ bool SceneDocument::renameAssembly(AssemblyId id, const QString& name)
 {
     const core::scene::Assembly* a = m_scene.findAssembly(id);
     if (!a || name.trimmed().isEmpty()) return false;
-    return editStructure({}, tr("Rename %1").arg(QString::fromStdString(a->name)), [&](core::scene::Scene& s) {
+    return editStructure({}, [n = QString::fromStdString(a->name)] { return tr("Rename %1").arg(n); }, [&](core::scene::Scene& s) {
         s.findAssembly(id)->name = name.trimmed().toStdString();
         return true;
     });
@@ -238,9 +311,11 @@ bool SceneDocument::renameAssembly(AssemblyId id, const QString& name)
 bool SceneDocument::moveToAssembly(const std::vector<FragmentId>& fragments, AssemblyId assembly)
 {
     if (assembly != core::scene::NoAssembly && !m_scene.findAssembly(assembly)) return false;
-    const QString text = assembly == core::scene::NoAssembly
-                             ? tr("Take out of assembly")
-                             : tr("Move into %1").arg(QString::fromStdString(m_scene.findAssembly(assembly)->name));
+    const QString name = assembly == core::scene::NoAssembly ? QString() : assemblyNameOf(assembly);
+    const CommandText text = [this, assembly, name] {
+        return assembly == core::scene::NoAssembly ? tr("Take out of assembly")
+                                                   : tr("Move into %1").arg(assemblyNameOf(assembly, name));
+    };
     return editStructure(fragments, text, [&](core::scene::Scene& s) {
         for (FragmentId f : fragments)
             if (!s.moveToAssembly(f, assembly)) return false;
@@ -252,7 +327,7 @@ bool SceneDocument::setAssemblyPose(AssemblyId id, const core::scene::Pose& pose
 {
     const core::scene::Assembly* a = m_scene.findAssembly(id);
     if (!a || !pose.isRigid()) return false;
-    return editStructure({}, tr("Move %1").arg(QString::fromStdString(a->name)), [&](core::scene::Scene& s) {
+    return editStructure({}, [this, id, n = QString::fromStdString(a->name)] { return tr("Move %1").arg(assemblyNameOf(id, n)); }, [&](core::scene::Scene& s) {
         s.findAssembly(id)->pose = pose;
         return true;
     });
@@ -262,7 +337,7 @@ bool SceneDocument::setAssemblyDrum(AssemblyId id, FragmentId drum)
 {
     const core::scene::Assembly* a = m_scene.findAssembly(id);
     if (!a || (drum != core::scene::NoFragment && !m_scene.find(drum))) return false;
-    return editStructure({}, tr("Set the drum of %1").arg(QString::fromStdString(a->name)), [&](core::scene::Scene& s) {
+    return editStructure({}, [this, id, n = QString::fromStdString(a->name)] { return tr("Set the drum of %1").arg(assemblyNameOf(id, n)); }, [&](core::scene::Scene& s) {
         s.findAssembly(id)->drum = drum;
         return true;
     });
@@ -272,8 +347,10 @@ bool SceneDocument::setAssemblyVisible(AssemblyId id, bool visible)
 {
     const core::scene::Assembly* a = m_scene.findAssembly(id);
     if (!a) return false;
-    return editStructure({}, visible ? tr("Show %1").arg(QString::fromStdString(a->name))
-                                     : tr("Hide %1").arg(QString::fromStdString(a->name)),
+    const CommandText text = [this, id, visible, n = QString::fromStdString(a->name)] {
+        return visible ? tr("Show %1").arg(assemblyNameOf(id, n)) : tr("Hide %1").arg(assemblyNameOf(id, n));
+    };
+    return editStructure({}, text,
                          [&](core::scene::Scene& s) {
                              s.findAssembly(id)->visible = visible;
                              return true;
@@ -315,7 +392,7 @@ void SceneDocument::applyStructure(const SceneStructure& structure)
 }
 
 bool SceneDocument::setLabels(FragmentId id, AnnotationLayer layer, std::span<const std::uint32_t> leaves,
-                              std::uint8_t classId, const QString& text, quint64 stroke)
+                              std::uint8_t classId, const CommandText& text, quint64 stroke)
 {
     if (classId != 0 && !legend().find(layer, classId)) return false;
     LabelEdit edit = m_labels->makeEdit(id, layer, leaves, classId);
@@ -324,10 +401,11 @@ bool SceneDocument::setLabels(FragmentId id, AnnotationLayer layer, std::span<co
     return true;
 }
 
-bool SceneDocument::setLegend(core::annotation::Legend legend, const QString& text)
+bool SceneDocument::setLegend(core::annotation::Legend legend, const CommandText& text)
 {
     if (legend == m_scene.legend()) return false;
-    m_undo->push(new SetLegendCommand(*this, std::move(legend), text.isEmpty() ? tr("Change the legend") : text));
+    m_undo->push(new SetLegendCommand(*this, std::move(legend),
+                                      text.isEmpty() ? CommandText([] { return tr("Change the legend"); }) : text));
     return true;
 }
 
@@ -340,14 +418,15 @@ bool SceneDocument::removeLegendClass(AnnotationLayer layer, std::uint8_t classI
     classes.erase(std::remove_if(classes.begin(), classes.end(),
                                  [classId](const core::annotation::LegendClass& c) { return c.id == classId; }),
                   classes.end());
-    const QString text = tr("Remove the class %1").arg(QString::fromStdString(removed->name));
-    m_undo->beginMacro(text);
+    const QString name = QString::fromStdString(removed->name);
+    const CommandText text([name] { return tr("Remove the class %1").arg(name); });
+    beginMacro(text);
     for (const Fragment& f : m_scene.fragments()) {
         LabelEdit edit = m_labels->relabelEdit(f.id, layer, classId, replacement);
         if (!edit.empty()) m_undo->push(new EditLabelsCommand(*this, std::move(edit), text));
     }
     m_undo->push(new SetLegendCommand(*this, std::move(next), text));
-    m_undo->endMacro();
+    endMacro();
     return true;
 }
 

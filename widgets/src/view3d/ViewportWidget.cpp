@@ -163,7 +163,7 @@ void ViewportWidget::setFragments(Fragments fragments)
     invalidateImage(false);
     const bool fit = m_scheduler.fragments().empty() && !fragments.empty();
     m_camera.setSceneBounds(core::view::sceneBounds(fragments));
-    if (fit) m_camera.fit(m_camera.sceneBounds());
+    if (fit) m_camera.fit(core::view::sceneCorners(fragments));
     m_scheduler.setFragments(std::move(fragments), m_camera);
     requestFrame();
     if (fit) Q_EMIT cameraChanged();
@@ -205,14 +205,14 @@ Eigen::AlignedBox3d ViewportWidget::sceneBounds(bool selectedOnly) const
 
 void ViewportWidget::fitToScene()
 {
-    m_camera.fit(sceneBounds());
+    m_camera.fit(core::view::sceneCorners(m_scheduler.fragments()));
     cameraEdited(false);
 }
 
 void ViewportWidget::fitToSelection()
 {
-    const Eigen::AlignedBox3d box = sceneBounds(true);
-    m_camera.fit(box.isEmpty() ? sceneBounds() : box);
+    const auto selected = core::view::sceneCorners(m_scheduler.fragments(), true);
+    m_camera.fit(selected.empty() ? core::view::sceneCorners(m_scheduler.fragments()) : selected);
     cameraEdited(false);
 }
 

@@ -3,11 +3,16 @@
 namespace stylos::widgets {
 
 AddFragmentCommand::AddFragmentCommand(SceneDocument& document, core::scene::Fragment fragment,
-                                       SceneDocument::OctreePtr octree, const QString& text, QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_fragment(std::move(fragment)), m_octree(std::move(octree))
+                                       SceneDocument::OctreePtr octree, const CommandText& text, QUndoCommand* parent)
+    : DocumentCommand(parent), m_document(document), m_fragment(std::move(fragment)), m_octree(std::move(octree))
 {
     if (m_fragment.id == core::scene::NoFragment) m_fragment.id = m_document.allocateId();
-    setText(text.isEmpty() ? tr("Add %1").arg(QString::fromStdString(m_fragment.name)) : text);
+    if (text.isEmpty())
+        setText([this, name = QString::fromStdString(m_fragment.name)] {
+            return tr("Add %1").arg(m_document.nameOf(m_fragment.id, name));
+        });
+    else
+        setText(text);
 }
 
 void AddFragmentCommand::redo()

@@ -7,17 +7,17 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 namespace stylos::widgets {
 
-class AddFragmentCommand : public QUndoCommand {
+class AddFragmentCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::AddFragmentCommand)
 
 public:
     /** @p text names the step; empty: "Add NAME". */
     AddFragmentCommand(SceneDocument& document, core::scene::Fragment fragment, SceneDocument::OctreePtr octree,
-                       const QString& text = {}, QUndoCommand* parent = nullptr);
+                       const CommandText& text = {}, QUndoCommand* parent = nullptr);
 
     core::scene::FragmentId fragmentId() const { return m_fragment.id; }
 

@@ -5,10 +5,11 @@
 
 namespace stylos::widgets {
 
-EditLabelsCommand::EditLabelsCommand(SceneDocument& document, LabelEdit edit, const QString& text, quint64 stroke,
+EditLabelsCommand::EditLabelsCommand(SceneDocument& document, LabelEdit edit, const CommandText& text, quint64 stroke,
                                      QUndoCommand* parent)
-    : QUndoCommand(text, parent), m_document(document), m_edit(std::move(edit)), m_stroke(stroke)
+    : DocumentCommand(parent), m_document(document), m_edit(std::move(edit)), m_stroke(stroke)
 {
+    setText(text);
 }
 
 void EditLabelsCommand::redo()

@@ -5,16 +5,16 @@
  *        non-zero `stroke` token (SceneDocument::beginStroke()) merges into the previous label command of the
  *        same stroke, fragment and layer, so a whole stroke is one undo step (and disappears when it changes nothing). GUI thread only.
  */
+#include "document/commands/DocumentCommand.h"
 #include "stylos/widgets/annotation/LabelEdit.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
 
 namespace stylos::widgets {
 
 class SceneDocument;
 
-class EditLabelsCommand : public QUndoCommand {
+class EditLabelsCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::EditLabelsCommand)
 
 public:
@@ -22,7 +22,7 @@ public:
     static constexpr int CommandId = 0x4c42;
 
     /** Precondition: @p edit was made from the document's current labels. */
-    EditLabelsCommand(SceneDocument& document, LabelEdit edit, const QString& text, quint64 stroke = 0,
+    EditLabelsCommand(SceneDocument& document, LabelEdit edit, const CommandText& text, quint64 stroke = 0,
                       QUndoCommand* parent = nullptr);
 
     void redo() override;

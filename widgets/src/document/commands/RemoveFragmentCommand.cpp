@@ -4,11 +4,12 @@ namespace stylos::widgets {
 
 RemoveFragmentCommand::RemoveFragmentCommand(SceneDocument& document, core::scene::FragmentId id,
                                              QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_id(id),
+    : DocumentCommand(parent), m_document(document), m_id(id),
       m_index(static_cast<int>(document.scene().indexOf(id).value_or(document.scene().size())))
 {
     const core::scene::Fragment* f = document.fragment(id);
-    setText(tr("Remove %1").arg(f ? QString::fromStdString(f->name) : QString()));
+    const QString name = f ? QString::fromStdString(f->name) : QString();
+    setText([this, name] { return tr("Remove %1").arg(m_document.nameOf(m_id, name)); });
 }
 
 void RemoveFragmentCommand::redo()

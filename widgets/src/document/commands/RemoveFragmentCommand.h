@@ -6,11 +6,11 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 namespace stylos::widgets {
 
-class RemoveFragmentCommand : public QUndoCommand {
+class RemoveFragmentCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::RemoveFragmentCommand)
 
 public:

@@ -4,10 +4,10 @@ namespace stylos::widgets {
 
 RenameFragmentCommand::RenameFragmentCommand(SceneDocument& document, core::scene::FragmentId id,
                                              const QString& name, QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_id(id), m_new(name.toStdString())
+    : DocumentCommand(parent), m_document(document), m_id(id), m_new(name.toStdString())
 {
     if (const core::scene::Fragment* f = document.fragment(id)) m_old = f->name;
-    setText(tr("Rename %1 to %2").arg(QString::fromStdString(m_old), name));
+    setText([this] { return tr("Rename %1 to %2").arg(QString::fromStdString(m_old), QString::fromStdString(m_new)); });
 }
 
 void RenameFragmentCommand::redo()

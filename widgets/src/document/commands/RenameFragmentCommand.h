@@ -5,13 +5,13 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 #include <string>
 
 namespace stylos::widgets {
 
-class RenameFragmentCommand : public QUndoCommand {
+class RenameFragmentCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::RenameFragmentCommand)
 
 public:

@@ -4,11 +4,12 @@ namespace stylos::widgets {
 
 SetFragmentColourCommand::SetFragmentColourCommand(SceneDocument& document, core::scene::FragmentId id,
                                                    core::scene::Rgb colour, QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_id(id), m_new(colour)
+    : DocumentCommand(parent), m_document(document), m_id(id), m_new(colour)
 {
     const core::scene::Fragment* f = document.fragment(id);
     if (f) m_old = f->colour;
-    setText(tr("Change the colour of %1").arg(f ? QString::fromStdString(f->name) : QString()));
+    const QString name = f ? QString::fromStdString(f->name) : QString();
+    setText([this, name] { return tr("Change the colour of %1").arg(m_document.nameOf(m_id, name)); });
 }
 
 void SetFragmentColourCommand::redo()

@@ -5,11 +5,11 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 namespace stylos::widgets {
 
-class SetFragmentColourCommand : public QUndoCommand {
+class SetFragmentColourCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::SetFragmentColourCommand)
 
 public:

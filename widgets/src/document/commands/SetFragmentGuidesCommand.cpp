@@ -3,13 +3,17 @@
 namespace stylos::widgets {
 
 SetFragmentGuidesCommand::SetFragmentGuidesCommand(SceneDocument& document, core::scene::FragmentId id,
-                                                   std::vector<core::scene::Guide> guides, const QString& text,
+                                                   std::vector<core::scene::Guide> guides, const CommandText& text,
                                                    QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_id(id), m_new(std::move(guides))
+    : DocumentCommand(parent), m_document(document), m_id(id), m_new(std::move(guides))
 {
     const core::scene::Fragment* f = document.fragment(id);
     if (f) m_old = f->guides;
-    setText(text.isEmpty() ? tr("Change the guides of %1").arg(f ? QString::fromStdString(f->name) : QString()) : text);
+    const QString name = f ? QString::fromStdString(f->name) : QString();
+    if (text.isEmpty())
+        setText([this, name] { return tr("Change the guides of %1").arg(m_document.nameOf(m_id, name)); });
+    else
+        setText(text);
 }
 
 void SetFragmentGuidesCommand::redo()

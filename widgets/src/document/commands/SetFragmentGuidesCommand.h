@@ -6,19 +6,19 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 #include <vector>
 
 namespace stylos::widgets {
 
-class SetFragmentGuidesCommand : public QUndoCommand {
+class SetFragmentGuidesCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::SetFragmentGuidesCommand)
 
 public:
     /** Precondition: @p id is in the document's scene. @p text names the step; default "Change the guides of NAME". */
     SetFragmentGuidesCommand(SceneDocument& document, core::scene::FragmentId id, std::vector<core::scene::Guide> guides,
-                             const QString& text = {}, QUndoCommand* parent = nullptr);
+                             const CommandText& text = {}, QUndoCommand* parent = nullptr);
 
     void redo() override;
     void undo() override;

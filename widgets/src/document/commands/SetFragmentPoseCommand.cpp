@@ -4,11 +4,12 @@ namespace stylos::widgets {
 
 SetFragmentPoseCommand::SetFragmentPoseCommand(SceneDocument& document, core::scene::FragmentId id,
                                                const core::scene::Pose& pose, bool continuing, QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_id(id), m_new(pose), m_continuing(continuing)
+    : DocumentCommand(parent), m_document(document), m_id(id), m_new(pose), m_continuing(continuing)
 {
     const core::scene::Fragment* f = document.fragment(id);
     if (f) m_old = f->pose;
-    setText(tr("Move %1").arg(f ? QString::fromStdString(f->name) : QString()));
+    const QString name = f ? QString::fromStdString(f->name) : QString();
+    setText([this, name] { return tr("Move %1").arg(m_document.nameOf(m_id, name)); });
 }
 
 void SetFragmentPoseCommand::redo()

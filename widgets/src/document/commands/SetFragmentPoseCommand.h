@@ -8,11 +8,11 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include <QCoreApplication>
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 namespace stylos::widgets {
 
-class SetFragmentPoseCommand : public QUndoCommand {
+class SetFragmentPoseCommand : public DocumentCommand {
     Q_DECLARE_TR_FUNCTIONS(stylos::widgets::SetFragmentPoseCommand)
 
 public:

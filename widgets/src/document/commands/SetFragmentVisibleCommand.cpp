@@ -4,11 +4,14 @@ namespace stylos::widgets {
 
 SetFragmentVisibleCommand::SetFragmentVisibleCommand(SceneDocument& document, core::scene::FragmentId id,
                                                      bool visible, QUndoCommand* parent)
-    : QUndoCommand(parent), m_document(document), m_id(id), m_visible(visible)
+    : DocumentCommand(parent), m_document(document), m_id(id), m_visible(visible)
 {
     const core::scene::Fragment* f = document.fragment(id);
     const QString name = f ? QString::fromStdString(f->name) : QString();
-    setText(visible ? tr("Show %1").arg(name) : tr("Hide %1").arg(name));
+    setText([this, name] {
+        const QString current = m_document.nameOf(m_id, name);
+        return m_visible ? tr("Show %1").arg(current) : tr("Hide %1").arg(current);
+    });
 }
 
 void SetFragmentVisibleCommand::redo()

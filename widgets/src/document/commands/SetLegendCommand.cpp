@@ -4,10 +4,11 @@
 
 namespace stylos::widgets {
 
-SetLegendCommand::SetLegendCommand(SceneDocument& document, core::annotation::Legend legend, const QString& text,
+SetLegendCommand::SetLegendCommand(SceneDocument& document, core::annotation::Legend legend, const CommandText& text,
                                    QUndoCommand* parent)
-    : QUndoCommand(text, parent), m_document(document), m_old(document.scene().legend()), m_new(std::move(legend))
+    : DocumentCommand(parent), m_document(document), m_old(document.scene().legend()), m_new(std::move(legend))
 {
+    setText(text);
 }
 
 void SetLegendCommand::redo()

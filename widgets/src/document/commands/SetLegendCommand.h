@@ -4,17 +4,16 @@
  *        hatch, added or removed). Removing a class that leaves hold is a macro: the leaves' relabelling
  *        (EditLabelsCommand per fragment) then this. GUI thread only.
  */
+#include "document/commands/DocumentCommand.h"
 #include "stylos/core/annotation/Legend.h"
-
-#include <QUndoCommand>
 
 namespace stylos::widgets {
 
 class SceneDocument;
 
-class SetLegendCommand : public QUndoCommand {
+class SetLegendCommand : public DocumentCommand {
 public:
-    SetLegendCommand(SceneDocument& document, core::annotation::Legend legend, const QString& text,
+    SetLegendCommand(SceneDocument& document, core::annotation::Legend legend, const CommandText& text,
                      QUndoCommand* parent = nullptr);
 
     void redo() override;

@@ -13,9 +13,10 @@ SceneStructure SceneStructure::of(const core::scene::Scene& scene, const std::ve
 }
 
 SetSceneStructureCommand::SetSceneStructureCommand(SceneDocument& document, SceneStructure before, SceneStructure after,
-                                                   const QString& text, QUndoCommand* parent)
-    : QUndoCommand(text, parent), m_document(document), m_before(std::move(before)), m_after(std::move(after))
+                                                   const CommandText& text, QUndoCommand* parent)
+    : DocumentCommand(parent), m_document(document), m_before(std::move(before)), m_after(std::move(after))
 {
+    setText(text);
 }
 
 void SetSceneStructureCommand::redo()

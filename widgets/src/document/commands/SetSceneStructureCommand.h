@@ -8,7 +8,7 @@
  */
 #include "stylos/widgets/document/SceneDocument.h"
 
-#include <QUndoCommand>
+#include "document/commands/DocumentCommand.h"
 
 #include <map>
 #include <utility>
@@ -27,9 +27,9 @@ struct SceneStructure {
     static SceneStructure of(const core::scene::Scene& scene, const std::vector<core::scene::FragmentId>& touched);
 };
 
-class SetSceneStructureCommand : public QUndoCommand {
+class SetSceneStructureCommand : public DocumentCommand {
 public:
-    SetSceneStructureCommand(SceneDocument& document, SceneStructure before, SceneStructure after, const QString& text,
+    SetSceneStructureCommand(SceneDocument& document, SceneStructure before, SceneStructure after, const CommandText& text,
                              QUndoCommand* parent = nullptr);
 
     void redo() override;

@@ -20,6 +20,8 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 
+#include <vector>
+
 #include <optional>
 
 namespace stylos::core::view {
@@ -88,6 +90,14 @@ public:
      *        with a 5 % margin, keeping the orientation and projection. An empty box is ignored.
      */
     void fit(const Eigen::AlignedBox3d& box);
+    /**
+     * @brief Frames @p points (scene frame; e.g. the corners of the cells a scene occupies): keeping the
+     *        orientation and projection, the eye goes where the points' picture is centred and fills the view
+     *        in width or in height, then backs off by the 5 % margin; the target is at the depth of the
+     *        points' bounding box centre (what an orbit turns about). Exact for a perspective view: the
+     *        smallest distance at which every point is inside the frustum. No points: ignored.
+     */
+    void fit(const std::vector<Eigen::Vector3d>& points);
 
     /** @brief Scene → camera (OpenGL convention). */
     Eigen::Matrix4d viewMatrix() const;

@@ -32,6 +32,13 @@ struct ScenePick {
 Eigen::AlignedBox3d sceneBounds(const std::vector<ViewFragment>& fragments, bool selectedOnly = false);
 
 /**
+ * @brief The corners of the cells the visible fragments occupy at a coarse level (level 5, or the octree's
+ *        depth when less: at most 32 Ki cells each), posed into the scene frame; only the selected ones with
+ *        @p selectedOnly. What Camera::fit(points) frames: tighter than a box round a rotated fragment.
+ */
+std::vector<Eigen::Vector3d> sceneCorners(const std::vector<ViewFragment>& fragments, bool selectedOnly = false);
+
+/**
  * @brief The nearest leaf along the ray through the pixel (@p x, @p y) of @p camera among the visible
  *        fragments, within @p radiusPixels of the ray (the pixel footprint at each depth).
  */

@@ -16,6 +16,7 @@
  * the demo folder, removed at the end).
  * Thread-safety: GUI thread only (the worker gets copies and touches nothing of this object).
  */
+#include "stylos/core/scene/Scene.h"
 #include "stylos/core/synth/SyntheticScan.h"
 
 #include <QObject>
@@ -30,6 +31,7 @@ class QFutureWatcherBase;
 
 namespace stylos::widgets {
 
+class SceneDocument;
 class TaskManager;
 
 class DemoScene : public QObject {
@@ -61,6 +63,26 @@ class DemoScene : public QObject {
     static QString defaultDirectory();
     /** @brief The four items, in project order (names translated). */
     static std::vector<Item> items();
+    /** @brief The names the demo gives, in the current language. */
+    struct Names {
+        QStringList items; ///< in items() order
+        QString axis;      ///< the drum's axis guide
+        QString flute;     ///< the flute guides: "%1" is the flute's number
+        QString assembly;  ///< the reconstruction assembly
+    };
+    static Names names();
+    /**
+     * @brief Names the demo's fragments (by their octree in @p folder), guides and assembly in @p scene
+     *        with @p to. With @p from, only the names still equal to those in @p from change (what the
+     *        user renamed stays); without, every one does. Returns whether a name changed.
+     */
+    static bool applyNames(core::scene::Scene& scene, const QString& folder, const Names& to,
+                           const Names* from = nullptr);
+    /**
+     * @brief After a change of language: when @p document is the demo project, gives its demo names the
+     *        current language's (SceneDocument::relabel, not an undo step), except those the user renamed.
+     */
+    void relabel(SceneDocument& document);
 
     QString directory() const { return m_directory; }
     /** @brief directory() + "/demo.stylos", whether it exists yet or not. */
@@ -98,12 +120,15 @@ class DemoScene : public QObject {
 
   private:
     QString stamp() const;
+    /** Writes the current language's names into the cached project (made in another language, maybe). */
+    void localiseProject();
     void generationEnded(QFutureWatcherBase* watcher);
 
     TaskManager& m_tasks;
     QString m_directory;
     double m_spacing = DefaultSpacing;
     QPointer<QFutureWatcherBase> m_watcher;
+    Names m_shown; ///< the names last given to the project (relabel() replaces those)
 };
 
 } // namespace stylos::widgets

@@ -9,12 +9,18 @@
  */
 #include "stylos/core/octree/OctreeBuild.h"
 
+#include "stylos/core/scene/Pose.h"
+
 #include <QObject>
 #include <QSet>
 #include <QString>
 #include <QStringList>
 
 class QFutureWatcherBase;
+
+namespace stylos::core::octree {
+class PackedOctree;
+}
 
 namespace stylos::widgets {
 
@@ -67,6 +73,8 @@ private:
     QString reserveOutput(const QString& input);
     void importEnded(const QString& input, const QString& output, QFutureWatcherBase* watcher);
     void fail(const QString& input, const QString& message);
+    /** Where a scan with @p octree goes among the fragments open now (core::scene::placeImport). */
+    core::scene::Pose placement(const core::octree::PackedOctree& octree) const;
 
     SceneDocument& m_document;
     TaskManager& m_tasks;

@@ -10,6 +10,7 @@
  *        GUI thread only. Failures come back as translated messages naming the file and the reason.
  */
 #include "stylos/core/scene/Scene.h"
+#include "stylos/widgets/document/CommandText.h"
 
 #include <cstdint>
 #include <span>
@@ -19,11 +20,13 @@
 #include <QString>
 #include <QStringList>
 
+#include <functional>
 #include <map>
 #include <memory>
 #include <vector>
 
 class QFutureWatcherBase;
+class QUndoCommand;
 class QUndoStack;
 
 namespace stylos::core::octree {
@@ -75,6 +78,22 @@ public:
     bool setDeveloppee(FragmentId id, DeveloppeePtr result);
 
     QUndoStack* undoStack() const { return m_undo; }
+    /** @brief Opens a macro (several edits, one undo step) whose text follows the language; endMacro() closes it. */
+    void beginMacro(const CommandText& text);
+    void endMacro();
+    /** @brief Makes every undo step's text again in the current language (after a change of language). */
+    void retranslate();
+    /**
+     * @brief Gives new names to fragments, their guides and assemblies: @p rename edits a copy of the scene,
+     *        and only the names it changed are taken. Not an undo step: it is for the names the program gave
+     *        (the demo's "Drum", "Axis"…), which follow the language; the project stays as modified as it
+     *        was. Emits fragmentChanged() / assemblyChanged() for what changed; returns how many changed.
+     */
+    int relabel(const std::function<void(core::scene::Scene&)>& rename);
+    /** @brief The fragment's name now; @p fallback when it is not in the scene (any more). */
+    QString nameOf(FragmentId id, const QString& fallback = {}) const;
+    /** @brief The assembly's name now; @p fallback when it is not in the scene (any more). */
+    QString assemblyNameOf(core::scene::AssemblyId id, const QString& fallback = {}) const;
     TaskManager& tasks() const { return m_tasks; }
 
     /** @brief The project file, absolute; empty for a project never saved. */
@@ -92,7 +111,7 @@ public:
      *        @p octree, or none (then it is opened in the background). @p commandText names the undo
      *        step ("Import drum.ply"); default "Add NAME". Returns the fragment's id.
      */
-    FragmentId addFragment(core::scene::Fragment fragment, OctreePtr octree, const QString& commandText = {});
+    FragmentId addFragment(core::scene::Fragment fragment, OctreePtr octree, const CommandText& commandText = {});
     bool removeFragment(FragmentId id);
     bool renameFragment(FragmentId id, const QString& name);
     /** @brief @p continuing: part of a drag, merged with the previous pose step of the same fragment. */
@@ -101,7 +120,7 @@ public:
     bool setFragmentVisible(FragmentId id, bool visible);
     /** @brief Replaces the fragment's guides (its own frame); @p commandText names the step (default
      *         "Change the guides of NAME"). */
-    bool setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const QString& commandText = {});
+    bool setFragmentGuides(FragmentId id, std::vector<core::scene::Guide> guides, const CommandText& commandText = {});
 
     // Where fragments are: a fragment's pose is relative to its assembly (core::scene::Scene).
     /** @brief Fragment frame → scene frame (its assembly's pose composed with its own). */
@@ -154,10 +173,10 @@ public:
      *        neither 0 nor a class of the layer's legend.
      */
     bool setLabels(FragmentId id, AnnotationLayer layer, std::span<const std::uint32_t> leaves, std::uint8_t classId,
-                   const QString& text, quint64 stroke = 0);
+                   const CommandText& text, quint64 stroke = 0);
     /** @brief Replaces the legend (names, colours, hatches, classes added): one undo step, default text
      *         "Change the legend". False when equal. Removing a class that is used: removeLegendClass(). */
-    bool setLegend(core::annotation::Legend legend, const QString& text = {});
+    bool setLegend(core::annotation::Legend legend, const CommandText& text = {});
     /**
      * @brief Removes class @p classId from @p layer; every leaf holding it (in every fragment with labels) gets
      *        @p replacement (0: unlabelled, or another class of the layer). One undo step. False when there is
@@ -231,7 +250,7 @@ private:
     void applyStructure(const SceneStructure& structure);
     /** Pushes the command from the current structure to the one @p edit makes of a copy of the scene. */
     template <typename Edit>
-    bool editStructure(const std::vector<FragmentId>& touched, const QString& text, Edit edit);
+    bool editStructure(const std::vector<FragmentId>& touched, const CommandText& text, Edit edit);
 
     // The commands' primitives: change the scene and signal, without touching the undo stack.
     FragmentId allocateId() { return m_scene.allocateId(); }
@@ -257,6 +276,9 @@ private:
 
     TaskManager& m_tasks;
     QUndoStack* m_undo;
+    /** The texts of the macros open or on the stack (QUndoStack makes their commands), by command; kept to
+     *  the commands on the stack. */
+    std::map<const QUndoCommand*, CommandText> m_macroTexts;
     core::scene::Scene m_scene;
     std::map<FragmentId, OctreePtr> m_octrees;
     std::map<FragmentId, DeveloppeePtr> m_developpees;
