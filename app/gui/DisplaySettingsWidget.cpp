@@ -28,11 +28,14 @@ constexpr int MaxLevel = 21;                                 ///< the octree's d
 
 DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, QWidget* parent)
     : QWidget(parent), m_viewport(viewport), m_form(new QFormLayout(this)), m_shading(new QComboBox(this)),
+      m_layer(new QComboBox(this)),
       m_splat(new QDoubleSpinBox(this)), m_budget(new QDoubleSpinBox(this)), m_detail(new QComboBox(this)),
       m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this))
 {
     setObjectName(QStringLiteral("displaySettings"));
-    m_shading->addItems({QString(), QString(), QString(), QString()});
+    m_shading->addItems({QString(), QString(), QString(), QString(), QString()});
+    m_layer->setObjectName(QStringLiteral("annotationLayerBox"));
+    m_layer->addItems({QString(), QString()});
     m_splat->setRange(0.25, 4.0);
     m_splat->setSingleStep(0.25);
     m_splat->setDecimals(2);
@@ -46,6 +49,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     levelRow->addWidget(m_level, 1);
     levelRow->addWidget(m_levelValue);
     m_form->addRow(QString(), m_shading);
+    m_form->addRow(QString(), m_layer);
     m_form->addRow(QString(), m_splat);
     m_form->addRow(QString(), m_budget);
     m_form->addRow(QString(), m_detail);
@@ -53,7 +57,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
 
     const QSettings settings;
     m_updating = true;
-    m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 3));
+    m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 4));
     m_splat->setValue(settings.value(SplatKey, 1.0).toDouble());
     m_budget->setValue(settings.value(BudgetKey, 1.0).toDouble());
     const int level = settings.value(DetailKey, -1).toInt();
@@ -66,6 +70,9 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     for (QDoubleSpinBox* spin : {m_splat, m_budget})
         connect(spin, &QDoubleSpinBox::valueChanged, this, &DisplaySettingsWidget::apply);
     connect(m_level, &QSlider::valueChanged, this, &DisplaySettingsWidget::apply);
+    connect(m_layer, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (!m_updating) Q_EMIT annotationLayerChanged(index);
+    });
     apply();
     retranslateUi();
 }
@@ -76,6 +83,13 @@ void DisplaySettingsWidget::syncFromViewport()
     m_shading->setCurrentIndex(static_cast<int>(m_viewport.shading()));
     m_updating = false;
     save();
+}
+
+void DisplaySettingsWidget::setAnnotationLayer(int layer)
+{
+    m_updating = true;
+    m_layer->setCurrentIndex(layer);
+    m_updating = false;
 }
 
 void DisplaySettingsWidget::apply()
@@ -116,13 +130,18 @@ void DisplaySettingsWidget::retranslateUi()
     m_shading->setItemText(1, tr("Skydome"));
     m_shading->setItemText(2, tr("Scan colour"));
     m_shading->setItemText(3, tr("Eye-dome lighting"));
-    m_shading->setToolTip(tr("Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight"));
+    m_shading->setItemText(4, tr("Annotation"));
+    m_shading->setToolTip(tr("Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. "
+                             "Annotation tints each cell by its class in the annotation layer below"));
+    m_layer->setItemText(0, tr("Material / condition"));
+    m_layer->setItemText(1, tr("Tool marks"));
+    m_layer->setToolTip(tr("The layer the Annotation shading shows and the 3D lasso labels"));
     m_splat->setSuffix(tr(" ×"));
     m_budget->setSuffix(tr(" M points"));
     m_budget->setToolTip(tr("Points drawn at most; the view refines up to it when the camera stops"));
     m_detail->setItemText(0, tr("View-dependent"));
     m_detail->setItemText(1, tr("Global level"));
-    const QStringList labels = {tr("Shading"), tr("Splat size"), tr("Point budget"), tr("Level of detail"),
+    const QStringList labels = {tr("Shading"), tr("Annotation layer"), tr("Splat size"), tr("Point budget"), tr("Level of detail"),
                                 tr("Level")};
     for (int row = 0; row < m_form->rowCount(); ++row)
         if (auto* label = qobject_cast<QLabel*>(m_form->itemAt(row, QFormLayout::LabelRole)

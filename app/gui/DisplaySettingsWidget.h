@@ -1,7 +1,8 @@
 #pragma once
 /** @file
  * @brief The display settings of the 3D view, shown in the Properties dock: shading (headlight, skydome,
- *        scan colour), splat size, point budget (millions of points while the view refines), and level of
+ *        scan colour, eye-dome lighting, annotation) and the annotation layer the Annotation shading tints by
+ *        (material or tool mark: announced, the owner hands it to AnnotationSync), splat size, point budget (millions of points while the view refines), and level of
  *        detail — view-dependent under the budget, or the paper's global level slider. Applied to the view
  *        at once and kept in QSettings (group "view"). GUI thread only.
  */
@@ -30,10 +31,17 @@ public:
     QDoubleSpinBox* splatSpin() const { return m_splat; }
     QDoubleSpinBox* budgetSpin() const { return m_budget; }
     QComboBox* detailBox() const { return m_detail; }
+    QComboBox* annotationLayerBox() const { return m_layer; }
+    /** @brief Shows @p layer (an AnnotationLayer as int) without announcing it. */
+    void setAnnotationLayer(int layer);
     QSlider* levelSlider() const { return m_level; }
 
     /** @brief Shows the view's current shading (after a menu changed it). */
     void syncFromViewport();
+
+Q_SIGNALS:
+    /** @brief The user chose the annotation layer @p layer (an AnnotationLayer as int). */
+    void annotationLayerChanged(int layer);
 
 protected:
     void changeEvent(QEvent* event) override;
@@ -46,6 +54,7 @@ private:
     widgets::ViewportWidget& m_viewport;
     QFormLayout* m_form;
     QComboBox* m_shading;
+    QComboBox* m_layer;
     QDoubleSpinBox* m_splat;
     QDoubleSpinBox* m_budget;
     QComboBox* m_detail;
