@@ -189,6 +189,12 @@ void grabAnnotationWhenReady(MainWindow& window, const QString& path, int timeou
         }
         const auto id = fragments.front().id;
         window.sceneDock().selectFragment(id);
+        window.viewportSync()->pushNow(); // the selection reaches the view: fit it, seen from the front, a little above
+        view->setStandardView(core::view::StandardView::Front);
+        core::view::Camera camera = view->camera();
+        camera.orbit(0.0, 0.35);
+        view->setCamera(camera, false);
+        view->fitToSelection();
         // The fragment's bounds on screen; the regions are drawn over them as fractions.
         Eigen::AlignedBox2d screen;
         const Eigen::AlignedBox3d box = core::view::sceneBounds(
