@@ -2,6 +2,57 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="el">
 <context>
+    <name>stylos::app::AnnotationActions</name>
+    <message>
+        <source>The legend has no class in this layer: add one first</source>
+        <translation>Το υπόμνημα δεν έχει καμία κατηγορία σε αυτό το επίπεδο: προσθέστε πρώτα μία</translation>
+    </message>
+    <message>
+        <source>Erase with the lasso</source>
+        <translation>Σβήσιμο με το λάσο</translation>
+    </message>
+    <message>
+        <source>Lasso in 3D</source>
+        <translation>Λάσο σε 3Δ</translation>
+    </message>
+    <message>
+        <source>Lasso: no fragment selected or under the lasso</source>
+        <translation>Λάσο: κανένα θραύσμα επιλεγμένο ή κάτω από το λάσο</translation>
+    </message>
+    <message>
+        <source>Lasso: no visible cell changed</source>
+        <translation>Λάσο: καμία ορατή κυψέλη δεν άλλαξε</translation>
+    </message>
+    <message>
+        <source>Annotate in 3D (&amp;lasso)</source>
+        <translation>Σχολιασμός σε 3Δ (&amp;λάσο)</translation>
+    </message>
+    <message>
+        <source>Draw a lasso in the 3D view: the visible cells of the selected fragment inside it take the chosen class; Ctrl erases; Escape cancels; Alt-drag orbits</source>
+        <translation>Σχεδιάστε ένα λάσο στην 3Δ προβολή: οι ορατές κυψέλες του επιλεγμένου θραύσματος μέσα του παίρνουν την επιλεγμένη κατηγορία· Ctrl σβήνει· Escape ακυρώνει· Alt-σύρσιμο περιστρέφει</translation>
+    </message>
+    <message>
+        <source>&amp;Erase with the lasso</source>
+        <translation>&amp;Σβήσιμο με το λάσο</translation>
+    </message>
+    <message>
+        <source>The lasso removes the class of the cells it takes</source>
+        <translation>Το λάσο αφαιρεί την κατηγορία των κυψελών που παίρνει</translation>
+    </message>
+    <message>
+        <source>The class the lasso gives</source>
+        <translation>Η κατηγορία που δίνει το λάσο</translation>
+    </message>
+    <message>
+        <source>&amp;Material / condition layer</source>
+        <translation>Επίπεδο &amp;υλικού / κατάστασης</translation>
+    </message>
+    <message>
+        <source>&amp;Tool mark layer</source>
+        <translation>Επίπεδο ί&amp;χνών εργαλείου</translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::AssemblyActions</name>
     <message>
         <source>Assembly %1</source>
@@ -129,6 +180,14 @@
         <source>--dock and --gizmo do not go together</source>
         <translation>τα --dock και --gizmo δεν συνδυάζονται</translation>
     </message>
+    <message>
+        <source>With --grab: first label three regions of the first fragment with the 3D lasso (preserved marble, fractured marble, plaster) and show the Annotation shading.</source>
+        <translation>Με --grab: πρώτα επισήμανση τριών περιοχών του πρώτου θραύσματος με το 3Δ λάσο (σωζόμενο μάρμαρο, θραυσμένο μάρμαρο, γύψος) και εμφάνιση της σκίασης Σχολιασμός.</translation>
+    </message>
+    <message>
+        <source>--annotation goes with --grab alone</source>
+        <translation>το --annotation πάει μόνο με το --grab</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -229,6 +288,30 @@
     <message>
         <source>Eye-dome lighting</source>
         <translation>Φωτισμός eye-dome (EDL)</translation>
+    </message>
+    <message>
+        <source>Annotation</source>
+        <translation>Σχολιασμός</translation>
+    </message>
+    <message>
+        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. Annotation tints each cell by its class in the annotation layer below</source>
+        <translation>Ο ουράνιος θόλος χρειάζεται Εργαλεία › Υπολογισμός ουράνιου θόλου· χωρίς αυτόν ένα θραύσμα φωτίζεται από τον προβολέα. Ο Σχολιασμός χρωματίζει κάθε κυψέλη κατά την κατηγορία της στο επίπεδο σχολιασμού παρακάτω</translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation>Υλικό / κατάσταση</translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation>Ίχνη εργαλείου</translation>
+    </message>
+    <message>
+        <source>The layer the Annotation shading shows and the 3D lasso labels</source>
+        <translation>Το επίπεδο που δείχνει η σκίαση Σχολιασμός και επισημαίνει το 3Δ λάσο</translation>
+    </message>
+    <message>
+        <source>Annotation layer</source>
+        <translation>Επίπεδο σχολιασμού</translation>
     </message>
 </context>
 <context>
@@ -506,6 +589,10 @@
     <message>
         <source>&amp;Eye-dome lighting</source>
         <translation>Φωτισμός &amp;eye-dome (EDL)</translation>
+    </message>
+    <message>
+        <source>&amp;Annotation</source>
+        <translation>Σ&amp;χολιασμός</translation>
     </message>
 </context>
 <context>
@@ -1444,6 +1531,18 @@
     <message>
         <source>Hide %1</source>
         <translation>Απόκρυψη %1</translation>
+    </message>
+    <message>
+        <source>Change the legend</source>
+        <translation>Αλλαγή του υπομνήματος</translation>
+    </message>
+    <message>
+        <source>Remove the class %1</source>
+        <translation>Αφαίρεση της κατηγορίας %1</translation>
+    </message>
+    <message>
+        <source>Could not save the annotations of %1 into %2: %3.</source>
+        <translation>Δεν ήταν δυνατή η αποθήκευση των σχολίων του %1 στο %2: %3.</translation>
     </message>
 </context>
 <context>

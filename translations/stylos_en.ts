@@ -2,6 +2,57 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="en">
 <context>
+    <name>stylos::app::AnnotationActions</name>
+    <message>
+        <source>The legend has no class in this layer: add one first</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Erase with the lasso</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lasso in 3D</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lasso: no fragment selected or under the lasso</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Lasso: no visible cell changed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Annotate in 3D (&amp;lasso)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Draw a lasso in the 3D view: the visible cells of the selected fragment inside it take the chosen class; Ctrl erases; Escape cancels; Alt-drag orbits</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Erase with the lasso</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The lasso removes the class of the cells it takes</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The class the lasso gives</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Material / condition layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Tool mark layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::AssemblyActions</name>
     <message>
         <source>Assembly %1</source>
@@ -129,6 +180,14 @@
         <source>--dock and --gizmo do not go together</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>With --grab: first label three regions of the first fragment with the 3D lasso (preserved marble, fractured marble, plaster) and show the Annotation shading.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--annotation goes with --grab alone</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -228,6 +287,30 @@
     </message>
     <message>
         <source>Eye-dome lighting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Annotation</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. Annotation tints each cell by its class in the annotation layer below</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The layer the Annotation shading shows and the 3D lasso labels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Annotation layer</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -505,6 +588,10 @@
     </message>
     <message>
         <source>&amp;Eye-dome lighting</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Annotation</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1443,6 +1530,18 @@
     </message>
     <message>
         <source>Hide %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Change the legend</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Remove the class %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save the annotations of %1 into %2: %3.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

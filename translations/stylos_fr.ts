@@ -2,6 +2,57 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>stylos::app::AnnotationActions</name>
+    <message>
+        <source>The legend has no class in this layer: add one first</source>
+        <translation>La légende n’a aucune classe dans cette couche : ajoutez-en une d’abord</translation>
+    </message>
+    <message>
+        <source>Erase with the lasso</source>
+        <translation>Effacer au lasso</translation>
+    </message>
+    <message>
+        <source>Lasso in 3D</source>
+        <translation>Lasso en 3D</translation>
+    </message>
+    <message>
+        <source>Lasso: no fragment selected or under the lasso</source>
+        <translation>Lasso : aucun fragment sélectionné ni sous le lasso</translation>
+    </message>
+    <message>
+        <source>Lasso: no visible cell changed</source>
+        <translation>Lasso : aucune cellule visible n’a changé</translation>
+    </message>
+    <message>
+        <source>Annotate in 3D (&amp;lasso)</source>
+        <translation>Annoter en 3D (&amp;lasso)</translation>
+    </message>
+    <message>
+        <source>Draw a lasso in the 3D view: the visible cells of the selected fragment inside it take the chosen class; Ctrl erases; Escape cancels; Alt-drag orbits</source>
+        <translation>Tracez un lasso dans la vue 3D : les cellules visibles du fragment sélectionné à l’intérieur prennent la classe choisie ; Ctrl efface ; Échap annule ; Alt-glisser fait tourner la vue</translation>
+    </message>
+    <message>
+        <source>&amp;Erase with the lasso</source>
+        <translation>&amp;Effacer au lasso</translation>
+    </message>
+    <message>
+        <source>The lasso removes the class of the cells it takes</source>
+        <translation>Le lasso retire la classe des cellules qu’il prend</translation>
+    </message>
+    <message>
+        <source>The class the lasso gives</source>
+        <translation>La classe que donne le lasso</translation>
+    </message>
+    <message>
+        <source>&amp;Material / condition layer</source>
+        <translation>Couche &amp;matériau / état</translation>
+    </message>
+    <message>
+        <source>&amp;Tool mark layer</source>
+        <translation>Couche &amp;traces d’outil</translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::AssemblyActions</name>
     <message>
         <source>Assembly %1</source>
@@ -129,6 +180,14 @@
         <source>--dock and --gizmo do not go together</source>
         <translation>--dock et --gizmo ne vont pas ensemble</translation>
     </message>
+    <message>
+        <source>With --grab: first label three regions of the first fragment with the 3D lasso (preserved marble, fractured marble, plaster) and show the Annotation shading.</source>
+        <translation>Avec --grab : étiqueter d’abord trois régions du premier fragment au lasso 3D (marbre conservé, marbre fracturé, plâtre) et afficher l’ombrage Annotation.</translation>
+    </message>
+    <message>
+        <source>--annotation goes with --grab alone</source>
+        <translation>--annotation va avec --grab seul</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -229,6 +288,30 @@
     <message>
         <source>Eye-dome lighting</source>
         <translation>Éclairage eye-dome (EDL)</translation>
+    </message>
+    <message>
+        <source>Annotation</source>
+        <translation>Annotation</translation>
+    </message>
+    <message>
+        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. Annotation tints each cell by its class in the annotation layer below</source>
+        <translation>Le skydome demande Outils › Calculer le skydome ; sans lui, un fragment est éclairé par la lampe frontale. Annotation teinte chaque cellule selon sa classe dans la couche d’annotation ci-dessous</translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation>Matériau / état</translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation>Traces d’outil</translation>
+    </message>
+    <message>
+        <source>The layer the Annotation shading shows and the 3D lasso labels</source>
+        <translation>La couche que montre l’ombrage Annotation et qu’étiquette le lasso 3D</translation>
+    </message>
+    <message>
+        <source>Annotation layer</source>
+        <translation>Couche d’annotation</translation>
     </message>
 </context>
 <context>
@@ -506,6 +589,10 @@
     <message>
         <source>&amp;Eye-dome lighting</source>
         <translation>&amp;Éclairage eye-dome (EDL)</translation>
+    </message>
+    <message>
+        <source>&amp;Annotation</source>
+        <translation>&amp;Annotation</translation>
     </message>
 </context>
 <context>
@@ -1444,6 +1531,18 @@
     <message>
         <source>Hide %1</source>
         <translation>Masquer %1</translation>
+    </message>
+    <message>
+        <source>Change the legend</source>
+        <translation>Modifier la légende</translation>
+    </message>
+    <message>
+        <source>Remove the class %1</source>
+        <translation>Supprimer la classe %1</translation>
+    </message>
+    <message>
+        <source>Could not save the annotations of %1 into %2: %3.</source>
+        <translation>Impossible d’enregistrer les annotations de %1 dans %2 : %3.</translation>
     </message>
 </context>
 <context>

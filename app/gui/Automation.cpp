@@ -2,7 +2,10 @@
 
 #include "stylos/core/scene/SceneEigen.h"
 
+#include "AnnotationActions.h"
+#include "DisplaySettingsWidget.h"
 #include "DockingActions.h"
+#include "MainActions.h"
 #include "LogDock.h"
 #include "PropertiesDock.h"
 #include "SceneDock.h"
@@ -18,6 +21,7 @@
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QApplication>
+#include <QComboBox>
 #include <QDockWidget>
 #include <QElapsedTimer>
 #include <QJsonDocument>
@@ -168,6 +172,53 @@ void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs)
                                        });
         else
             dock();
+        grabWhenReady(window, path, timeoutMs);
+    });
+}
+
+void grabAnnotationWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    whenReady(window, timeoutMs, [&window, path, timeoutMs] {
+        widgets::ViewportWidget* view = window.viewport();
+        const auto& fragments = window.document().scene().fragments();
+        if (fragments.empty() || !view) {
+            std::fprintf(stderr, "stylos: --annotation needs a fragment and the 3D view\n");
+            QApplication::exit(1);
+            return;
+        }
+        const auto id = fragments.front().id;
+        window.sceneDock().selectFragment(id);
+        window.viewportSync()->pushNow(); // the selection reaches the view: fit it, seen from the front, a little above
+        view->setStandardView(core::view::StandardView::Front);
+        core::view::Camera camera = view->camera();
+        camera.orbit(0.0, 0.35);
+        view->setCamera(camera, false);
+        view->fitToSelection();
+        // The fragment's bounds on screen; the regions are drawn over them as fractions.
+        Eigen::AlignedBox2d screen;
+        const Eigen::AlignedBox3d box = core::view::sceneBounds(
+            [&] {
+                auto f = view->fragments();
+                std::erase_if(f, [id](const core::view::ViewFragment& v) { return v.id != id; });
+                return f;
+            }());
+        for (int corner = 0; corner < 8; ++corner)
+            if (const auto p = view->camera().project(box.corner(Eigen::AlignedBox3d::CornerType(corner))))
+                screen.extend(p->head<2>());
+        auto at = [&](double u, double v) { return Eigen::Vector2d(screen.min() + Eigen::Vector2d(u, v).cwiseProduct(screen.sizes())); };
+        const std::vector<std::pair<int, std::vector<Eigen::Vector2d>>> regions{
+            {1, {at(0.15, 0.2), at(0.5, 0.15), at(0.55, 0.45), at(0.2, 0.5)}},
+            {2, {at(0.55, 0.3), at(0.85, 0.35), at(0.8, 0.6), at(0.6, 0.55)}},
+            {3, {at(0.25, 0.6), at(0.7, 0.62), at(0.65, 0.85), at(0.3, 0.8)}}};
+        AnnotationActions& annotation = window.annotation();
+        for (const auto& [classId, polygon] : regions) {
+            annotation.classBox()->setCurrentIndex(annotation.classBox()->findData(classId));
+            annotation.applyLasso(core::view::lassoVisibleLeaves(view->fragments(), view->camera(), {id}, polygon), false);
+        }
+        view->setShading(widgets::PointRenderer::Shading::Annotation);
+        window.actions().syncShading();
+        if (auto* display = window.propertiesDock().displaySettings()) display->syncFromViewport();
         grabWhenReady(window, path, timeoutMs);
     });
 }

@@ -29,6 +29,14 @@ void grabWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 *
 void grabGizmoWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
 
 /**
+ * @brief As grabWhenReady(), with the annotation in 3D in the picture: once ready, selects the first fragment,
+ *        labels three regions of it with the 3D lasso (polygons over its projected bounds: preserved marble,
+ *        fractured marble, plaster — the visible cells only), switches to the Annotation shading; once ready
+ *        again, grabs. Status 1 as above, or without a fragment or the 3D view.
+ */
+void grabAnnotationWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+
+/**
  * @brief As grabWhenReady(), with a dock in the picture: once ready, fits the first fragment's drum guides (unless it
  *        has flute guides), makes it the docking drum, selects the second fragment and docks it to the flutes from
  *        where it stands (Dock to flutes); once its contact readout is in, grabs. Status 1 as above, or when the

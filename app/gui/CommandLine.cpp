@@ -46,8 +46,13 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     const QCommandLineOption dock(QStringLiteral("dock"),
                                   tr("With --grab: first fit the first fragment's drum guides, dock the second fragment "
                                      "to its flutes from where it stands and show its contact readout."));
+    const QCommandLineOption annotation(QStringLiteral("annotation"),
+                                        tr("With --grab: first label three regions of the first fragment with the 3D "
+                                           "lasso (preserved marble, fractured marble, plaster) and show the "
+                                           "Annotation shading."));
     parser.addOption(grab);
     parser.addOption(gizmo);
+    parser.addOption(annotation);
     parser.addOption(dock);
     parser.addOption(orbit);
     parser.addOption(pose);
@@ -67,6 +72,9 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     result.grabDock = parser.isSet(dock);
     if (result.grabDock && result.grabPath.isEmpty()) usageError(tr("--dock goes with --grab"));
     if (result.grabDock && result.grabGizmo) usageError(tr("--dock and --gizmo do not go together"));
+    result.grabAnnotation = parser.isSet(annotation);
+    if (result.grabAnnotation && (result.grabPath.isEmpty() || result.grabDock || result.grabGizmo))
+        usageError(tr("--annotation goes with --grab alone"));
     if (parser.isSet(orbit)) {
         bool ok = false;
         result.orbitFrames = parser.value(orbit).toInt(&ok);

@@ -16,6 +16,7 @@ struct CommandLine {
     QString grabPath;        ///< non-empty: render the window to this PNG once everything is ready, then exit
     bool grabDock = false;   ///< with grabPath: dock the second fragment to the first's flutes, contact shown
     bool grabGizmo = false;  ///< with grabPath: dock the second fragment against the first's guides, gizmo shown
+    bool grabAnnotation = false; ///< with grabPath: three regions of the first fragment lassoed, Annotation shading
     int orbitFrames = 0;     ///< > 0: orbit the camera for this many frames, print JSON, exit
     int poseFrames = 0;      ///< > 0: turn the first fragment (a pose change) for this many frames, print JSON, exit
 

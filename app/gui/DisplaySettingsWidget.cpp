@@ -29,11 +29,14 @@ constexpr int MaxLevel = 21;                                 ///< the octree's d
 
 DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, QWidget* parent)
     : QWidget(parent), m_viewport(viewport), m_form(new QFormLayout(this)), m_shading(new QComboBox(this)),
+      m_layer(new QComboBox(this)),
       m_splat(new QDoubleSpinBox(this)), m_budget(new QDoubleSpinBox(this)), m_detail(new QComboBox(this)),
       m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this))
 {
     setObjectName(QStringLiteral("displaySettings"));
-    m_shading->addItems({QString(), QString(), QString(), QString()});
+    m_shading->addItems({QString(), QString(), QString(), QString(), QString()});
+    m_layer->setObjectName(QStringLiteral("annotationLayerBox"));
+    m_layer->addItems({QString(), QString()});
     m_splat->setRange(0.25, 4.0);
     m_splat->setSingleStep(0.25);
     m_splat->setDecimals(2);
@@ -52,7 +55,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     // and Greek labels): the fields keep their full width either way.
     m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    const std::array<QWidget*, 5> fields = {m_shading, m_splat, m_budget, m_detail, m_level};
+    const std::array<QWidget*, 6> fields = {m_shading, m_layer, m_splat, m_budget, m_detail, m_level};
     for (std::size_t row = 0; row < fields.size(); ++row) {
         auto* label = new QLabel(this);
         label->setBuddy(fields[row]);
@@ -70,7 +73,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
 
     const QSettings settings;
     m_updating = true;
-    m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 3));
+    m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 4));
     m_splat->setValue(settings.value(SplatKey, 1.0).toDouble());
     m_budget->setValue(settings.value(BudgetKey, 1.0).toDouble());
     const int level = settings.value(DetailKey, -1).toInt();
@@ -83,6 +86,9 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     for (QDoubleSpinBox* spin : {m_splat, m_budget})
         connect(spin, &QDoubleSpinBox::valueChanged, this, &DisplaySettingsWidget::apply);
     connect(m_level, &QSlider::valueChanged, this, &DisplaySettingsWidget::apply);
+    connect(m_layer, &QComboBox::currentIndexChanged, this, [this](int index) {
+        if (!m_updating) Q_EMIT annotationLayerChanged(index);
+    });
     apply();
     retranslateUi();
 }
@@ -93,6 +99,13 @@ void DisplaySettingsWidget::syncFromViewport()
     m_shading->setCurrentIndex(static_cast<int>(m_viewport.shading()));
     m_updating = false;
     save();
+}
+
+void DisplaySettingsWidget::setAnnotationLayer(int layer)
+{
+    m_updating = true;
+    m_layer->setCurrentIndex(layer);
+    m_updating = false;
 }
 
 void DisplaySettingsWidget::apply()
@@ -133,9 +146,14 @@ void DisplaySettingsWidget::retranslateUi()
     m_shading->setItemText(1, tr("Skydome"));
     m_shading->setItemText(2, tr("Scan colour"));
     m_shading->setItemText(3, tr("Eye-dome lighting"));
+    m_shading->setItemText(4, tr("Annotation"));
     m_shading->setToolTip(tr("How the points are lit: by a light at the eye (headlight), by the sky each cell sees "
                              "(skydome; needs Tools › Compute skydome, else the headlight), in the scan's "
-                             "colours, or by eye-dome lighting (the relief from the depth alone)"));
+                             "colours, by eye-dome lighting (the relief from the depth alone), or tinted by each "
+                             "cell's class in the annotation layer below"));
+    m_layer->setItemText(0, tr("Material / condition"));
+    m_layer->setItemText(1, tr("Tool marks"));
+    m_layer->setToolTip(tr("The layer the Annotation shading shows and the 3D lasso labels"));
     m_splat->setSuffix(tr(" ×"));
     m_splat->setToolTip(tr("Size of the drawn points, as a multiple of the size of their octree cell"));
     m_budget->setSuffix(tr(" M points"));
@@ -145,8 +163,8 @@ void DisplaySettingsWidget::retranslateUi()
     m_detail->setToolTip(tr("View-dependent: finer cells near the camera, within the point budget; global level: "
                             "every fragment drawn at the one octree level below"));
     m_level->setToolTip(tr("The octree level drawn when the level of detail is global (0: the root cell)"));
-    const QStringList labels = {tr("Shading"), tr("Splat size"), tr("Point budget"), tr("Level of detail"),
-                                tr("Octree level")};
+    const QStringList labels = {tr("Shading"), tr("Annotation layer"), tr("Splat size"), tr("Point budget"),
+                                tr("Level of detail"), tr("Octree level")};
     for (std::size_t row = 0; row < m_labels.size(); ++row) {
         m_labels[row]->setText(labels.value(static_cast<int>(row)));
         m_labels[row]->setToolTip(m_form->itemAt(static_cast<int>(row), QFormLayout::FieldRole)->widget()

@@ -53,6 +53,8 @@ public:
     QAction* orthographicAction() const { return m_orthographic; }
     /** @brief The Tools menu (after populate()), for the other handlers' actions. */
     QMenu* toolsMenu() const { return m_tools; }
+    /** @brief View › Shading (after populate()), for the annotation layer choice. */
+    QMenu* shadingMenu() const { return m_shadingMenu; }
 
 Q_SIGNALS:
     void removeRequested();

@@ -1,5 +1,7 @@
 #include "MainWindow.h"
 
+#include "AnnotationActions.h"
+#include "AnnotationSync.h"
 #include "DeveloppeeLink.h"
 #include "DeveloppeeDock.h"
 #include "AssemblyActions.h"
@@ -62,6 +64,7 @@ MainWindow::MainWindow(Translations& translations, const QString& demoDirectory,
         m_viewport->setFocusPolicy(Qt::StrongFocus);
         setCentralWidget(m_viewport);
         m_sync = new ViewportSync(*m_document, *m_viewport, this);
+        m_annotationSync = new AnnotationSync(*m_document, *m_viewport, this);
     } else {
         auto* message = new QLabel(this);
         message->setObjectName(QStringLiteral("noViewport"));
@@ -164,6 +167,16 @@ void MainWindow::createMenus()
     m_toolBar->addAction(m_projectActions->importAction());
     m_toolBar->addSeparator();
     m_actions->populateToolBar(*m_toolBar);
+
+    m_annotation = new AnnotationActions(*m_document, m_viewport, m_annotationSync, *this);
+    m_annotation->populate(*m_actions->toolsMenu(), m_actions->shadingMenu(), *m_toolBar);
+    m_annotation->setExclusiveWith(m_docking->moveToolAction());
+    connect(m_annotation, &AnnotationActions::reported, this, &MainWindow::report);
+    if (auto* display = m_propertiesDock->displaySettings(); display && m_annotationSync) {
+        connect(display, &DisplaySettingsWidget::annotationLayerChanged, m_annotationSync,
+                [this](int layer) { m_annotationSync->setLayer(core::annotation::AnnotationLayer(layer)); });
+        connect(m_annotationSync, &AnnotationSync::layerChanged, display, &DisplaySettingsWidget::setAnnotationLayer);
+    }
 
     connect(m_actions, &MainActions::removeRequested, this, [this] {
         const auto ids = m_sceneDock->selectedFragments();
@@ -338,6 +351,7 @@ void MainWindow::changeEvent(QEvent* event)
         retranslateUi();
         m_actions->retranslateUi();
         m_docking->retranslateUi();
+        m_annotation->retranslateUi();
         m_assemblies->retranslateUi();
         m_projectActions->retranslateUi();
         updateTitle();

@@ -23,6 +23,8 @@ class ViewportWidget;
 
 namespace stylos::app {
 
+class AnnotationActions;
+class AnnotationSync;
 class DeveloppeeDock;
 class AssemblyActions;
 class DockingActions;
@@ -64,6 +66,9 @@ public:
     MainActions& actions() const { return *m_actions; }
     DockingActions& docking() const { return *m_docking; }
     AssemblyActions& assemblies() const { return *m_assemblies; }
+    AnnotationActions& annotation() const { return *m_annotation; }
+    /** @brief What feeds the 3D view's annotation tint; null without a view. */
+    AnnotationSync* annotationSync() const { return m_annotationSync; }
     StatusReadout& readout() const { return *m_readout; }
 
     /** @brief Opens the demo project (generated first when the cache lacks it). */
@@ -101,6 +106,8 @@ private:
     widgets::SkydomeRunner* m_skydome;
     widgets::ViewportWidget* m_viewport = nullptr;
     ViewportSync* m_sync = nullptr;
+    AnnotationSync* m_annotationSync = nullptr;
+    AnnotationActions* m_annotation = nullptr;
     SceneDock* m_sceneDock = nullptr;
     PropertiesDock* m_propertiesDock = nullptr;
     TasksDock* m_tasksDock = nullptr;

@@ -29,7 +29,7 @@ octree::CutResult cutAtLevel(const octree::PackedOctree& tree, int level)
 
 bool sameVertex(const SplatVertex& a, const SplatVertex& b)
 {
-    return a.position == b.position && a.size == b.size && a.normal == b.normal && a.colour == b.colour;
+    return a.position == b.position && a.size == b.size && a.normal == b.normal && a.colour == b.colour && a.leaf == b.leaf;
 }
 
 } // namespace
@@ -66,6 +66,7 @@ TEST(SplatBufferTest, LeavesOfTheFourLeafTreeExactly)
         EXPECT_EQ(v.size, std::max(1.0f, 2.0f * tree->leafSpacing(leaf))) << "leaf " << leaf; // the larger of edge and spacing
         EXPECT_EQ(v.normal, normals[leaf]) << "leaf " << leaf;
         EXPECT_EQ(v.colour, colours[leaf]) << "leaf " << leaf;
+        EXPECT_EQ(v.leaf, leaf);
     }
 }
 
@@ -89,6 +90,7 @@ TEST(SplatBufferTest, InnerCellsTakeTheirFirstLeafAndTheShuffleIsAPermutation)
         const auto expected = level1.cells[i].index == 0 ? std::array<std::uint8_t, 4>{10, 20, 30, 255}
                                                          : std::array<std::uint8_t, 4>{70, 80, 90, 255};
         EXPECT_EQ(v.colour, expected);
+        EXPECT_EQ(v.leaf, level1.cells[i].index == 0 ? 0u : 2u); // the first leaf's index, for the labels
     }
 
     const octree::CutResult leaves = cutAtLevel(*tree, -1);

@@ -122,9 +122,9 @@ void WindowUsabilityTest::displayControlsAreLabelledAndTranslated()
     auto window = makeWindow();
     app::DisplaySettingsWidget* display = window->propertiesDock().displaySettings();
     if (!display) QSKIP("no OpenGL 3.3: no 3D view, no display settings");
-    const QList<QWidget*> fields = {display->shadingBox(), display->splatSpin(), display->budgetSpin(),
-                                    display->detailBox(), display->levelSlider()};
-    const QStringList english = {QStringLiteral("Shading"), QStringLiteral("Splat size"),
+    const QList<QWidget*> fields = {display->shadingBox(), display->annotationLayerBox(), display->splatSpin(),
+                                    display->budgetSpin(), display->detailBox(), display->levelSlider()};
+    const QStringList english = {QStringLiteral("Shading"), QStringLiteral("Annotation layer"), QStringLiteral("Splat size"),
                                  QStringLiteral("Point budget"), QStringLiteral("Level of detail"),
                                  QStringLiteral("Octree level")};
     for (int row = 0; row < fields.size(); ++row) {

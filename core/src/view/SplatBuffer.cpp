@@ -54,6 +54,7 @@ SplatBuffer makeSplatBuffer(const oct::PackedOctree& octree, const oct::CutResul
         SplatVertex& v = out.vertices[i];
         v.position = c.centre;
         const std::uint64_t leaf = firstLeafOf(octree, c.level, c.index);
+        v.leaf = static_cast<std::uint32_t>(leaf);
         v.size = std::max(c.size, 2.0f * octree.leafSpacing(leaf)); // a disc of radius h reaches its neighbours
         v.normal = {toSnorm8(c.normal[0]), toSnorm8(c.normal[1]), toSnorm8(c.normal[2]), 0};
         v.colour = {255, 255, 255, 255};

@@ -20,6 +20,7 @@ layout(location = 0) in vec3 aPosition;
 layout(location = 1) in float aSize;
 layout(location = 2) in vec4 aNormal;
 layout(location = 3) in vec4 aColour;
+layout(location = 4) in uint aLeaf;
 uniform mat4 uModelView;
 uniform mat4 uProjection;
 uniform mat3 uNormalMatrix;
@@ -27,7 +28,12 @@ uniform float uPixelsPerMetre;  // perspective: at unit depth; orthographic: eve
 uniform bool uOrthographic;
 uniform float uSizeScale;
 uniform float uMaxPointSize;
-uniform int uShading;           // 0 headlight, 1 ambient, 2 colour, 3 eye-dome (flat, the relief from the depth pass)
+uniform int uShading;           // 0 headlight, 1 ambient, 2 colour, 3 eye-dome (flat, the relief from the depth pass),
+                                // 4 annotation (over headlight or ambient: uAnnotationBase 0 or 1)
+uniform int uAnnotationBase;
+uniform bool uHasLabels;
+uniform usamplerBuffer uLabels;        // one class id per leaf (R8UI)
+uniform samplerBuffer uClassColours;   // 256 texels (RGBA8): the class colours, alpha 1 for a class of the legend
 uniform vec3 uBaseColour;
 uniform bool uCullBackFaces;
 out vec3 vColour;
@@ -54,15 +60,23 @@ void main()
     if (facing < 0.0) { n = -n; facing = -facing; } // two-sided: a cell never goes black for facing away
     vNormal = n;
     float lambert = facing;
+    int shading = uShading == 4 ? uAnnotationBase : uShading;
     vec3 colour;
-    if (uShading == 1) // the skydome squared (grooves 0.77 → 0.59, fillets 0.94 → 0.88), a touch of headlight for form
+    if (shading == 1) // the skydome squared (grooves 0.77 → 0.59, fillets 0.94 → 0.88), a touch of headlight for form
         colour = vec3(0.95) * aColour.a * aColour.a * (0.7 + 0.3 * lambert);
-    else if (uShading == 2)
+    else if (shading == 2)
         colour = aColour.rgb * (0.3 + 0.7 * lambert);
-    else if (uShading == 3)
+    else if (shading == 3)
         colour = uBaseColour;
     else
         colour = uBaseColour * (0.12 + 0.88 * lambert);
+    if (uShading == 4 && uHasLabels) { // the class colour over the shading; unlabelled cells keep the shading
+        uint id = texelFetch(uLabels, int(aLeaf)).r;
+        if (id != 0u) {
+            vec4 tint = texelFetch(uClassColours, int(id));
+            if (tint.a > 0.5) colour = 0.35 * colour + 0.65 * tint.rgb;
+        }
+    }
     vColour = colour;
 }
 )";
@@ -122,6 +136,14 @@ bool PointRenderer::initialize()
         return false;
     }
     m_program = std::move(program);
+    m_program->bind();
+    m_program->setUniformValue("uLabels", 0);        // texture units
+    m_program->setUniformValue("uClassColours", 1);
+    m_program->release();
+    GLint maxTexels = 65536;
+    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &maxTexels);
+    m_maxLabels = std::uint64_t(std::max(maxTexels, 0));
+    m_coloursDirty = true;
     GLfloat range[2] = {1, 64};
     glGetFloatv(GL_POINT_SIZE_RANGE, range);
     m_maxPointSize = std::clamp(range[1], 1.0f, 256.0f);
@@ -131,7 +153,77 @@ bool PointRenderer::initialize()
 void PointRenderer::release()
 {
     m_slots.clear(); // QOpenGLBuffer / VAO destructors free their objects in the current context
+    for (auto& [id, labels] : m_labels) freeTextureBuffer(labels);
+    m_labels.clear();
+    if (m_colours) freeTextureBuffer(*m_colours);
+    m_colours.reset();
     m_program.reset();
+}
+
+void PointRenderer::freeTextureBuffer(TextureBuffer& t)
+{
+    if (t.texture) glDeleteTextures(1, &t.texture);
+    if (t.buffer) glDeleteBuffers(1, &t.buffer);
+    t = {};
+}
+
+void PointRenderer::fillTextureBuffer(TextureBuffer& t, GLenum format, const void* data, std::uint64_t texels,
+                                      std::uint64_t bytes)
+{
+    if (!t.buffer) glGenBuffers(1, &t.buffer);
+    if (!t.texture) glGenTextures(1, &t.texture);
+    glBindBuffer(GL_TEXTURE_BUFFER, t.buffer);
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(bytes), data, GL_DYNAMIC_DRAW);
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    glBindTexture(GL_TEXTURE_BUFFER, t.texture);
+    glTexBuffer(GL_TEXTURE_BUFFER, format, t.buffer);
+    glBindTexture(GL_TEXTURE_BUFFER, 0);
+    t.size = texels;
+}
+
+bool PointRenderer::setLabels(std::uint64_t id, std::span<const std::uint8_t> labels)
+{
+    if (!m_program) return false;
+    if (labels.empty() || labels.size() > m_maxLabels) { // more leaves than a buffer texture holds: no tint
+        clearLabels(id);
+        return false;
+    }
+    fillTextureBuffer(m_labels[id], GL_R8UI, labels.data(), labels.size(), labels.size());
+    return true;
+}
+
+bool PointRenderer::updateLabels(std::uint64_t id, std::uint64_t first, std::span<const std::uint8_t> labels)
+{
+    const auto it = m_labels.find(id);
+    if (!m_program || it == m_labels.end() || first > it->second.size || labels.size() > it->second.size - first)
+        return false;
+    if (labels.empty()) return true;
+    glBindBuffer(GL_TEXTURE_BUFFER, it->second.buffer);
+    glBufferSubData(GL_TEXTURE_BUFFER, GLintptr(first), GLsizeiptr(labels.size()), labels.data());
+    glBindBuffer(GL_TEXTURE_BUFFER, 0);
+    return true;
+}
+
+void PointRenderer::clearLabels(std::uint64_t id)
+{
+    const auto it = m_labels.find(id);
+    if (it == m_labels.end()) return;
+    freeTextureBuffer(it->second);
+    m_labels.erase(it);
+}
+
+void PointRenderer::clearAllLabels()
+{
+    for (auto& [id, labels] : m_labels) freeTextureBuffer(labels);
+    m_labels.clear();
+}
+
+bool PointRenderer::hasLabels(std::uint64_t id) const { return m_labels.count(id) != 0; }
+
+void PointRenderer::setClassColours(const ClassColours& colours)
+{
+    m_classColours = colours;
+    m_coloursDirty = true;
 }
 
 void PointRenderer::setSplatFactor(double factor) { m_splatFactor = std::clamp(factor, 0.1, 10.0); }
@@ -192,6 +284,8 @@ void PointRenderer::upload(std::uint64_t id, const SplatBuffer& splats)
         glVertexAttribPointer(2, 4, GL_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(16));
         glEnableVertexAttribArray(3);
         glVertexAttribPointer(3, 4, GL_UNSIGNED_BYTE, GL_TRUE, stride, reinterpret_cast<void*>(20));
+        glEnableVertexAttribArray(4);
+        glVertexAttribIPointer(4, 1, GL_UNSIGNED_INT, stride, reinterpret_cast<void*>(24));
         slot->vbo.release();
     }
     slot->vbo.bind();
@@ -255,6 +349,17 @@ std::uint64_t PointRenderer::draw(const core::view::Camera& camera, const Pass& 
     m_program->setUniformValue("uOrthographic", camera.isOrthographic());
     m_program->setUniformValue("uMaxPointSize", m_maxPointSize);
     m_program->setUniformValue("uRound", m_round);
+    const bool annotation = m_shading == Shading::Annotation;
+    if (annotation) {
+        if (m_coloursDirty || !m_colours) {
+            if (!m_colours) m_colours = std::make_unique<TextureBuffer>();
+            fillTextureBuffer(*m_colours, GL_RGBA8, m_classColours.data(), m_classColours.size(), sizeof(m_classColours));
+            m_coloursDirty = false;
+        }
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_BUFFER, m_colours->texture);
+        glActiveTexture(GL_TEXTURE0);
+    }
 
     std::uint64_t drawn = 0;
     for (const ViewFragment& f : m_fragments) {
@@ -273,6 +378,13 @@ std::uint64_t PointRenderer::draw(const core::view::Camera& camera, const Pass& 
         if (m_shading == Shading::Ambient && slot.hasAmbient) shading = 1;
         if (m_shading == Shading::Colour && slot.hasColour) shading = 2;
         if (m_shading == Shading::EyeDome) shading = 3;
+        const auto labels = annotation ? m_labels.find(f.id) : m_labels.end();
+        if (annotation) {
+            shading = 4;
+            m_program->setUniformValue("uAnnotationBase", slot.hasAmbient ? 1 : 0);
+            m_program->setUniformValue("uHasLabels", labels != m_labels.end());
+            glBindTexture(GL_TEXTURE_BUFFER, labels != m_labels.end() ? labels->second.texture : 0);
+        }
         m_program->setUniformValue("uShading", shading);
         m_program->setUniformValue("uBaseColour", float(f.colour[0]) / 255.0f, float(f.colour[1]) / 255.0f,
                                    float(f.colour[2]) / 255.0f);
@@ -280,6 +392,12 @@ std::uint64_t PointRenderer::draw(const core::view::Camera& camera, const Pass& 
         QOpenGLVertexArrayObject::Binder bind(&slot.vao);
         glDrawArrays(GL_POINTS, GLint(first), GLsizei(last - first));
         drawn += last - first;
+    }
+    if (annotation) { // leave no buffer texture bound
+        glBindTexture(GL_TEXTURE_BUFFER, 0);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_BUFFER, 0);
+        glActiveTexture(GL_TEXTURE0);
     }
     m_program->release();
     return drawn;

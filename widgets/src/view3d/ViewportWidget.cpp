@@ -118,6 +118,8 @@ void ViewportWidget::uploadPending()
         m_renderer.points().setFragments(m_scheduler.fragments());
         m_fragmentsChanged = false;
     }
+    for (const LabelOp& op : m_pendingLabels) applyLabelOp(op, op.bytes);
+    m_pendingLabels.clear();
     if (!m_pending) return;
     for (const core::view::FragmentCut& cut : m_pending->fragments) m_renderer.points().upload(cut.id, cut.splats);
     m_pending.reset();
@@ -232,6 +234,53 @@ void ViewportWidget::setShading(PointRenderer::Shading shading)
 {
     m_renderer.points().setShading(shading);
     invalidateImage(true);
+}
+
+void ViewportWidget::applyLabelOp(const LabelOp& op, std::span<const std::uint8_t> labels)
+{
+    PointRenderer& points = m_renderer.points();
+    switch (op.kind) {
+    case LabelOp::Set: points.setLabels(op.id, labels); break;
+    case LabelOp::Update: points.updateLabels(op.id, op.first, labels); break;
+    case LabelOp::Clear: points.clearLabels(op.id); break;
+    case LabelOp::ClearAll: points.clearAllLabels(); break;
+    }
+}
+
+void ViewportWidget::labelOp(LabelOp op, std::span<const std::uint8_t> labels)
+{
+    if (m_renderer.isInitialized() && m_window->isValid()) {
+        m_window->makeCurrent();
+        applyLabelOp(op, labels);
+        m_window->doneCurrent();
+    } else {
+        if (op.kind != LabelOp::Update) // a whole set or a clear makes what came before for the fragment moot
+            std::erase_if(m_pendingLabels, [&](const LabelOp& o) { return op.kind == LabelOp::ClearAll || o.id == op.id; });
+        op.bytes.assign(labels.begin(), labels.end());
+        m_pendingLabels.push_back(std::move(op));
+    }
+    // Only the tint changed: the full-detail image is redrawn from the same buffers, with no new cut.
+    if (m_renderer.points().shading() == PointRenderer::Shading::Annotation) invalidateImage(true);
+}
+
+void ViewportWidget::setLabels(std::uint64_t id, std::span<const std::uint8_t> labels)
+{
+    labelOp({LabelOp::Set, id, 0, {}}, labels);
+}
+
+void ViewportWidget::updateLabels(std::uint64_t id, std::uint64_t first, std::span<const std::uint8_t> labels)
+{
+    labelOp({LabelOp::Update, id, first, {}}, labels);
+}
+
+void ViewportWidget::clearLabels(std::uint64_t id) { labelOp({LabelOp::Clear, id, 0, {}}, {}); }
+
+void ViewportWidget::clearAllLabels() { labelOp({LabelOp::ClearAll, 0, 0, {}}, {}); }
+
+void ViewportWidget::setClassColours(const PointRenderer::ClassColours& colours)
+{
+    m_renderer.points().setClassColours(colours);
+    if (m_renderer.points().shading() == PointRenderer::Shading::Annotation) invalidateImage(true);
 }
 
 void ViewportWidget::setSplatFactor(double factor)

@@ -14,7 +14,12 @@
  * Ambient (the "ambient" layer, the 3D skydome, as grey: its square, to read the relief like the paper's
  * figures, times 0.7 + 0.3 of the headlight for the form; falls back to Headlight without the layer),
  * Colour (the scan's colour lit by the headlight; falls back to Headlight without colour), EyeDome (flat
- * colour; ViewComposite adds the eye-dome lighting from the depth). The selection is not tinted: with
+ * colour; ViewComposite adds the eye-dome lighting from the depth), Annotation (the skydome's shading where the
+ * fragment has the "ambient" layer, else the headlight's, mixed 0.35 : 0.65 with the colour of the class of
+ * the cell's leaf — SplatVertex::leaf — in the labels given with setLabels(); cells of class 0, of an id
+ * that is no class (setClassColours) or of a fragment without labels keep the plain shading). The labels are
+ * one buffer texture (R8UI, one byte a leaf) per fragment, apart from the splats: an edit re-sends the
+ * touched range (updateLabels: glBufferSubData), never the splats. The selection is not tinted: with
  * Pass::selectionInAlpha it goes to alpha and ViewComposite outlines it.
  *
  * Parts of the buffers: draw() draws the same slice [from, to) of every buffer (fractions of its
@@ -36,9 +41,11 @@
 #include <Eigen/Core>
 
 #include <cstdint>
+#include <array>
 #include <map>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 class QOpenGLBuffer;
@@ -54,7 +61,9 @@ public:
      *        per-leaf value adds it beside the "ambient" byte of SplatVertex (or a second vertex stream) and a
      *        branch there. EyeDome draws flat colour and leaves the relief to the composite pass.
      */
-    enum class Shading { Headlight, Ambient, Colour, EyeDome };
+    enum class Shading { Headlight, Ambient, Colour, EyeDome, Annotation };
+    /** @brief Per class id 0..255, its colour (sRGB, 8 bits) and alpha 255 when it is a class of the legend (else 0). */
+    using ClassColours = std::array<std::array<std::uint8_t, 4>, 256>;
 
     /** @brief Which splats one draw() call draws, and how. */
     struct Pass {
@@ -100,6 +109,24 @@ public:
     /** @brief Whether some visible fragment is selected. */
     bool hasSelection() const;
 
+    /**
+     * @brief The annotation labels of fragment @p id (one class id per leaf, leaf order), replacing any (context
+     *        current). Kept until clearLabels(), whatever setFragments() does. False (and none kept) when
+     *        empty or longer than a buffer texture holds (GL_MAX_TEXTURE_BUFFER_SIZE; the fragment is drawn
+     *        untinted).
+     */
+    bool setLabels(std::uint64_t id, std::span<const std::uint8_t> labels);
+    /** @brief Replaces the labels of @p id from leaf @p first on (context current); false without labels of
+     *         @p id or when the range does not fit them (nothing changes). */
+    bool updateLabels(std::uint64_t id, std::uint64_t first, std::span<const std::uint8_t> labels);
+    /** @brief Frees the labels of @p id / of every fragment (context current). */
+    void clearLabels(std::uint64_t id);
+    void clearAllLabels();
+    bool hasLabels(std::uint64_t id) const;
+    /** @brief The legend's colours (uploaded by the next draw in Annotation shading; no context needed). */
+    void setClassColours(const ClassColours& colours);
+    const ClassColours& classColours() const { return m_classColours; }
+
     void setShading(Shading shading) { m_shading = shading; }
     Shading shading() const { return m_shading; }
     /** @brief Splat diameter / footprint (default 1.5; clamped to [0.1, 10]). */
@@ -117,12 +144,26 @@ public:
 
 private:
     struct Slot;
+    /** A buffer texture: the buffer and the texture that reads it (R8UI labels or RGBA8 colours). */
+    struct TextureBuffer {
+        GLuint buffer = 0;
+        GLuint texture = 0;
+        std::uint64_t size = 0; ///< texels
+    };
+
+    void freeTextureBuffer(TextureBuffer& t);
+    void fillTextureBuffer(TextureBuffer& t, GLenum format, const void* data, std::uint64_t texels, std::uint64_t bytes);
 
     core::view::ViewFragment* find(std::uint64_t id);
     const core::view::ViewFragment* find(std::uint64_t id) const;
 
     std::vector<core::view::ViewFragment> m_fragments;
     std::map<std::uint64_t, std::unique_ptr<Slot>> m_slots;
+    std::map<std::uint64_t, TextureBuffer> m_labels;
+    std::unique_ptr<TextureBuffer> m_colours;
+    ClassColours m_classColours{};
+    bool m_coloursDirty = true;
+    std::uint64_t m_maxLabels = 65536;
     std::unique_ptr<QOpenGLShaderProgram> m_program;
     QString m_log;
     Shading m_shading = Shading::Headlight;

@@ -50,6 +50,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace stylos::widgets {
@@ -104,6 +105,18 @@ public:
     const ViewRenderer& renderer() const { return m_renderer; }
     void setShading(PointRenderer::Shading shading);
     PointRenderer::Shading shading() const { return m_renderer.points().shading(); }
+    /**
+     * @brief Annotation labels of fragment @p id for the Annotation shading (one class id per leaf, leaf order;
+     *        see PointRenderer::setLabels): copied to the GL at once (or when the GL starts), then redrawn
+     *        without a new cut. The view keeps no reference to @p labels.
+     */
+    void setLabels(std::uint64_t id, std::span<const std::uint8_t> labels);
+    /** @brief Replaces @p id's labels from leaf @p first on with @p labels (PointRenderer::updateLabels). */
+    void updateLabels(std::uint64_t id, std::uint64_t first, std::span<const std::uint8_t> labels);
+    void clearLabels(std::uint64_t id);
+    void clearAllLabels();
+    /** @brief The legend's colours per class id (PointRenderer::ClassColours). */
+    void setClassColours(const PointRenderer::ClassColours& colours);
     void setSplatFactor(double factor);
     double splatFactor() const { return m_renderer.points().splatFactor(); }
     void setRoundSplats(bool round);
@@ -184,6 +197,15 @@ private:
     void cameraEdited(bool moving);
     void releaseGl();
     void uploadPending();
+    /** Applies @p op at once when the GL is running, else when it starts (uploadPending). */
+    struct LabelOp {
+        enum Kind { Set, Update, Clear, ClearAll } kind = Set;
+        std::uint64_t id = 0;
+        std::uint64_t first = 0;
+        std::vector<std::uint8_t> bytes;
+    };
+    void labelOp(LabelOp op, std::span<const std::uint8_t> labels);
+    void applyLabelOp(const LabelOp& op, std::span<const std::uint8_t> labels);
     /** The frame painted last is on screen (@p swapped: its time includes the composition), or another
      *  paint came first (its time is the painting's): report it. */
     void closeFrame(bool swapped);
@@ -204,6 +226,7 @@ private:
     QTimer m_stepTimer;          ///< drives the slices of the full-detail image
     std::uint64_t m_stepPoints = 100'000; ///< points per slice, adapted to about one target frame time
     std::shared_ptr<const core::view::SceneCut> m_pending;
+    std::vector<LabelOp> m_pendingLabels; ///< label changes waiting for the GL to start
     bool m_fragmentsChanged = false;
     QString m_glError;
     double m_lastFrameMs = 0;
