@@ -2,6 +2,7 @@
 
 #include "DeveloppeeLink.h"
 #include "DeveloppeeDock.h"
+#include "LegendDock.h"
 #include "AssemblyActions.h"
 #include "DockingActions.h"
 #include "LogDock.h"
@@ -14,6 +15,11 @@
 #include "Translations.h"
 #include "ViewportSync.h"
 #include "DisplaySettingsWidget.h"
+#include "stylos/widgets/annotation/ClassMeasures.h"
+#include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
+#include "stylos/widgets/annotation/LegendWidget.h"
+#include "stylos/widgets/annotation/PaintToolBar.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeSettings.h"
@@ -111,6 +117,19 @@ void MainWindow::createDocks()
     m_developpeeLink = new DeveloppeeLink(*m_document, m_developpeeDock->panel(), m_viewport, this);
     connect(m_developpeeLink, &DeveloppeeLink::finished, this, &MainWindow::report);
 
+    // Annotation: the développée paints the document's labels; the Legend dock chooses the class and edits it.
+    widgets::DeveloppeeView& developpeeView = *m_developpeeDock->panel().view();
+    m_annotator = new widgets::DeveloppeeAnnotator(*m_document, developpeeView, this);
+    m_developpeeDock->panel().setPaintBar(new widgets::PaintToolBar(*m_document, *m_annotator, developpeeView));
+    m_measures = new widgets::ClassMeasures(*m_document, this);
+    m_legendDock = new LegendDock(*m_document, m_measures, this);
+    splitDockWidget(m_propertiesDock, m_legendDock, Qt::Vertical);
+    connect(&m_legendDock->legend(), &widgets::LegendWidget::classChosen, m_annotator,
+            &widgets::DeveloppeeAnnotator::setActive);
+    connect(m_annotator, &widgets::DeveloppeeAnnotator::activeChanged, &m_legendDock->legend(),
+            &widgets::LegendWidget::showActive);
+    m_legendDock->legend().showActive(m_annotator->layer(), m_annotator->activeClass());
+
     m_tasksDock = new TasksDock(*m_tasks, this);
     splitDockWidget(m_developpeeDock, m_tasksDock, Qt::Horizontal);
     m_logDock = new LogDock(this);
@@ -134,7 +153,8 @@ void MainWindow::createMenus()
     m_actions = new MainActions(*m_document, m_viewport, m_translations, *this);
     QMenu* viewMenu = m_actions->populate(*menuBar());
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_propertiesDock),
-                              static_cast<QDockWidget*>(m_developpeeDock), static_cast<QDockWidget*>(m_tasksDock),
+                              static_cast<QDockWidget*>(m_legendDock), static_cast<QDockWidget*>(m_developpeeDock),
+                              static_cast<QDockWidget*>(m_tasksDock),
                               static_cast<QDockWidget*>(m_logDock)})
         viewMenu->addAction(dock->toggleViewAction());
     m_docking = new DockingActions(*m_document, m_viewport, *this);

@@ -18,6 +18,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
 
@@ -88,7 +89,9 @@ LegendWidget::LegendWidget(SceneDocument& document, ClassMeasures* measures, QWi
         if (m_updating || column != NameColumn || !item->parent()) return;
         const auto layer = AnnotationLayer(item->data(NameColumn, LayerRole).toInt());
         const auto id = std::uint8_t(item->data(NameColumn, IdRole).toInt());
+        ++m_editing;
         if (!renameClass(layer, id, item->text(NameColumn))) rebuild(); // refused (empty, taken): shown as it is
+        --m_editing;
     });
     connect(m_add, &QPushButton::clicked, this, [this] {
         const auto current = currentClass();
@@ -252,6 +255,10 @@ void LegendWidget::showActive(AnnotationLayer layer, std::uint8_t classId)
 
 void LegendWidget::rebuild()
 {
+    if (m_editing > 0) { // the edited row or list must outlive its own signal: rebuild once it returned
+        QTimer::singleShot(0, this, &LegendWidget::rebuild);
+        return;
+    }
     m_updating = true;
     m_tree->clear();
     const Legend& legend = m_document.legend();
@@ -281,7 +288,10 @@ void LegendWidget::rebuild()
             m_tree->setItemWidget(item, HatchColumn, hatch);
             const std::uint8_t id = c.id;
             connect(hatch, &QComboBox::currentIndexChanged, this, [this, layer, id, hatch] {
-                if (!m_updating) setClassHatch(layer, id, Hatch(hatch->currentData().toInt()));
+                if (m_updating) return;
+                ++m_editing;
+                setClassHatch(layer, id, Hatch(hatch->currentData().toInt()));
+                --m_editing;
             });
         }
     }

@@ -78,6 +78,7 @@ private:
     QPushButton* m_remove;
     RemovalChooser m_chooser;
     bool m_updating = false;
+    int m_editing = 0; ///< inside a row's or a hatch list's own signal
     std::optional<std::pair<AnnotationLayer, std::uint8_t>> m_active;
 };
 
