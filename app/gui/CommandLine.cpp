@@ -49,6 +49,11 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     parser.addOption(grab);
     parser.addOption(gizmo);
     parser.addOption(dock);
+    const QCommandLineOption paint(QStringLiteral("paint"),
+                                   tr("With --grab: first compute the first fragment's développée and paint a few "
+                                      "annotation regions on it (marble, fractured marble, plaster; a claw-chisel "
+                                      "area in the tool-mark layer)."));
+    parser.addOption(paint);
     parser.addOption(orbit);
     parser.addOption(pose);
     QStringList formats;
@@ -67,6 +72,10 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     result.grabDock = parser.isSet(dock);
     if (result.grabDock && result.grabPath.isEmpty()) usageError(tr("--dock goes with --grab"));
     if (result.grabDock && result.grabGizmo) usageError(tr("--dock and --gizmo do not go together"));
+    result.grabPaint = parser.isSet(paint);
+    if (result.grabPaint && result.grabPath.isEmpty()) usageError(tr("--paint goes with --grab"));
+    if (result.grabPaint && (result.grabDock || result.grabGizmo))
+        usageError(tr("--paint does not go with --dock or --gizmo"));
     if (parser.isSet(orbit)) {
         bool ok = false;
         result.orbitFrames = parser.value(orbit).toInt(&ok);
