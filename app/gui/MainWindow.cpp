@@ -123,7 +123,7 @@ void MainWindow::createDocks()
     m_developpeeDock->panel().setPaintBar(new widgets::PaintToolBar(*m_document, *m_annotator, developpeeView));
     m_measures = new widgets::ClassMeasures(*m_document, this);
     m_legendDock = new LegendDock(*m_document, m_measures, this);
-    splitDockWidget(m_propertiesDock, m_legendDock, Qt::Vertical);
+    addDockWidget(Qt::RightDockWidgetArea, m_legendDock); // beside the 3D view: the classes with their figures
     connect(&m_legendDock->legend(), &widgets::LegendWidget::classChosen, m_annotator,
             &widgets::DeveloppeeAnnotator::setActive);
     connect(m_annotator, &widgets::DeveloppeeAnnotator::activeChanged, &m_legendDock->legend(),
@@ -135,7 +135,7 @@ void MainWindow::createDocks()
     m_logDock = new LogDock(this);
     tabifyDockWidget(m_tasksDock, m_logDock);
     m_tasksDock->raise();
-    resizeDocks({m_sceneDock}, {280}, Qt::Horizontal);
+    resizeDocks({m_sceneDock, m_legendDock}, {280, 440}, Qt::Horizontal);
     resizeDocks({m_developpeeDock, m_tasksDock}, {900, 300}, Qt::Horizontal);
     resizeDocks({m_developpeeDock}, {330}, Qt::Vertical);
 

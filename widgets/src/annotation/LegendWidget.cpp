@@ -15,6 +15,7 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+#include <QPainter>
 #include <QPixmap>
 #include <QPushButton>
 #include <QRadioButton>
@@ -47,6 +48,23 @@ QIcon swatch(const core::scene::Rgb& c)
     return QIcon(pixmap);
 }
 
+/** A small black-on-white sample of @p hatch, as plates draw it. */
+QIcon hatchIcon(Hatch hatch)
+{
+    static const std::pair<Hatch, Qt::BrushStyle> styles[] = {
+        {Hatch::None, Qt::NoBrush},          {Hatch::Diagonal, Qt::BDiagPattern},   {Hatch::BackDiagonal, Qt::FDiagPattern},
+        {Hatch::Cross, Qt::CrossPattern},    {Hatch::DiagonalCross, Qt::DiagCrossPattern}, {Hatch::Dots, Qt::Dense6Pattern},
+        {Hatch::Horizontal, Qt::HorPattern}, {Hatch::Vertical, Qt::VerPattern},     {Hatch::Solid, Qt::SolidPattern}};
+    QPixmap pixmap(14, 14);
+    pixmap.fill(Qt::white);
+    QPainter painter(&pixmap);
+    for (const auto& [h, style] : styles)
+        if (h == hatch) painter.fillRect(pixmap.rect(), QBrush(Qt::black, style));
+    painter.setPen(Qt::gray);
+    painter.drawRect(pixmap.rect().adjusted(0, 0, -1, -1));
+    return QIcon(pixmap);
+}
+
 } // namespace
 
 LegendWidget::LegendWidget(SceneDocument& document, ClassMeasures* measures, QWidget* parent)
@@ -62,8 +80,11 @@ LegendWidget::LegendWidget(SceneDocument& document, ClassMeasures* measures, QWi
     m_tree->setRootIsDecorated(false);
     m_tree->setUniformRowHeights(true);
     m_tree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
-    m_tree->header()->setSectionResizeMode(NameColumn, QHeaderView::Stretch);
+    m_tree->header()->setSectionResizeMode(HatchColumn, QHeaderView::Stretch); // the names keep their width
+    for (int column : {NameColumn, CellsColumn, AreaColumn})
+        m_tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
     m_tree->header()->setStretchLastSection(false);
+    m_tree->setMinimumWidth(340);
 
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_add);
@@ -282,7 +303,7 @@ void LegendWidget::rebuild()
             item->setTextAlignment(AreaColumn, Qt::AlignRight | Qt::AlignVCenter);
             auto* hatch = new QComboBox(m_tree);
             hatch->setObjectName(QStringLiteral("legendHatch_%1_%2").arg(core::annotation::layerName(layer)).arg(c.id));
-            for (Hatch h : Hatches) hatch->addItem(LegendText::hatchTitle(h), int(h));
+            for (Hatch h : Hatches) hatch->addItem(hatchIcon(h), LegendText::hatchTitle(h), int(h));
             hatch->setCurrentIndex(hatch->findData(int(c.hatch)));
             hatch->setToolTip(tr("The black-and-white pattern of this class on plates"));
             m_tree->setItemWidget(item, HatchColumn, hatch);
