@@ -180,7 +180,7 @@ void DeveloppeeJobTest::aPixelMapsOntoTheDrum()
     QVERIFY(checked > 10);
     // The painting's pixel ↔ leaf index: every leaf at the pixel core::annotation::leafPixels gives, both ways.
     QVERIFY(r.leafIndex);
-    const auto pixels = stylos::core::annotation::leafPixels(*m_drum.octree, *r.map);
+    auto pixels = stylos::core::annotation::leafPixels(*m_drum.octree, *r.map);
     QVERIFY(pixels.ok());
     QCOMPARE(r.leafIndex->leafCount(), pixels->size());
     std::size_t mapped = 0;
