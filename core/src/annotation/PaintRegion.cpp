@@ -9,31 +9,61 @@ namespace stylos::core::annotation {
 
 namespace {
 
-/** 4-connected flood from @p seeds over the pixels @p inside accepts; marks them in @p seen; returns them. */
+/** The pixels a flood reached: columns [c0, c1], rows [r0, r1]; empty when c1 < c0. */
+struct Box {
+    int c0, c1, r0, r1;
+};
+
+/** 4-connected flood from the pixels of @p seeds (those @p inside accepts) over the pixels @p inside accepts,
+ *  marking them in @p seen, a span of a row at a time (scanline fill: each pixel is visited a bounded number of
+ *  times, in memory order). No list is built: the caller reads the marks inside the returned box, in row-major
+ *  order, without sorting. */
 template <typename Inside>
-std::vector<std::uint32_t> flood(std::vector<std::uint32_t> stack, int width, int height, std::vector<std::uint8_t>& seen,
-                                 Inside inside)
+Box flood(const std::vector<std::uint32_t>& seeds, int width, int height, std::vector<std::uint8_t>& seen, Inside inside)
+{
+    Box box{width, -1, height, -1};
+    const std::uint32_t w = std::uint32_t(width);
+    const auto open = [&](int c, int r) {
+        const std::uint32_t q = std::uint32_t(r) * w + std::uint32_t(c);
+        return !seen[q] && inside(q);
+    };
+    std::vector<std::pair<int, int>> stack;
+    for (std::uint32_t p : seeds) stack.emplace_back(int(p % w), int(p / w));
+    while (!stack.empty()) {
+        const auto [x, y] = stack.back();
+        stack.pop_back();
+        if (!open(x, y)) continue;
+        int left = x, right = x;
+        while (left > 0 && open(left - 1, y)) --left;
+        while (right + 1 < width && open(right + 1, y)) ++right;
+        std::uint8_t* row = seen.data() + std::size_t(y) * w;
+        std::fill(row + left, row + right + 1, std::uint8_t(1));
+        box.c0 = std::min(box.c0, left);
+        box.c1 = std::max(box.c1, right);
+        box.r0 = std::min(box.r0, y);
+        box.r1 = std::max(box.r1, y);
+        for (int ny : {y - 1, y + 1}) { // one seed per run of open pixels above and below the span
+            if (ny < 0 || ny >= height) continue;
+            bool inRun = false;
+            for (int c = left; c <= right; ++c) {
+                const bool o = open(c, ny);
+                if (o && !inRun) stack.emplace_back(c, ny);
+                inRun = o;
+            }
+        }
+    }
+    return box;
+}
+
+/** The pixels of @p box whose mark in @p seen is @p wanted, ascending. */
+std::vector<std::uint32_t> marked(const std::vector<std::uint8_t>& seen, Box box, int width, std::uint8_t wanted)
 {
     std::vector<std::uint32_t> out;
-    for (std::uint32_t p : stack) seen[p] = 1;
-    while (!stack.empty()) {
-        const std::uint32_t p = stack.back();
-        stack.pop_back();
-        out.push_back(p);
-        const int c = int(p % std::uint32_t(width)), r = int(p / std::uint32_t(width));
-        const auto visit = [&](int cc, int rr) {
-            if (cc < 0 || rr < 0 || cc >= width || rr >= height) return;
-            const std::uint32_t q = std::uint32_t(rr) * std::uint32_t(width) + std::uint32_t(cc);
-            if (seen[q] || !inside(q)) return;
-            seen[q] = 1;
-            stack.push_back(q);
-        };
-        visit(c - 1, r);
-        visit(c + 1, r);
-        visit(c, r - 1);
-        visit(c, r + 1);
+    for (int r = box.r0; r <= box.r1; ++r) {
+        const std::uint32_t row = std::uint32_t(r) * std::uint32_t(width);
+        for (int c = box.c0; c <= box.c1; ++c)
+            if (seen[row + std::uint32_t(c)] == wanted) out.push_back(row + std::uint32_t(c));
     }
-    std::sort(out.begin(), out.end());
     return out;
 }
 
@@ -97,8 +127,9 @@ std::vector<std::uint32_t> floodFill(std::span<const float> values, std::span<co
     if (seed >= n || !valid[seed]) return {};
     const float reference = values[seed];
     std::vector<std::uint8_t> seen(n, 0);
-    return flood({seed}, width, height, seen,
-                 [&](std::uint32_t q) { return valid[q] && std::abs(values[q] - reference) <= tolerance; });
+    const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, seen,
+                          [&](std::uint32_t q) { return valid[q] && std::abs(values[q] - reference) <= tolerance; });
+    return marked(seen, box, width, 1);
 }
 
 std::vector<std::uint32_t> enclosedHoles(std::span<const std::uint8_t> ids, int width, int height, std::uint32_t seed)
@@ -108,16 +139,9 @@ std::vector<std::uint32_t> enclosedHoles(std::span<const std::uint8_t> ids, int 
     if (seed >= n || ids[seed] == 0) return {};
     const std::uint8_t id = ids[seed];
     std::vector<std::uint8_t> region(n, 0);
-    const std::vector<std::uint32_t> inside = flood({seed}, width, height, region, [&](std::uint32_t q) { return ids[q] == id; });
+    const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, region, [&](std::uint32_t q) { return ids[q] == id; });
+    const int c0 = box.c0, c1 = box.c1, r0 = box.r0, r1 = box.r1;
     // The region's box, one pixel wider: what is not the region and reaches the frame of that box is outside.
-    int c0 = width, c1 = -1, r0 = height, r1 = -1;
-    for (std::uint32_t p : inside) {
-        const int c = int(p % std::uint32_t(width)), r = int(p / std::uint32_t(width));
-        c0 = std::min(c0, c);
-        c1 = std::max(c1, c);
-        r0 = std::min(r0, r);
-        r1 = std::max(r1, r);
-    }
     // Clamped to the image where the region touches its border: there the frame is the image's border pixels.
     const int bc0 = std::max(0, c0 - 1), bc1 = std::min(width - 1, c1 + 1);
     const int br0 = std::max(0, r0 - 1), br1 = std::min(height - 1, r1 + 1);
@@ -140,12 +164,8 @@ std::vector<std::uint32_t> enclosedHoles(std::span<const std::uint8_t> ids, int 
         const int c = int(q % std::uint32_t(width)), r = int(q / std::uint32_t(width));
         return c >= bc0 && c <= bc1 && r >= br0 && r <= br1;
     };
-    flood(std::move(frame), width, height, seen, inBox);
-    std::vector<std::uint32_t> holes;
-    for (int r = br0; r <= br1; ++r)
-        for (int c = bc0; c <= bc1; ++c)
-            if (!seen[at(c, r)]) holes.push_back(at(c, r));
-    return holes;
+    flood(frame, width, height, seen, inBox);
+    return marked(seen, Box{bc0, bc1, br0, br1}, width, 0);
 }
 
 } // namespace stylos::core::annotation

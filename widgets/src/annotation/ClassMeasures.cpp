@@ -8,6 +8,8 @@
 
 #include <QFuture>
 
+#include <algorithm>
+
 namespace stylos::widgets {
 
 namespace {
@@ -94,6 +96,13 @@ void ClassMeasures::start(FragmentId id)
     const auto job = [octree, material, toolmark, areas](QPromise<MeasureResult>& promise, core::ProgressSink& progress) {
         MeasureResult result;
         result.areas = areas;
+        const auto unlabelled = [](const std::vector<std::uint8_t>& l) {
+            return std::all_of(l.begin(), l.end(), [](std::uint8_t id) { return id == 0; });
+        };
+        if (!result.areas && unlabelled(*material) && unlabelled(*toolmark)) {
+            promise.addResult(std::move(result)); // nothing painted yet: no class to measure, no areas needed
+            return;
+        }
         if (!result.areas) {
             auto computed = core::annotation::leafAreas(*octree, {}, &progress);
             if (!computed) return; // cancelled (leafAreas fails no other way): no result

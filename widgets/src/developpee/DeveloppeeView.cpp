@@ -421,8 +421,6 @@ void DeveloppeeView::mousePressEvent(QMouseEvent* event)
     m_pressPosition = m_lastPosition = event->position().toPoint();
     m_pressButtons = event->buttons();
     m_dragged = false;
-    setFocus(Qt::MouseFocusReason);
-    event->accept();
 }
 
 void DeveloppeeView::mouseMoveEvent(QMouseEvent* event)

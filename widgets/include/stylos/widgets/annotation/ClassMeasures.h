@@ -6,6 +6,7 @@
  *        task per fragment (FragmentJobs on the document's TaskManager, listed in the Tasks dock). A fragment is
  *        measured again only when its labels change (LabelStore::labelsChanged; changes within one event-loop
  *        turn and while its task runs are gathered into one new run); the other fragments' figures are kept.
+ *        A fragment with no label at all is not measured (no leaf areas computed until something is painted).
  *        A fragment that is removed drops out of the sums; a new project forgets everything.
  * GUI thread only; the tasks read shared, read-only snapshots of the labels and the octree.
  */
