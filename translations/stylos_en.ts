@@ -226,6 +226,10 @@
         <source>Level</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Eye-dome lighting</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DockingActions</name>
@@ -504,6 +508,10 @@
     </message>
     <message>
         <source>&amp;Redo %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Eye-dome lighting</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

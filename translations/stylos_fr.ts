@@ -226,6 +226,10 @@
         <source>Level</source>
         <translation>Niveau</translation>
     </message>
+    <message>
+        <source>Eye-dome lighting</source>
+        <translation>Éclairage eye-dome (EDL)</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DockingActions</name>
@@ -505,6 +509,10 @@
     <message>
         <source>&amp;Redo %1</source>
         <translation>&amp;Rétablir : %1</translation>
+    </message>
+    <message>
+        <source>&amp;Eye-dome lighting</source>
+        <translation>&amp;Éclairage eye-dome (EDL)</translation>
     </message>
 </context>
 <context>

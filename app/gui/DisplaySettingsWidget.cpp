@@ -32,7 +32,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
       m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this))
 {
     setObjectName(QStringLiteral("displaySettings"));
-    m_shading->addItems({QString(), QString(), QString()});
+    m_shading->addItems({QString(), QString(), QString(), QString()});
     m_splat->setRange(0.25, 4.0);
     m_splat->setSingleStep(0.25);
     m_splat->setDecimals(2);
@@ -53,7 +53,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
 
     const QSettings settings;
     m_updating = true;
-    m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 2));
+    m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 3));
     m_splat->setValue(settings.value(SplatKey, 1.0).toDouble());
     m_budget->setValue(settings.value(BudgetKey, 1.0).toDouble());
     const int level = settings.value(DetailKey, -1).toInt();
@@ -115,6 +115,7 @@ void DisplaySettingsWidget::retranslateUi()
     m_shading->setItemText(0, tr("Headlight"));
     m_shading->setItemText(1, tr("Skydome"));
     m_shading->setItemText(2, tr("Scan colour"));
+    m_shading->setItemText(3, tr("Eye-dome lighting"));
     m_shading->setToolTip(tr("Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight"));
     m_splat->setSuffix(tr(" ×"));
     m_budget->setSuffix(tr(" M points"));

@@ -93,7 +93,7 @@ void MainActions::addViewActions()
         m_views[i] = new QAction(this);
         m_views[i]->setShortcut(ViewKeys[i]);
     }
-    for (int s = 0; s < 3; ++s) {
+    for (int s = 0; s < 4; ++s) {
         QAction* action = m_shading->addAction(QString());
         action->setCheckable(true);
         action->setData(s);
@@ -213,7 +213,8 @@ void MainActions::retranslateUi()
                                    tr("Isometric")};
     for (std::size_t i = 0; i < m_views.size(); ++i) m_views[i]->setText(viewNames[static_cast<int>(i)]);
     m_orthographic->setText(tr("&Orthographic"));
-    const QStringList shadingNames = {tr("&Headlight"), tr("S&kydome"), tr("Scan &colour")};
+    const QStringList shadingNames = {tr("&Headlight"), tr("S&kydome"), tr("Scan &colour"),
+                                      tr("&Eye-dome lighting")};
     for (QAction* action : m_shading->actions()) action->setText(shadingNames.value(action->data().toInt()));
     m_skydome->setText(tr("Compute &skydome"));
     m_skydome->setStatusTip(tr("Compute the 3D skydome (ambient occlusion) of the selected fragments in the "

@@ -1,4 +1,4 @@
-// makeSplatBuffer: one vertex per cell of a cut, exactly — centre, edge, normal, the scan colour and the
+// makeSplatBuffer: one vertex per cell of a cut, exactly — centre, footprint (edge or spacing), normal, the scan colour and the
 // "ambient" layer of the cell's first leaf —, the seeded shuffle, and firstLeafOf.
 #include "ViewTestSupport.h"
 
@@ -48,6 +48,9 @@ TEST(SplatBufferTest, LeavesOfTheFourLeafTreeExactly)
     EXPECT_FALSE(splats.budgetReached);
     EXPECT_EQ(splats.deepestLevel, 2);
     ASSERT_EQ(splats.vertices.size(), 4u);
+    // No "spacing" layer (a hand-made tree): computed. Level 1 is not saturated (4 leaves in 4 cells), so the
+    // surface is 2 level-1 cells of edge 2 over |u|₁ = √2 (root normal (1, 1, 0)/√2): h = √(8 / √2 / 4).
+    EXPECT_NEAR(tree->leafSpacing(0), std::sqrt(2.0 / std::sqrt(2.0)), 2e-3);
     // Per leaf (breadth-first index): centre relative to the origin, normal × 127, colour with alpha 255.
     const std::array<std::array<float, 3>, 4> centres{{{0.5f, 0.5f, 0.5f}, {1.5f, 0.5f, 0.5f}, {2.5f, 2.5f, 2.5f},
                                                        {3.5f, 2.5f, 2.5f}}};
@@ -60,7 +63,7 @@ TEST(SplatBufferTest, LeavesOfTheFourLeafTreeExactly)
         const SplatVertex& v = splats.vertices[i];
         EXPECT_EQ(v.position, centres[leaf]) << "leaf " << leaf;
         EXPECT_EQ(v.position, cut.cells[i].centre);
-        EXPECT_EQ(v.size, 1.0f);
+        EXPECT_EQ(v.size, std::max(1.0f, 2.0f * tree->leafSpacing(leaf))) << "leaf " << leaf; // the larger of edge and spacing
         EXPECT_EQ(v.normal, normals[leaf]) << "leaf " << leaf;
         EXPECT_EQ(v.colour, colours[leaf]) << "leaf " << leaf;
     }
@@ -81,7 +84,7 @@ TEST(SplatBufferTest, InnerCellsTakeTheirFirstLeafAndTheShuffleIsAPermutation)
     ASSERT_EQ(inner.vertices.size(), 2u);
     for (std::size_t i = 0; i < 2; ++i) {
         const SplatVertex& v = inner.vertices[i];
-        EXPECT_EQ(v.size, 2.0f);
+        EXPECT_EQ(v.size, std::max(2.0f, 2.0f * tree->leafSpacing(view::firstLeafOf(*tree, 1, level1.cells[i].index))));
         EXPECT_EQ(v.position, level1.cells[i].centre);
         const auto expected = level1.cells[i].index == 0 ? std::array<std::uint8_t, 4>{10, 20, 30, 255}
                                                          : std::array<std::uint8_t, 4>{70, 80, 90, 255};

@@ -47,7 +47,7 @@ private:
     static void type(QDoubleSpinBox* spin, const QString& text)
     {
         spin->setFocus();
-        spin->lineEdit()->selectAll();
+        spin->selectAll();
         QTest::keyClicks(spin, text);
         QTest::keyClick(spin, Qt::Key_Return);
     }

@@ -6,6 +6,7 @@
 
 #include "stylos/core/normals/NormalFileEstimation.h"
 #include "stylos/core/octree/ConstructionOctree.h"
+#include "stylos/core/octree/LeafSpacing.h"
 #include "stylos/core/octree/PoctWriter.h"
 #include "stylos/core/util/SubProgress.h"
 
@@ -66,7 +67,8 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
     if (progress && progress->isCancelRequested())
         return Error::at(ErrorCode::Cancelled, output.string(), "", "octree build cancelled");
     SubProgress writing(progress, 0.95, 1.0);
-    auto written = writePoct(**tree, output, {}, &writing);
+    const AttributeLayer spacing = leafSpacingLayer(computeLeafSpacing(**tree));
+    auto written = writePoct(**tree, output, std::span<const AttributeLayer>(&spacing, 1), &writing);
     if (!written.ok()) return written.error();
     report.fileBytes = *written;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

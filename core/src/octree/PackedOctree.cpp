@@ -2,6 +2,7 @@
 
 #include "PoctChildIndex.h"
 #include "PoctLayout.h"
+#include "stylos/core/octree/LeafSpacing.h"
 #include "stylos/core/util/Hash64.h"
 #include "stylos/core/util/MappedFile.h"
 
@@ -9,6 +10,7 @@
 #include <bit>
 #include <cassert>
 #include <cstring>
+#include <mutex>
 
 namespace stylos::core::octree {
 
@@ -35,6 +37,9 @@ struct PackedOctree::Impl final : OctreeLevels {
     const std::array<float, 3>* decode = nullptr;
     std::uint16_t codeMask = 0xFFFF;
     std::uint64_t total = 0;
+    std::span<const std::uint8_t> spacingLayer;           ///< the "spacing" layer, if stored
+    mutable std::once_flag spacingOnce;
+    mutable std::vector<float> spacingComputed;           ///< computed on first use when not stored
 
     const OctreeDescription& description() const override { return desc; }
 
@@ -92,6 +97,9 @@ Status PackedOctree::Impl::load(const std::string& name)
         if (header.sections[s].name == "colour") {
             colours = bytes.subspan(header.sections[s].offset, header.sections[s].length);
             desc.hasColour = true;
+        } else if (const auto& e = header.sections[s]; e.name == LeafSpacingLayerName && e.type == AttributeType::Float32 &&
+                   e.components == 1 && e.length == 4 * desc.cellsPerLevel.back()) {
+            spacingLayer = bytes.subspan(e.offset, e.length);
         }
     auto built = poct::ChildIndex::build(masks, desc.cellsPerLevel, header.sections[0].offset, name);
     if (!built) return built.error();
@@ -177,6 +185,21 @@ std::vector<AttributeView> PackedOctree::attributes() const
                        m_impl->bytes.subspan(sections[s].offset, sections[s].length)});
     return out;
 }
+
+float PackedOctree::leafSpacing(std::uint64_t leaf) const
+{
+    assert(leaf < cellCount(depth()) && "PackedOctree::leafSpacing(): leaf out of range");
+    const Impl& impl = *m_impl;
+    if (impl.spacingLayer.empty()) {
+        std::call_once(impl.spacingOnce, [&impl] { impl.spacingComputed = computeLeafSpacing(impl); });
+        return impl.spacingComputed[leaf];
+    }
+    float h = 0;
+    std::memcpy(&h, impl.spacingLayer.data() + 4 * leaf, 4); // little-endian file, little-endian host
+    return h;
+}
+
+bool PackedOctree::hasStoredLeafSpacing() const { return !m_impl->spacingLayer.empty(); }
 
 std::optional<AttributeView> PackedOctree::attribute(const std::string& name) const
 {

@@ -53,11 +53,10 @@ SplatBuffer makeSplatBuffer(const oct::PackedOctree& octree, const oct::CutResul
         const oct::CutCell& c = cut.cells[i];
         SplatVertex& v = out.vertices[i];
         v.position = c.centre;
-        v.size = c.size;
+        const std::uint64_t leaf = firstLeafOf(octree, c.level, c.index);
+        v.size = std::max(c.size, 2.0f * octree.leafSpacing(leaf)); // a disc of radius h reaches its neighbours
         v.normal = {toSnorm8(c.normal[0]), toSnorm8(c.normal[1]), toSnorm8(c.normal[2]), 0};
         v.colour = {255, 255, 255, 255};
-        if (colours.empty() && ambient.empty()) continue;
-        const std::uint64_t leaf = firstLeafOf(octree, c.level, c.index);
         if (!colours.empty()) {
             v.colour[0] = colours[3 * leaf];
             v.colour[1] = colours[3 * leaf + 1];

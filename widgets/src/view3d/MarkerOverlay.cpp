@@ -20,9 +20,9 @@ void main()
 )";
 
 const char* const FragmentShader = R"(#version 330 core
-uniform vec3 uColour;
+uniform vec4 uColour;
 out vec4 fragColour;
-void main() { fragColour = vec4(uColour, 1.0); }
+void main() { fragColour = uColour; }
 )";
 
 // Three arms of unit half-length, then the centre (drawn as a point).
@@ -75,19 +75,27 @@ void MarkerOverlay::draw(const OverlayFrame& frame)
     model.topRightCorner<3, 1>() = *m_point;
     const Eigen::Matrix4f matrix = (frame.projection * frame.view * model).cast<float>();
 
-    glDisable(GL_DEPTH_TEST);
     glEnable(GL_PROGRAM_POINT_SIZE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     m_program->bind();
     glUniformMatrix4fv(m_program->uniformLocation("uMatrix"), 1, GL_FALSE, matrix.data());
     m_program->setUniformValue("uPointSize", float(5.0 * frame.devicePixelRatio));
-    m_program->setUniformValue("uColour", float(m_colour.redF()), float(m_colour.greenF()), float(m_colour.blueF()));
-    {
+    // Behind the surface: faded (drawn where the depth test fails); in front: at full strength.
+    for (const bool behind : {true, false}) {
+        glDepthFunc(behind ? GL_GREATER : GL_LEQUAL);
+        m_program->setUniformValue("uColour", float(m_colour.redF()), float(m_colour.greenF()), float(m_colour.blueF()),
+                                   behind ? BehindOpacity : 1.0f);
         QOpenGLVertexArrayObject::Binder bind(m_vao.get());
         glDrawArrays(GL_LINES, 0, 6);
         glDrawArrays(GL_POINTS, 6, 1);
     }
     m_program->release();
-    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
 }
 
 } // namespace stylos::widgets

@@ -2,7 +2,8 @@
 /** @file
  * @brief The 3D view's first overlay (ViewOverlay): a marker at a 3D point of the scene (a picked point, or
  *        the 3D point of a click in the développée), a three-axis cross of constant size on screen with a dot
- *        at its centre, drawn over the splats (no depth test) so that it is never hidden. OpenGL 3.3 core.
+ *        at its centre, never hidden: the parts in front of the surface at full strength, those behind it faded
+ *        (BehindOpacity; the depth of the splats is in the framebuffer, ViewRenderer). OpenGL 3.3 core.
  *
  * initialize(), draw() and release() need the GL context current; GUI thread only. Failure modes:
  * initialize() returns false when the shader does not build (no GL 3.3 core context).
@@ -25,6 +26,8 @@ namespace stylos::widgets {
 
 class MarkerOverlay : public ViewOverlay, protected QOpenGLFunctions_3_3_Core {
 public:
+    /** @brief Opacity of the parts of the marker behind the surface. */
+    static constexpr float BehindOpacity = 0.3f;
     MarkerOverlay();
     ~MarkerOverlay() override;
     MarkerOverlay(const MarkerOverlay&) = delete;

@@ -27,48 +27,74 @@ uniform float uPixelsPerMetre;  // perspective: at unit depth; orthographic: eve
 uniform bool uOrthographic;
 uniform float uSizeScale;
 uniform float uMaxPointSize;
-uniform int uShading;           // 0 headlight, 1 ambient, 2 colour
+uniform int uShading;           // 0 headlight, 1 ambient, 2 colour, 3 eye-dome (flat, the relief from the depth pass)
 uniform vec3 uBaseColour;
-uniform bool uSelected;
 uniform bool uCullBackFaces;
 out vec3 vColour;
+out vec3 vNormal;               // view space, unit, turned toward the eye (two-sided)
+out vec3 vCentre;               // view space
+out float vRadius;              // metres (view space) covered by half the sprite
 void main()
 {
     vec4 viewPosition = uModelView * vec4(aPosition, 1.0);
     gl_Position = uProjection * viewPosition;
     float depth = uOrthographic ? 1.0 : max(-viewPosition.z, 1e-6);
     gl_PointSize = clamp(aSize * uSizeScale * uPixelsPerMetre / depth, 1.0, uMaxPointSize);
+    vRadius = 0.5 * gl_PointSize * depth / uPixelsPerMetre;
+    vCentre = viewPosition.xyz;
     vec3 n = uNormalMatrix * aNormal.xyz;
     float len = length(n);
     vec3 toEye = uOrthographic ? vec3(0.0, 0.0, 1.0) : normalize(-viewPosition.xyz);
-    float facing = len > 0.0 ? dot(n / len, toEye) : 1.0;
+    n = len > 0.0 ? n / len : toEye;
+    float facing = dot(n, toEye);
     if (uCullBackFaces && facing < -0.2) {
         gl_Position = vec4(2.0, 2.0, 2.0, 1.0); // outside the clip volume: dropped before rasterisation
         return;
     }
-    float lambert = abs(facing);
+    if (facing < 0.0) { n = -n; facing = -facing; } // two-sided: a cell never goes black for facing away
+    vNormal = n;
+    float lambert = facing;
     vec3 colour;
     if (uShading == 1) // the skydome squared (grooves 0.77 → 0.59, fillets 0.94 → 0.88), a touch of headlight for form
         colour = vec3(0.95) * aColour.a * aColour.a * (0.7 + 0.3 * lambert);
     else if (uShading == 2)
         colour = aColour.rgb * (0.3 + 0.7 * lambert);
+    else if (uShading == 3)
+        colour = uBaseColour;
     else
         colour = uBaseColour * (0.12 + 0.88 * lambert);
-    vColour = uSelected ? mix(colour, vec3(0.45, 0.7, 1.0), 0.18) : colour;
+    vColour = colour;
 }
 )";
 
+// Round splats are discs in the plane of the cell's normal (the sprite's pixels outside the projected disc are
+// discarded), their depth that of the disc at each pixel, so that neighbouring discs cut each other along clean
+// seams instead of stacking by drawing order; the normal's view z is kept above 0.35 so that grazing discs stay
+// wide enough to close the surface. Alpha carries the selection for the composite pass (ViewComposite).
 const char* const FragmentShader = R"(#version 330 core
 in vec3 vColour;
+in vec3 vNormal;
+in vec3 vCentre;
+in float vRadius;
 uniform bool uRound;
+uniform bool uOrthographic;
+uniform mat4 uProjection;
+uniform float uAlpha;
 out vec4 fragColour;
 void main()
 {
     if (uRound) {
-        vec2 d = gl_PointCoord * 2.0 - 1.0;
-        if (dot(d, d) > 1.0) discard;
+        vec2 d = vec2(gl_PointCoord.x * 2.0 - 1.0, 1.0 - gl_PointCoord.y * 2.0);
+        float nz = max(vNormal.z, 0.35);
+        float dz = -(vNormal.x * d.x + vNormal.y * d.y) / nz;
+        if (dot(d, d) + dz * dz > 1.0) discard;
+        vec3 p = vCentre + vec3(d * vRadius, dz * vRadius);
+        vec4 clip = uProjection * vec4(p, 1.0);
+        gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+    } else {
+        gl_FragDepth = gl_FragCoord.z;
     }
-    fragColour = vec4(vColour, 1.0);
+    fragColour = vec4(vColour, uAlpha);
 }
 )";
 
@@ -98,7 +124,7 @@ bool PointRenderer::initialize()
     m_program = std::move(program);
     GLfloat range[2] = {1, 64};
     glGetFloatv(GL_POINT_SIZE_RANGE, range);
-    m_maxPointSize = std::clamp(range[1], 1.0f, 64.0f);
+    m_maxPointSize = std::clamp(range[1], 1.0f, 256.0f);
     return true;
 }
 
@@ -194,6 +220,13 @@ bool PointRenderer::hasColour() const
     return std::any_of(m_slots.begin(), m_slots.end(), [](const auto& s) { return s.second->hasColour; });
 }
 
+bool PointRenderer::hasSelection() const
+{
+    return std::any_of(m_fragments.begin(), m_fragments.end(), [this](const ViewFragment& f) {
+        return f.visible && f.selected && m_slots.count(f.id) != 0;
+    });
+}
+
 std::uint64_t PointRenderer::visiblePoints() const
 {
     std::uint64_t total = 0;
@@ -239,10 +272,11 @@ std::uint64_t PointRenderer::draw(const core::view::Camera& camera, const Pass& 
         int shading = 0;
         if (m_shading == Shading::Ambient && slot.hasAmbient) shading = 1;
         if (m_shading == Shading::Colour && slot.hasColour) shading = 2;
+        if (m_shading == Shading::EyeDome) shading = 3;
         m_program->setUniformValue("uShading", shading);
         m_program->setUniformValue("uBaseColour", float(f.colour[0]) / 255.0f, float(f.colour[1]) / 255.0f,
                                    float(f.colour[2]) / 255.0f);
-        m_program->setUniformValue("uSelected", f.selected);
+        m_program->setUniformValue("uAlpha", pass.selectionInAlpha ? (f.selected ? 1.0f : 0.5f) : 1.0f);
         QOpenGLVertexArrayObject::Binder bind(&slot.vao);
         glDrawArrays(GL_POINTS, GLint(first), GLsizei(last - first));
         drawn += last - first;

@@ -1,5 +1,7 @@
 #include "stylos/widgets/view3d/ViewRenderer.h"
 
+#include <QtGlobal>
+
 #include <algorithm>
 
 namespace stylos::widgets {
@@ -15,6 +17,7 @@ bool ViewRenderer::initialize()
     const QByteArray name = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
     m_software = name.contains("llvmpipe") || name.contains("softpipe") || name.contains("SwiftShader") ||
                  name.contains("Software");
+    if (!m_composite.initialize()) qWarning("ViewRenderer: the composite pass did not build; no eye-dome lighting nor outline");
     restartImage();
     for (Overlay& entry : m_overlays) initializeOverlay(entry);
     return true;
@@ -61,13 +64,14 @@ void ViewRenderer::release()
     }
     m_image.release();
     m_lowRes.release();
+    m_composite.release();
 }
 
 void ViewRenderer::setMotionResolution(double scale) { m_motionResolution = std::clamp(scale, 0.1, 1.0); }
 
-void ViewRenderer::clear()
+void ViewRenderer::clear(float alpha)
 {
-    glClearColor(float(m_background.redF()), float(m_background.greenF()), float(m_background.blueF()), 1.0f);
+    glClearColor(float(m_background.redF()), float(m_background.greenF()), float(m_background.blueF()), alpha);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
@@ -82,16 +86,31 @@ std::uint64_t ViewRenderer::drawQuick(const core::view::Camera& camera, unsigned
     pass.cullBackFaces = moving && m_cullWhileMoving;
     pass.pixelScale = devicePixelRatio * scale;
     const QSize reduced(std::max(1, int(size.width() * scale)), std::max(1, int(size.height() * scale)));
-    if (scale < 1.0 && m_lowRes.bind(reduced)) {
-        clear();
+    const bool composite = m_composite.isInitialized() && (needsComposite() || scale < 1.0);
+    if (composite && m_lowRes.bind(reduced)) {
+        pass.selectionInAlpha = true;
+        clear(0.0f);
         const std::uint64_t drawn = m_points.draw(camera, pass);
-        m_lowRes.blitTo(target, size);
+        m_composite.draw(m_lowRes, target, size, camera, compositeOptions());
         return drawn;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, size.width(), size.height());
-    clear();
+    clear(1.0f);
     return m_points.draw(camera, pass);
+}
+
+bool ViewRenderer::needsComposite() const
+{
+    return m_points.shading() == PointRenderer::Shading::EyeDome || m_points.hasSelection();
+}
+
+ViewComposite::Options ViewRenderer::compositeOptions() const
+{
+    ViewComposite::Options options;
+    options.eyeDome = m_points.shading() == PointRenderer::Shading::EyeDome;
+    options.outline = m_points.hasSelection();
+    return options;
 }
 
 void ViewRenderer::restartImage()
@@ -108,12 +127,14 @@ std::uint64_t ViewRenderer::drawImageStep(const core::view::Camera& camera, cons
         m_imageDrawn = 1.0;
         return 0;
     }
-    if (m_imageDrawn == 0) clear();
+    if (m_imageDrawn == 0) clear(0.0f);
+    m_imageCamera = camera;
     const std::uint64_t visible = m_points.visiblePoints();
     PointRenderer::Pass pass;
     pass.from = m_imageDrawn;
     pass.to = visible == 0 ? 1.0 : std::min(1.0, m_imageDrawn + double(std::max<std::uint64_t>(points, 1)) / double(visible));
     pass.pixelScale = devicePixelRatio;
+    pass.selectionInAlpha = true;
     const std::uint64_t drawn = m_points.draw(camera, pass);
     glFinish(); // the step's work is done before the event loop runs again
     m_imageDrawn = pass.to;
@@ -124,7 +145,10 @@ std::uint64_t ViewRenderer::drawImageStep(const core::view::Camera& camera, cons
 bool ViewRenderer::presentImage(unsigned target, const QSize& size)
 {
     if (!isImageComplete() || m_image.size() != size) return false;
-    m_image.blitTo(target, size);
+    if (m_composite.isInitialized() && m_imageCamera)
+        m_composite.draw(m_image, target, size, *m_imageCamera, compositeOptions());
+    else
+        m_image.blitTo(target, size);
     return true;
 }
 

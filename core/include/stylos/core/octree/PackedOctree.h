@@ -98,6 +98,16 @@ public:
     std::optional<AttributeView> attribute(const std::string& name) const;
 
     /**
+     * @brief The leaf's share of the surface as an edge, metres (core/octree/LeafSpacing.h): from the
+     *        "spacing" layer when the file has it (Float32 × 1), else computed from the cells on the first
+     *        call (one pass over the inner levels; thread-safe, 4 bytes per leaf kept). Precondition:
+     *        leaf < cellCount(depth()).
+     */
+    float leafSpacing(std::uint64_t leaf) const;
+    /** @brief Whether the file holds the "spacing" layer (else leafSpacing() computes it). */
+    bool hasStoredLeafSpacing() const;
+
+    /**
      * @brief Calls @p fn for every cell of @p level in breadth-first order (a depth-first walk down
      *        to the level, computing coordinates and centres on the way). Returns early when @p fn
      *        returns false.

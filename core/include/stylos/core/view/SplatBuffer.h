@@ -7,7 +7,9 @@
  *        prefix, with splats enlarged to cover the gaps.
  *
  * Per-cell attributes of the octree are per leaf; an inner cell of the cut takes those of its first leaf
- * (following first children down to the leaf level). Units: metres (positions relative to the octree's
+ * (following first children down to the leaf level). A splat's size is the larger of the cell's edge and
+twice the spacing of that leaf (a disc of radius h reaches the neighbouring samples) (PackedOctree::leafSpacing: the leaf's share of the surface), so that leaves
+smaller than the sampling still close the surface. Units: metres (positions relative to the octree's
  * root box origin, in the octree's frame). Thread-safety: reentrant, reads the octree only. Failure modes:
  * none; a "colour" or "ambient" layer of another type or size is ignored, as if absent.
  */
@@ -23,7 +25,7 @@ namespace stylos::core::view {
 /** @brief One splat as the vertex shader reads it (24 bytes). */
 struct SplatVertex {
     std::array<float, 3> position{};       ///< cell centre, metres, relative to the root box origin
-    float size = 0;                        ///< cell edge, metres
+    float size = 0;                        ///< footprint, metres: max(cell edge, 2 × its first leaf's spacing)
     std::array<std::int8_t, 4> normal{};   ///< unit normal × 127 (w unused)
     std::array<std::uint8_t, 4> colour{};  ///< scan colour (rgb; 255 when none) and ambient × 255 (a; 255 when none)
 };

@@ -1,6 +1,6 @@
 #pragma once
 /** @file
- * @brief An offscreen colour + depth framebuffer that the 3D view draws into and then copies (scaled,
+ * @brief An offscreen colour + depth framebuffer (two textures, so that ViewComposite can read them) that the 3D view draws into and then copies (scaled,
  *        linear filtering) into the widget's framebuffer. Used to build the full-detail image in steps
  *        while the last complete image stays on screen, and (optionally) to draw moving frames at a
  *        lower resolution. OpenGL 3.3 core.
@@ -27,9 +27,14 @@ public:
     /** @brief Copies the colour into framebuffer @p target of @p targetSize (scaled), and binds @p target. */
     void blitTo(GLuint target, const QSize& targetSize);
     QSize size() const { return m_size; }
+    /** @brief The colour (RGBA8) and depth (24-bit) textures; 0 before the first successful bind(). */
+    GLuint colourTexture() const { return m_colour; }
+    GLuint depthTexture() const { return m_depth; }
     void release();
 
 private:
+    void setNearest();
+
     bool m_initialized = false;
     GLuint m_fbo = 0;
     GLuint m_colour = 0;

@@ -4,11 +4,18 @@
  *        (SplatBuffer uploaded as is), point sprites whose size follows the cell size and the projection
  *        (a cell of edge s at depth z covers s · f / z pixels, times the splat factor), round or square.
  *
- * Shading: Headlight (the fragment's colour lit by a light at the eye, from the cells' normals),
+ * Splats: round ones are discs in the plane of the cell's normal, with the depth of the disc at each pixel
+ * (neighbours meet along seams, not in drawing order); their diameter is the splat factor times the
+ * vertex's footprint (the larger of the cell edge and its leaf's spacing, SplatBuffer), so that the discs
+ * close a scanned surface; square ones are screen-aligned squares of that size.
+ *
+ * Shading: two-sided (a normal facing away is turned toward the eye). Headlight (the fragment's colour
+ * lit by a light at the eye, from the cells' normals),
  * Ambient (the "ambient" layer, the 3D skydome, as grey: its square, to read the relief like the paper's
  * figures, times 0.7 + 0.3 of the headlight for the form; falls back to Headlight without the layer),
- * Colour (the scan's colour lit by the headlight; falls back to Headlight without colour). Selected
- * fragments are tinted.
+ * Colour (the scan's colour lit by the headlight; falls back to Headlight without colour), EyeDome (flat
+ * colour; ViewComposite adds the eye-dome lighting from the depth). The selection is not tinted: with
+ * Pass::selectionInAlpha it goes to alpha and ViewComposite outlines it.
  *
  * Parts of the buffers: draw() draws the same slice [from, to) of every buffer (fractions of its
  * length). The buffers are shuffled, so a prefix is an even subsample: a moving frame draws [0, limit /
@@ -42,7 +49,12 @@ namespace stylos::widgets {
 
 class PointRenderer : protected QOpenGLFunctions_3_3_Core {
 public:
-    enum class Shading { Headlight, Ambient, Colour };
+    /**
+     * @brief How splats are coloured. Each is one branch of the vertex shader (uShading); a mode that needs a
+     *        per-leaf value adds it beside the "ambient" byte of SplatVertex (or a second vertex stream) and a
+     *        branch there. EyeDome draws flat colour and leaves the relief to the composite pass.
+     */
+    enum class Shading { Headlight, Ambient, Colour, EyeDome };
 
     /** @brief Which splats one draw() call draws, and how. */
     struct Pass {
@@ -51,6 +63,7 @@ public:
         bool enlarge = false;           ///< splats × √(1 / (to − from)) (a subsample standing for the whole)
         bool cullBackFaces = false;     ///< skip splats whose normal faces away from the eye
         double pixelScale = 1.0;        ///< device pixels per logical pixel of the camera's viewport
+        bool selectionInAlpha = false;  ///< alpha 1 for selected fragments, 0.5 for the others (else 1)
     };
 
     PointRenderer();
@@ -84,10 +97,12 @@ public:
     /** @brief Whether some visible fragment has the "ambient" layer / scan colour in its buffer. */
     bool hasAmbient() const;
     bool hasColour() const;
+    /** @brief Whether some visible fragment is selected. */
+    bool hasSelection() const;
 
     void setShading(Shading shading) { m_shading = shading; }
     Shading shading() const { return m_shading; }
-    /** @brief Splat diameter / cell edge (default 1.5; clamped to [0.1, 10]). */
+    /** @brief Splat diameter / footprint (default 1.5; clamped to [0.1, 10]). */
     void setSplatFactor(double factor);
     double splatFactor() const { return m_splatFactor; }
     /** @brief Round splats (default) or squares. */

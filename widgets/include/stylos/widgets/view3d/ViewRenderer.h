@@ -16,6 +16,7 @@
 #include "stylos/core/view/Camera.h"
 #include "stylos/widgets/view3d/OffscreenFrame.h"
 #include "stylos/widgets/view3d/PointRenderer.h"
+#include "stylos/widgets/view3d/ViewComposite.h"
 #include "stylos/widgets/view3d/ViewOverlay.h"
 
 #include <QColor>
@@ -25,6 +26,7 @@
 
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <vector>
 
 namespace stylos::widgets {
@@ -89,13 +91,17 @@ private:
         bool ready = false;   ///< initialised and not released
     };
 
-    void clear();
+    void clear(float alpha);
+    bool needsComposite() const;
+    ViewComposite::Options compositeOptions() const;
     void initializeOverlay(Overlay& entry);
 
     PointRenderer m_points;
     std::vector<Overlay> m_overlays;
     OffscreenFrame m_image;
-    OffscreenFrame m_lowRes;
+    OffscreenFrame m_lowRes;            ///< moving frames at a reduced resolution, or for the composite pass
+    ViewComposite m_composite;
+    std::optional<core::view::Camera> m_imageCamera; ///< the camera m_image is being drawn with
     QString m_log;
     QColor m_background = QColor(33, 36, 41);
     double m_imageDrawn = 0;        ///< fraction of every buffer drawn into m_image

@@ -1,0 +1,177 @@
+// The 3D view's picture, measured (docs/benchmarks.md, "Splats that close the surface"):
+//   stylos_render_quality FILE [--leaf-pixels 8] [--size 1280x800] [--splat 1.5] [--shading headlight|eyedome]
+//                         [--view front|back|left|right|top|bottom] [--image OUT.png]
+// FILE: a point file (its octree is built first, default depth) or a .poct. The view (ViewportWidget, as in the
+// workbench) is fitted to the object, its centre pixel picked, the camera brought to that surface point at the
+// distance where a leaf edge spans --leaf-pixels pixels, and the refined image taken. Prints JSON:
+//   holes: background pixels inside the silhouette / silhouette pixels. The silhouette is the closing of the
+//          covered pixels by a 25 × 25 square (gaps narrower than 24 px are inside);
+//   dark:  object pixels whose luminance is below 0.15 while the median of their 5 × 5 neighbourhood is above
+//          0.5, / object pixels.
+#include "stylos/core/octree/OctreeBuild.h"
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/widgets/view3d/ViewportWidget.h"
+
+#include <QApplication>
+#include <QElapsedTimer>
+#include <QImage>
+#include <QJsonDocument>
+#include <QJsonObject>
+#include <QThread>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <vector>
+
+namespace {
+
+using Mask = std::vector<std::uint8_t>;
+
+Mask maxFilter(const Mask& in, int w, int h, int r, bool dilate)
+{
+    Mask tmp(in.size()), out(in.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t v = dilate ? 0 : 1;
+            for (int k = std::max(0, x - r); k <= std::min(w - 1, x + r); ++k)
+                v = dilate ? std::max(v, in[y * w + k]) : std::min(v, in[y * w + k]);
+            tmp[y * w + x] = v;
+        }
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            std::uint8_t v = dilate ? 0 : 1;
+            for (int k = std::max(0, y - r); k <= std::min(h - 1, y + r); ++k)
+                v = dilate ? std::max(v, tmp[k * w + x]) : std::min(v, tmp[k * w + x]);
+            out[y * w + x] = v;
+        }
+    return out;
+}
+
+bool isBackground(QRgb c) { return std::abs(qRed(c) - 33) <= 3 && std::abs(qGreen(c) - 36) <= 3 && std::abs(qBlue(c) - 41) <= 3; }
+
+double luminance(QRgb c) { return (0.2126 * qRed(c) + 0.7152 * qGreen(c) + 0.0722 * qBlue(c)) / 255.0; }
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    QApplication app(argc, argv);
+    const QStringList args = app.arguments();
+    if (args.size() < 2) {
+        std::fprintf(stderr, "usage: stylos_render_quality FILE [--leaf-pixels N] [--size WxH] [--splat F] "
+                             "[--shading headlight|eyedome] [--view V] [--image OUT.png]\n");
+        return 2;
+    }
+    auto option = [&](const char* name, const QString& fallback) {
+        const int i = int(args.indexOf(QString::fromLatin1(name)));
+        return i > 0 && i + 1 < args.size() ? args[i + 1] : fallback;
+    };
+    const double leafPixels = option("--leaf-pixels", "8").toDouble();
+    const QStringList size = option("--size", "1280x800").split('x');
+    const double splat = option("--splat", "1.5").toDouble();
+    const QString shading = option("--shading", "headlight");
+    const QString viewName = option("--view", "front");
+
+    std::filesystem::path input = args[1].toStdString();
+    std::filesystem::path poct = input;
+    QElapsedTimer timer;
+    timer.start();
+    if (input.extension() != ".poct") {
+        poct = std::filesystem::temp_directory_path() / (input.stem().string() + ".render-quality.poct");
+        stylos::core::octree::BuildOptions build;
+        build.threads = 2;
+        const auto built = stylos::core::octree::buildOctreeFile(input, poct, build);
+        if (!built.ok()) {
+            std::fprintf(stderr, "%s\n", built.error().message.c_str());
+            return 1;
+        }
+    }
+    auto opened = stylos::core::octree::PackedOctree::open(poct);
+    if (!opened.ok()) {
+        std::fprintf(stderr, "%s\n", opened.error().message.c_str());
+        return 1;
+    }
+    const auto octree = std::make_shared<const stylos::core::octree::PackedOctree>(std::move(opened).value());
+    const double leafEdge = octree->box().cellSize(octree->depth());
+
+    stylos::widgets::ViewportWidget view;
+    view.resize(size.value(0).toInt(), size.value(1).toInt());
+    view.show();
+    view.setSplatFactor(splat);
+    view.setShading(shading == "eyedome" ? stylos::widgets::PointRenderer::Shading::EyeDome
+                                         : stylos::widgets::PointRenderer::Shading::Headlight);
+    stylos::core::view::ViewFragment f;
+    f.id = 1;
+    f.octree = octree;
+    view.setFragments({f});
+    const QStringList views{"front", "back", "left", "right", "top", "bottom"};
+    view.setStandardView(static_cast<stylos::core::view::StandardView>(std::max<qsizetype>(0, views.indexOf(viewName))));
+    view.fitToScene();
+    auto settle = [&] {
+        for (int i = 0; i < 6000 && !view.isSettled(); ++i) {
+            app.processEvents(QEventLoop::AllEvents, 10);
+            QThread::msleep(5);
+        }
+        for (int i = 0; i < 20; ++i) app.processEvents();
+        view.repaint();
+    };
+    settle();
+    const auto pick = view.pickAt(QPointF(view.width() / 2.0, view.height() / 2.0));
+    stylos::core::view::Camera camera = view.camera();
+    if (pick) camera.setTarget(pick->point);
+    // Perspective: pixels per metre at the target = height / (2 d tan(fov / 2)); a leaf spans leafPixels there.
+    const double wanted = leafPixels / leafEdge;
+    camera.setDistance(double(camera.height()) / (wanted * 2.0 * std::tan(camera.fieldOfView() / 2.0)));
+    view.setCamera(camera, false);
+    settle();
+    const QImage image = view.grabFramebuffer().convertToFormat(QImage::Format_RGB32);
+    const QString imagePath = option("--image", QString());
+    if (!imagePath.isEmpty()) image.save(imagePath);
+
+    const int w = image.width(), h = image.height();
+    Mask covered(std::size_t(w) * h);
+    std::vector<double> lum(covered.size());
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const QRgb c = image.pixel(x, y);
+            covered[y * w + x] = isBackground(c) ? 0 : 1;
+            lum[y * w + x] = luminance(c);
+        }
+    const Mask silhouette = maxFilter(maxFilter(covered, w, h, 12, true), w, h, 12, false);
+    std::int64_t inside = 0, holes = 0, object = 0, dark = 0;
+    std::vector<double> window;
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+            const std::size_t i = std::size_t(y) * w + x;
+            inside += silhouette[i];
+            holes += silhouette[i] && !covered[i] ? 1 : 0;
+            if (!covered[i]) continue;
+            ++object;
+            if (lum[i] >= 0.15 || x < 2 || y < 2 || x >= w - 2 || y >= h - 2) continue;
+            window.clear();
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx) window.push_back(lum[std::size_t(y + dy) * w + x + dx]);
+            std::nth_element(window.begin(), window.begin() + 12, window.end());
+            if (window[12] > 0.5) ++dark;
+        }
+    QJsonObject o;
+    o["file"] = args[1];
+    o["leaves"] = double(octree->cellCount(octree->depth()));
+    o["leafEdgeM"] = leafEdge;
+    o["storedSpacing"] = octree->hasStoredLeafSpacing();
+    o["leafPixels"] = leafPixels;
+    o["width"] = w;
+    o["height"] = h;
+    o["splatFactor"] = splat;
+    o["shading"] = shading;
+    o["pointsDrawn"] = double(view.lastPointsDrawn());
+    o["silhouettePixels"] = double(inside);
+    o["holes"] = inside ? double(holes) / double(inside) : 0.0;
+    o["objectPixels"] = double(object);
+    o["dark"] = object ? double(dark) / double(object) : 0.0;
+    o["seconds"] = timer.elapsed() / 1000.0;
+    std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
+    return 0;
+}

@@ -1,0 +1,48 @@
+#pragma once
+/** @file
+ * @brief The pass that brings an offscreen frame (OffscreenFrame: colour, with the selection in alpha,
+ *        and depth) to the widget's framebuffer: a full-screen triangle that copies the colour, adds
+ *        eye-dome lighting (Boucheny's EDL as Potree and CloudCompare draw it: each pixel darkened by how
+ *        much nearer it is than its 8 neighbours 1.5 px away, in log₂ of the linear depth) and an outline
+ *        around the selected fragments (pixels not selected within 2 px of a selected one), and writes the
+ *        depth, so that overlays drawn afterwards are hidden by the surface where they should be.
+ *
+ * GL context current, GUI thread only. Failure modes: initialize() returns false (then the caller blits).
+ */
+#include "stylos/core/view/Camera.h"
+#include "stylos/widgets/view3d/OffscreenFrame.h"
+
+#include <QColor>
+#include <QOpenGLFunctions_3_3_Core>
+
+#include <memory>
+
+class QOpenGLShaderProgram;
+
+namespace stylos::widgets {
+
+class ViewComposite : protected QOpenGLFunctions_3_3_Core {
+public:
+    struct Options {
+        bool eyeDome = false;
+        float eyeDomeStrength = 1.0f;
+        bool outline = false;
+        QColor outlineColour = QColor(90, 170, 255);
+    };
+
+    ViewComposite();
+    ~ViewComposite();
+    bool initialize();
+    void release();
+    bool isInitialized() const { return m_program != nullptr; }
+
+    /** @brief Draws @p source into framebuffer @p target of @p targetSize (scaled) and leaves it bound. */
+    void draw(const OffscreenFrame& source, unsigned target, const QSize& targetSize, const core::view::Camera& camera,
+              const Options& options);
+
+private:
+    std::unique_ptr<QOpenGLShaderProgram> m_program;
+    GLuint m_vao = 0;
+};
+
+} // namespace stylos::widgets
