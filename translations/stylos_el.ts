@@ -188,6 +188,18 @@
         <source>--annotation goes with --grab alone</source>
         <translation>το --annotation πάει μόνο με το --grab</translation>
     </message>
+    <message>
+        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer).</source>
+        <translation>Με --grab: πρώτα υπολογίζει την ανάπτυξη του πρώτου θραύσματος και βάφει πάνω της μερικές περιοχές σχολιασμού (μάρμαρο, θραυσμένο μάρμαρο, γύψος· μια περιοχή οδοντωτής σμίλης στο στρώμα ιχνών εργαλείων).</translation>
+    </message>
+    <message>
+        <source>--paint goes with --grab</source>
+        <translation>το --paint χρησιμοποιείται με το --grab</translation>
+    </message>
+    <message>
+        <source>--paint does not go with --dock or --gizmo</source>
+        <translation>το --paint δεν συνδυάζεται με το --dock ή το --gizmo</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -427,6 +439,13 @@
     <message>
         <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
         <translation>Πληκτρολογήστε το σημείο και την κατεύθυνση του οδηγού άξονα του επιλεγμένου θραύσματος</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::LegendDock</name>
+    <message>
+        <source>Legend</source>
+        <translation>Υπόμνημα</translation>
     </message>
 </context>
 <context>
@@ -821,6 +840,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::ClassMeasures</name>
+    <message>
+        <source>Areas of the classes of %1</source>
+        <translation>Εμβαδά των κλάσεων του %1</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::ContactJob</name>
     <message>
         <source>Contact of %1 with the drum</source>
@@ -943,6 +969,17 @@
     <message>
         <source>Flute %1</source>
         <translation>Ράβδωση %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeAnnotator</name>
+    <message>
+        <source>Erase %1</source>
+        <translation>Σβήσιμο %1</translation>
+    </message>
+    <message>
+        <source>Paint “%1”</source>
+        <translation>Βάψιμο «%1»</translation>
     </message>
 </context>
 <context>
@@ -1434,6 +1471,294 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::LegendText</name>
+    <message>
+        <source>preserved marble</source>
+        <translation>σωζόμενο μάρμαρο</translation>
+    </message>
+    <message>
+        <source>fractured marble</source>
+        <translation>θραυσμένο μάρμαρο</translation>
+    </message>
+    <message>
+        <source>plaster/restoration</source>
+        <translation>γύψος/αποκατάσταση</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>άγνωστο</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>βελόνι</translation>
+    </message>
+    <message>
+        <source>flat chisel</source>
+        <translation>ίσια σμίλη</translation>
+    </message>
+    <message>
+        <source>claw chisel</source>
+        <translation>οδοντωτή σμίλη</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>τρυπάνι</translation>
+    </message>
+    <message>
+        <source>rasp</source>
+        <translation>ράσπα</translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation>Υλικό / κατάσταση</translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation>Ίχνη εργαλείων</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Καμία</translation>
+    </message>
+    <message>
+        <source>Diagonal</source>
+        <translation>Διαγώνια</translation>
+    </message>
+    <message>
+        <source>Back diagonal</source>
+        <translation>Αντίστροφη διαγώνια</translation>
+    </message>
+    <message>
+        <source>Cross</source>
+        <translation>Σταυρωτή</translation>
+    </message>
+    <message>
+        <source>Diagonal cross</source>
+        <translation>Διαγώνια σταυρωτή</translation>
+    </message>
+    <message>
+        <source>Dots</source>
+        <translation>Κουκκίδες</translation>
+    </message>
+    <message>
+        <source>Horizontal</source>
+        <translation>Οριζόντια</translation>
+    </message>
+    <message>
+        <source>Vertical</source>
+        <translation>Κατακόρυφη</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Συμπαγής</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::LegendWidget</name>
+    <message>
+        <source>Colour of “%1”</source>
+        <translation>Χρώμα της «%1»</translation>
+    </message>
+    <message>
+        <source>Rename class “%1” to “%2”</source>
+        <translation>Μετονομασία της κλάσης «%1» σε «%2»</translation>
+    </message>
+    <message>
+        <source>Recolour class “%1”</source>
+        <translation>Αλλαγή χρώματος της κλάσης «%1»</translation>
+    </message>
+    <message>
+        <source>Change the hatch of “%1”</source>
+        <translation>Αλλαγή της διαγράμμισης της «%1»</translation>
+    </message>
+    <message>
+        <source>class %1</source>
+        <translation>κλάση %1</translation>
+    </message>
+    <message>
+        <source>Add class “%1”</source>
+        <translation>Προσθήκη της κλάσης «%1»</translation>
+    </message>
+    <message>
+        <source>Delete class “%1”</source>
+        <translation>Διαγραφή της κλάσης «%1»</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s) hold this class. What becomes of them?</source>
+        <translation>
+            <numerusform>%n κελί έχει αυτή την κλάση. Τι θα γίνει;</numerusform>
+            <numerusform>%n κελιά έχουν αυτή την κλάση. Τι θα γίνουν;</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unlabel them</source>
+        <translation>Να μείνουν χωρίς κλάση</translation>
+    </message>
+    <message>
+        <source>Move them to</source>
+        <translation>Να μεταφερθούν στην</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Διαγραφή</translation>
+    </message>
+    <message>
+        <source>The black-and-white pattern of this class on plates</source>
+        <translation>Το ασπρόμαυρο μοτίβο αυτής της κλάσης στους πίνακες</translation>
+    </message>
+    <message>
+        <source>Being measured…</source>
+        <translation>Μετράται…</translation>
+    </message>
+    <message>
+        <source>Surface area on the object, m²</source>
+        <translation>Εμβαδόν επιφάνειας πάνω στο αντικείμενο, m²</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Κλάση</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Διαγράμμιση</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Κελιά</translation>
+    </message>
+    <message>
+        <source>Area (m²)</source>
+        <translation>Εμβαδόν (m²)</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Προσθήκη</translation>
+    </message>
+    <message>
+        <source>Add a class to the layer of the selected row</source>
+        <translation>Προσθήκη κλάσης στο στρώμα της επιλεγμένης γραμμής</translation>
+    </message>
+    <message>
+        <source>Colour…</source>
+        <translation>Χρώμα…</translation>
+    </message>
+    <message>
+        <source>Change the colour of the selected class</source>
+        <translation>Αλλαγή του χρώματος της επιλεγμένης κλάσης</translation>
+    </message>
+    <message>
+        <source>Delete…</source>
+        <translation>Διαγραφή…</translation>
+    </message>
+    <message>
+        <source>Delete the selected class (its cells are unlabelled or moved to another class)</source>
+        <translation>Διαγραφή της επιλεγμένης κλάσης (τα κελιά της μένουν χωρίς κλάση ή μεταφέρονται σε άλλη)</translation>
+    </message>
+    <message>
+        <source>Click a class to paint it; double-click its name to rename it</source>
+        <translation>Κλικ σε μια κλάση για να τη βάψετε· διπλό κλικ στο όνομά της για μετονομασία</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::PaintToolBar</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Pan</source>
+        <translation>Μετακίνηση</translation>
+    </message>
+    <message>
+        <source>Navigate: drag to pan, click to mark the point in 3D (N)</source>
+        <translation>Πλοήγηση: σύρετε για μετακίνηση, κλικ για σήμανση του σημείου στο 3Δ (N)</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Πινέλο</translation>
+    </message>
+    <message>
+        <source>Paint the active class with a round brush (B)</source>
+        <translation>Βάψιμο της ενεργής κλάσης με στρογγυλό πινέλο (B)</translation>
+    </message>
+    <message>
+        <source>Eraser</source>
+        <translation>Γόμα</translation>
+    </message>
+    <message>
+        <source>Unlabel the cells under a round brush (E)</source>
+        <translation>Αφαίρεση της κλάσης από τα κελιά κάτω από στρογγυλό πινέλο (E)</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Πολύγωνο</translation>
+    </message>
+    <message>
+        <source>Fill a polygon with the active class: click its corners and double-click, or drag a lasso (L); Escape cancels</source>
+        <translation>Γέμισμα πολυγώνου με την ενεργή κλάση: κλικ στις κορυφές του και διπλό κλικ, ή σύρετε ένα λάσο (L)· το Escape ακυρώνει</translation>
+    </message>
+    <message>
+        <source>Wand</source>
+        <translation>Ραβδί</translation>
+    </message>
+    <message>
+        <source>Fill the connected pixels of similar height or shading with the active class (W)</source>
+        <translation>Γέμισμα με την ενεργή κλάση των συνεχόμενων εικονοστοιχείων με παρόμοιο ύψος ή σκίαση (W)</translation>
+    </message>
+    <message>
+        <source>Holes</source>
+        <translation>Κενά</translation>
+    </message>
+    <message>
+        <source>Fill the holes enclosed by the clicked region with its class (H)</source>
+        <translation>Γέμισμα των κενών που περικλείει η περιοχή του κλικ με την κλάση της (H)</translation>
+    </message>
+    <message>
+        <source>The annotation layer shown and painted</source>
+        <translation>Το στρώμα σχολιασμού που εμφανίζεται και βάφεται</translation>
+    </message>
+    <message>
+        <source>The class the brush, polygon and wand paint</source>
+        <translation>Η κλάση που βάφουν το πινέλο, το πολύγωνο και το ραβδί</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Μέγεθος</translation>
+    </message>
+    <message>
+        <source>Brush and eraser diameter on the object</source>
+        <translation>Διάμετρος πινέλου και γόμας πάνω στο αντικείμενο</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Ύψος</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Σκίαση</translation>
+    </message>
+    <message>
+        <source>What the magic wand compares</source>
+        <translation>Τι συγκρίνει το μαγικό ραβδί</translation>
+    </message>
+    <message>
+        <source>The magic wand takes pixels within this of the clicked one</source>
+        <translation>Το μαγικό ραβδί παίρνει τα εικονοστοιχεία που απέχουν έως τόσο από αυτό του κλικ</translation>
+    </message>
+    <message>
+        <source>Overlay</source>
+        <translation>Επικάλυψη</translation>
+    </message>
+    <message>
+        <source>Opacity of the annotation over the développée</source>
+        <translation>Αδιαφάνεια του σχολιασμού πάνω στην ανάπτυξη</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>
@@ -1543,6 +1868,13 @@
     <message>
         <source>Could not save the annotations of %1 into %2: %3.</source>
         <translation>Δεν ήταν δυνατή η αποθήκευση των σχολίων του %1 στο %2: %3.</translation>
+    </message>
+    <message>
+        <translation>Αφαίρεση της κλάσης %1</translation>
+    </message>
+    <message>
+        <source>Could not save the annotations of %1 into %2: %3.</source>
+        <translation>Δεν ήταν δυνατή η αποθήκευση των σχολιασμών του %1 στο %2: %3.</translation>
     </message>
 </context>
 <context>

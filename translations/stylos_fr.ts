@@ -188,6 +188,18 @@
         <source>--annotation goes with --grab alone</source>
         <translation>--annotation va avec --grab seul</translation>
     </message>
+    <message>
+        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer).</source>
+        <translation>Avec --grab : calculer d’abord la développée du premier fragment et y peindre quelques régions d’annotation (marbre, marbre fracturé, plâtre ; une zone de gradine dans la couche des traces d’outil).</translation>
+    </message>
+    <message>
+        <source>--paint goes with --grab</source>
+        <translation>--paint s’emploie avec --grab</translation>
+    </message>
+    <message>
+        <source>--paint does not go with --dock or --gizmo</source>
+        <translation>--paint ne va ni avec --dock ni avec --gizmo</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -427,6 +439,13 @@
     <message>
         <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
         <translation>Saisir le point et la direction du guide d’axe du fragment sélectionné</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::LegendDock</name>
+    <message>
+        <source>Legend</source>
+        <translation>Légende</translation>
     </message>
 </context>
 <context>
@@ -821,6 +840,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::ClassMeasures</name>
+    <message>
+        <source>Areas of the classes of %1</source>
+        <translation>Aires des classes de %1</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::ContactJob</name>
     <message>
         <source>Contact of %1 with the drum</source>
@@ -943,6 +969,17 @@
     <message>
         <source>Flute %1</source>
         <translation>Cannelure %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::DeveloppeeAnnotator</name>
+    <message>
+        <source>Erase %1</source>
+        <translation>Effacer %1</translation>
+    </message>
+    <message>
+        <source>Paint “%1”</source>
+        <translation>Peindre « %1 »</translation>
     </message>
 </context>
 <context>
@@ -1431,6 +1468,294 @@
     <message>
         <source>Fit the guides of %1</source>
         <translation>Ajuster les guides de %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::LegendText</name>
+    <message>
+        <source>preserved marble</source>
+        <translation>marbre conservé</translation>
+    </message>
+    <message>
+        <source>fractured marble</source>
+        <translation>marbre fracturé</translation>
+    </message>
+    <message>
+        <source>plaster/restoration</source>
+        <translation>plâtre/restauration</translation>
+    </message>
+    <message>
+        <source>unknown</source>
+        <translation>inconnu</translation>
+    </message>
+    <message>
+        <source>point</source>
+        <translation>pointe</translation>
+    </message>
+    <message>
+        <source>flat chisel</source>
+        <translation>ciseau plat</translation>
+    </message>
+    <message>
+        <source>claw chisel</source>
+        <translation>gradine</translation>
+    </message>
+    <message>
+        <source>drill</source>
+        <translation>trépan</translation>
+    </message>
+    <message>
+        <source>rasp</source>
+        <translation>râpe</translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation>Matériau / état</translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation>Traces d’outil</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucune</translation>
+    </message>
+    <message>
+        <source>Diagonal</source>
+        <translation>Diagonale</translation>
+    </message>
+    <message>
+        <source>Back diagonal</source>
+        <translation>Diagonale inverse</translation>
+    </message>
+    <message>
+        <source>Cross</source>
+        <translation>Quadrillage</translation>
+    </message>
+    <message>
+        <source>Diagonal cross</source>
+        <translation>Quadrillage diagonal</translation>
+    </message>
+    <message>
+        <source>Dots</source>
+        <translation>Points</translation>
+    </message>
+    <message>
+        <source>Horizontal</source>
+        <translation>Horizontale</translation>
+    </message>
+    <message>
+        <source>Vertical</source>
+        <translation>Verticale</translation>
+    </message>
+    <message>
+        <source>Solid</source>
+        <translation>Plein</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::LegendWidget</name>
+    <message>
+        <source>Colour of “%1”</source>
+        <translation>Couleur de « %1 »</translation>
+    </message>
+    <message>
+        <source>Rename class “%1” to “%2”</source>
+        <translation>Renommer la classe « %1 » en « %2 »</translation>
+    </message>
+    <message>
+        <source>Recolour class “%1”</source>
+        <translation>Changer la couleur de la classe « %1 »</translation>
+    </message>
+    <message>
+        <source>Change the hatch of “%1”</source>
+        <translation>Changer la hachure de « %1 »</translation>
+    </message>
+    <message>
+        <source>class %1</source>
+        <translation>classe %1</translation>
+    </message>
+    <message>
+        <source>Add class “%1”</source>
+        <translation>Ajouter la classe « %1 »</translation>
+    </message>
+    <message>
+        <source>Delete class “%1”</source>
+        <translation>Supprimer la classe « %1 »</translation>
+    </message>
+    <message numerus="yes">
+        <source>%n cell(s) hold this class. What becomes of them?</source>
+        <translation>
+            <numerusform>%n cellule porte cette classe. Que devient-elle ?</numerusform>
+            <numerusform>%n cellules portent cette classe. Que deviennent-elles ?</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Unlabel them</source>
+        <translation>Les désannoter</translation>
+    </message>
+    <message>
+        <source>Move them to</source>
+        <translation>Les passer dans</translation>
+    </message>
+    <message>
+        <source>Delete</source>
+        <translation>Supprimer</translation>
+    </message>
+    <message>
+        <source>The black-and-white pattern of this class on plates</source>
+        <translation>Le motif noir et blanc de cette classe sur les planches</translation>
+    </message>
+    <message>
+        <source>Being measured…</source>
+        <translation>Mesure en cours…</translation>
+    </message>
+    <message>
+        <source>Surface area on the object, m²</source>
+        <translation>Aire de la surface sur l’objet, m²</translation>
+    </message>
+    <message>
+        <source>Class</source>
+        <translation>Classe</translation>
+    </message>
+    <message>
+        <source>Hatch</source>
+        <translation>Hachure</translation>
+    </message>
+    <message>
+        <source>Cells</source>
+        <translation>Cellules</translation>
+    </message>
+    <message>
+        <source>Area (m²)</source>
+        <translation>Aire (m²)</translation>
+    </message>
+    <message>
+        <source>Add</source>
+        <translation>Ajouter</translation>
+    </message>
+    <message>
+        <source>Add a class to the layer of the selected row</source>
+        <translation>Ajouter une classe à la couche de la ligne sélectionnée</translation>
+    </message>
+    <message>
+        <source>Colour…</source>
+        <translation>Couleur…</translation>
+    </message>
+    <message>
+        <source>Change the colour of the selected class</source>
+        <translation>Changer la couleur de la classe sélectionnée</translation>
+    </message>
+    <message>
+        <source>Delete…</source>
+        <translation>Supprimer…</translation>
+    </message>
+    <message>
+        <source>Delete the selected class (its cells are unlabelled or moved to another class)</source>
+        <translation>Supprimer la classe sélectionnée (ses cellules sont désannotées ou passées dans une autre classe)</translation>
+    </message>
+    <message>
+        <source>Click a class to paint it; double-click its name to rename it</source>
+        <translation>Cliquer une classe pour la peindre ; double-cliquer son nom pour la renommer</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::PaintToolBar</name>
+    <message>
+        <source> mm</source>
+        <translation> mm</translation>
+    </message>
+    <message>
+        <source> %</source>
+        <translation> %</translation>
+    </message>
+    <message>
+        <source>Pan</source>
+        <translation>Déplacer</translation>
+    </message>
+    <message>
+        <source>Navigate: drag to pan, click to mark the point in 3D (N)</source>
+        <translation>Naviguer : glisser pour déplacer la vue, cliquer pour marquer le point en 3D (N)</translation>
+    </message>
+    <message>
+        <source>Brush</source>
+        <translation>Pinceau</translation>
+    </message>
+    <message>
+        <source>Paint the active class with a round brush (B)</source>
+        <translation>Peindre la classe active avec un pinceau rond (B)</translation>
+    </message>
+    <message>
+        <source>Eraser</source>
+        <translation>Gomme</translation>
+    </message>
+    <message>
+        <source>Unlabel the cells under a round brush (E)</source>
+        <translation>Désannoter les cellules sous un pinceau rond (E)</translation>
+    </message>
+    <message>
+        <source>Polygon</source>
+        <translation>Polygone</translation>
+    </message>
+    <message>
+        <source>Fill a polygon with the active class: click its corners and double-click, or drag a lasso (L); Escape cancels</source>
+        <translation>Remplir un polygone avec la classe active : cliquer ses sommets puis double-cliquer, ou tracer un lasso (L) ; Échap annule</translation>
+    </message>
+    <message>
+        <source>Wand</source>
+        <translation>Baguette</translation>
+    </message>
+    <message>
+        <source>Fill the connected pixels of similar height or shading with the active class (W)</source>
+        <translation>Remplir avec la classe active les pixels connexes de hauteur ou d’ombrage voisins (W)</translation>
+    </message>
+    <message>
+        <source>Holes</source>
+        <translation>Trous</translation>
+    </message>
+    <message>
+        <source>Fill the holes enclosed by the clicked region with its class (H)</source>
+        <translation>Remplir avec sa classe les trous que la région cliquée entoure (H)</translation>
+    </message>
+    <message>
+        <source>The annotation layer shown and painted</source>
+        <translation>La couche d’annotation affichée et peinte</translation>
+    </message>
+    <message>
+        <source>The class the brush, polygon and wand paint</source>
+        <translation>La classe que peignent le pinceau, le polygone et la baguette</translation>
+    </message>
+    <message>
+        <source>Size</source>
+        <translation>Taille</translation>
+    </message>
+    <message>
+        <source>Brush and eraser diameter on the object</source>
+        <translation>Diamètre du pinceau et de la gomme sur l’objet</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Hauteur</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Ombrage</translation>
+    </message>
+    <message>
+        <source>What the magic wand compares</source>
+        <translation>Ce que compare la baguette magique</translation>
+    </message>
+    <message>
+        <source>The magic wand takes pixels within this of the clicked one</source>
+        <translation>La baguette magique prend les pixels à moins de cet écart de celui cliqué</translation>
+    </message>
+    <message>
+        <source>Overlay</source>
+        <translation>Calque</translation>
+    </message>
+    <message>
+        <source>Opacity of the annotation over the développée</source>
+        <translation>Opacité de l’annotation sur la développée</translation>
     </message>
 </context>
 <context>

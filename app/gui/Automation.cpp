@@ -3,14 +3,20 @@
 #include "stylos/core/scene/SceneEigen.h"
 
 #include "AnnotationActions.h"
+#include "DeveloppeeLink.h"
 #include "DisplaySettingsWidget.h"
 #include "DockingActions.h"
+#include "LegendDock.h"
 #include "MainActions.h"
 #include "LogDock.h"
 #include "PropertiesDock.h"
 #include "SceneDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
+#include "stylos/core/annotation/PaintRegion.h"
+#include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/view3d/OrbitBenchmark.h"
 #include "stylos/widgets/view3d/PoseBenchmark.h"
 #include "stylos/widgets/docking/ContactMonitor.h"
@@ -31,6 +37,8 @@
 #include <QToolBar>
 
 #include <algorithm>
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <functional>
 #include <memory>
@@ -285,6 +293,82 @@ void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
             delete fitted;
             dock();
         });
+    });
+}
+
+namespace {
+
+/** Paints @p pixels with @p classId of @p layer as one stroke, the way the view's tools do. */
+void paintStroke(MainWindow& window, widgets::DeveloppeeView& view, core::annotation::AnnotationLayer layer,
+                 std::uint8_t classId, const std::vector<std::uint32_t>& pixels)
+{
+    window.annotator().setActive(layer, classId);
+    Q_EMIT view.strokeStarted();
+    Q_EMIT view.pixelsPainted(pixels, classId);
+    Q_EMIT view.strokeFinished();
+}
+
+/** The demo's regions, in fractions of the image. */
+void paintDemoRegions(MainWindow& window, widgets::DeveloppeeView& view)
+{
+    using core::annotation::AnnotationLayer;
+    using core::annotation::GridPoint;
+    const int w = view.image().width(), h = view.image().height();
+    const auto polygon = [w, h](std::initializer_list<std::pair<double, double>> corners) {
+        std::vector<GridPoint> points;
+        for (const auto& [x, y] : corners) points.push_back({x * w, y * h});
+        return core::annotation::polygonPixels(points, w, h);
+    };
+    paintStroke(window, view, AnnotationLayer::Toolmark, 3, polygon({{0.08, 0.15}, {0.3, 0.12}, {0.32, 0.7}, {0.1, 0.75}}));
+    paintStroke(window, view, AnnotationLayer::Material, 1,
+                polygon({{0.02, 0.05}, {0.55, 0.05}, {0.6, 0.5}, {0.52, 0.95}, {0.02, 0.95}}));
+    paintStroke(window, view, AnnotationLayer::Material, 3,
+                polygon({{0.66, 0.18}, {0.88, 0.1}, {0.95, 0.55}, {0.8, 0.88}, {0.64, 0.7}}));
+    std::vector<std::uint32_t> band; // a crack of fractured marble, brushed from the top to the bottom
+    const double radius = std::max(1.0, 0.012 * w);
+    for (int i = 0; i < 8; ++i) {
+        const GridPoint a{(0.38 + 0.03 * std::sin(i)) * w, i / 8.0 * h}, b{(0.38 + 0.03 * std::sin(i + 1)) * w, (i + 1) / 8.0 * h};
+        for (std::uint32_t p : core::annotation::brushPixels(a, b, radius, w, h)) band.push_back(p);
+    }
+    std::sort(band.begin(), band.end());
+    band.erase(std::unique(band.begin(), band.end()), band.end());
+    paintStroke(window, view, AnnotationLayer::Material, 2, band);
+    window.annotator().setActive(AnnotationLayer::Material, 1);
+    view.setTool(widgets::PaintTool::Brush);
+}
+
+} // namespace
+
+void grabPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    window.resize(1500, 950);
+    whenReady(window, timeoutMs, [&window, path, timeoutMs] {
+        const auto& fragments = window.document().scene().fragments();
+        if (fragments.empty()) {
+            std::fprintf(stderr, "stylos: --paint needs a fragment\n");
+            QApplication::exit(1);
+            return;
+        }
+        const auto id = fragments[0].id;
+        widgets::DeveloppeeView& view = *window.developpeePanel().view();
+        auto* shown = new QMetaObject::Connection;
+        *shown = QObject::connect(&view, &widgets::DeveloppeeView::developpeeChanged, &window,
+                                  [&window, &view, id, shown, path, timeoutMs] {
+            if (view.fragmentId() != id || !view.hasDeveloppee()) return;
+            QObject::disconnect(*shown);
+            delete shown;
+            if (!view.canPaint()) {
+                std::fprintf(stderr, "stylos: --paint: the développée of the first fragment cannot be painted\n");
+                QApplication::exit(1);
+                return;
+            }
+            paintDemoRegions(window, view);
+            window.legendDock().raise();
+            grabWhenReady(window, path, timeoutMs);
+        });
+        window.sceneDock().selectFragment(id);
+        window.developpeeLink().compute();
     });
 }
 

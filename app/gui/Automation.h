@@ -45,6 +45,15 @@ void grabAnnotationWhenReady(MainWindow& window, const QString& path, int timeou
 void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
 
 /**
+ * @brief As grabWhenReady(), with a painted développée: once ready, computes the first fragment's développée and,
+ *        when it is shown, paints a few regions through the développée view's painting signals (the path the
+ *        mouse takes): preserved marble, a band of fractured marble and plaster in the material layer, a
+ *        claw-chisel area in the tool-mark layer; shows the material layer and the Legend dock; once the class
+ *        areas are measured, grabs. Status 1 as above, or when there is no fragment or it cannot be painted.
+ */
+void grabPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+
+/**
  * @brief Hides the docks and toolbar, sizes the 3D view to 1280 × 800, and once ready orbits the camera
  *        for @p frames frames (widgets::OrbitBenchmark), prints the JSON result on stdout and quits (0;
  *        1 without a 3D view, or when the scene failed to open). The result adds "openToFirstFrameMs":

@@ -54,6 +54,11 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     parser.addOption(gizmo);
     parser.addOption(annotation);
     parser.addOption(dock);
+    const QCommandLineOption paint(QStringLiteral("paint"),
+                                   tr("With --grab: first compute the first fragment's développée and paint a few "
+                                      "annotation regions on it (marble, fractured marble, plaster; a claw-chisel "
+                                      "area in the tool-mark layer)."));
+    parser.addOption(paint);
     parser.addOption(orbit);
     parser.addOption(pose);
     QStringList formats;
@@ -75,6 +80,10 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     result.grabAnnotation = parser.isSet(annotation);
     if (result.grabAnnotation && (result.grabPath.isEmpty() || result.grabDock || result.grabGizmo))
         usageError(tr("--annotation goes with --grab alone"));
+    result.grabPaint = parser.isSet(paint);
+    if (result.grabPaint && result.grabPath.isEmpty()) usageError(tr("--paint goes with --grab"));
+    if (result.grabPaint && (result.grabDock || result.grabGizmo || result.grabAnnotation))
+        usageError(tr("--paint does not go with --dock, --gizmo or --annotation"));
     if (parser.isSet(orbit)) {
         bool ok = false;
         result.orbitFrames = parser.value(orbit).toInt(&ok);

@@ -4,6 +4,7 @@
 #include "AnnotationSync.h"
 #include "DeveloppeeLink.h"
 #include "DeveloppeeDock.h"
+#include "LegendDock.h"
 #include "AssemblyActions.h"
 #include "DockingActions.h"
 #include "LogDock.h"
@@ -17,6 +18,11 @@
 #include "Translations.h"
 #include "ViewportSync.h"
 #include "DisplaySettingsWidget.h"
+#include "stylos/widgets/annotation/ClassMeasures.h"
+#include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
+#include "stylos/widgets/annotation/LegendWidget.h"
+#include "stylos/widgets/annotation/PaintToolBar.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeSettings.h"
@@ -115,12 +121,25 @@ void MainWindow::createDocks()
     m_developpeeLink = new DeveloppeeLink(*m_document, m_developpeeDock->panel(), m_viewport, this);
     connect(m_developpeeLink, &DeveloppeeLink::finished, this, &MainWindow::report);
 
+    // Annotation: the développée paints the document's labels; the Legend dock chooses the class and edits it.
+    widgets::DeveloppeeView& developpeeView = *m_developpeeDock->panel().view();
+    m_annotator = new widgets::DeveloppeeAnnotator(*m_document, developpeeView, this);
+    m_developpeeDock->panel().setPaintBar(new widgets::PaintToolBar(*m_document, *m_annotator, developpeeView));
+    m_measures = new widgets::ClassMeasures(*m_document, this);
+    m_legendDock = new LegendDock(*m_document, m_measures, this);
+    addDockWidget(Qt::RightDockWidgetArea, m_legendDock); // beside the 3D view: the classes with their figures
+    connect(&m_legendDock->legend(), &widgets::LegendWidget::classChosen, m_annotator,
+            &widgets::DeveloppeeAnnotator::setActive);
+    connect(m_annotator, &widgets::DeveloppeeAnnotator::activeChanged, &m_legendDock->legend(),
+            &widgets::LegendWidget::showActive);
+    m_legendDock->legend().showActive(m_annotator->layer(), m_annotator->activeClass());
+
     m_tasksDock = new TasksDock(*m_tasks, this);
     splitDockWidget(m_developpeeDock, m_tasksDock, Qt::Horizontal);
     m_logDock = new LogDock(this);
     tabifyDockWidget(m_tasksDock, m_logDock);
     m_tasksDock->raise();
-    resizeDocks({m_sceneDock}, {280}, Qt::Horizontal);
+    resizeDocks({m_sceneDock, m_legendDock}, {280, 440}, Qt::Horizontal);
     resizeDocks({m_developpeeDock, m_tasksDock}, {900, 300}, Qt::Horizontal);
     resizeDocks({m_developpeeDock}, {330}, Qt::Vertical);
 
@@ -139,7 +158,8 @@ void MainWindow::createMenus()
     QMenu* viewMenu = m_actions->populate(*menuBar());
     new UndoShortcuts(*this, *m_actions->undoAction(), *m_actions->redoAction());
     for (QDockWidget* dock : {static_cast<QDockWidget*>(m_sceneDock), static_cast<QDockWidget*>(m_propertiesDock),
-                              static_cast<QDockWidget*>(m_developpeeDock), static_cast<QDockWidget*>(m_tasksDock),
+                              static_cast<QDockWidget*>(m_legendDock), static_cast<QDockWidget*>(m_developpeeDock),
+                              static_cast<QDockWidget*>(m_tasksDock),
                               static_cast<QDockWidget*>(m_logDock)})
         viewMenu->addAction(dock->toggleViewAction());
     m_docking = new DockingActions(*m_document, m_viewport, *this);

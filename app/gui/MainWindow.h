@@ -13,6 +13,8 @@ class QToolBar;
 
 namespace stylos::widgets {
 class DemoScene;
+class ClassMeasures;
+class DeveloppeeAnnotator;
 class DeveloppeePanel;
 class ScanImporter;
 class SceneDocument;
@@ -29,6 +31,7 @@ class DeveloppeeDock;
 class AssemblyActions;
 class DockingActions;
 class DeveloppeeLink;
+class LegendDock;
 class LogDock;
 class MainActions;
 class ProjectActions;
@@ -62,6 +65,8 @@ public:
     widgets::DeveloppeePanel& developpeePanel() const;
     DeveloppeeLink& developpeeLink() const { return *m_developpeeLink; }
     LogDock& logDock() const { return *m_logDock; }
+    LegendDock& legendDock() const { return *m_legendDock; }
+    widgets::DeveloppeeAnnotator& annotator() const { return *m_annotator; }
     ProjectActions& projectActions() const { return *m_projectActions; }
     MainActions& actions() const { return *m_actions; }
     DockingActions& docking() const { return *m_docking; }
@@ -114,6 +119,9 @@ private:
     DeveloppeeDock* m_developpeeDock = nullptr;
     DeveloppeeLink* m_developpeeLink = nullptr;
     LogDock* m_logDock = nullptr;
+    LegendDock* m_legendDock = nullptr;
+    widgets::ClassMeasures* m_measures = nullptr;
+    widgets::DeveloppeeAnnotator* m_annotator = nullptr;
     ProjectActions* m_projectActions = nullptr;
     MainActions* m_actions = nullptr;
     AssemblyActions* m_assemblies = nullptr;

@@ -4,6 +4,7 @@
 #include "DrumOctreeFixture.h"
 #include "WidgetTestSupport.h"
 
+#include "stylos/core/annotation/LabelRaster.h"
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
@@ -177,6 +178,21 @@ void DeveloppeeJobTest::aPixelMapsOntoTheDrum()
             ++checked;
         }
     QVERIFY(checked > 10);
+    // The painting's pixel ↔ leaf index: every leaf at the pixel core::annotation::leafPixels gives, both ways.
+    QVERIFY(r.leafIndex);
+    auto pixels = stylos::core::annotation::leafPixels(*m_drum.octree, *r.map);
+    QVERIFY(pixels.ok());
+    QCOMPARE(r.leafIndex->leafCount(), pixels->size());
+    std::size_t mapped = 0;
+    for (std::size_t leaf = 0; leaf < pixels->size(); ++leaf) {
+        QCOMPARE(r.leafIndex->pixelOf(std::uint32_t(leaf)), (*pixels)[leaf]);
+        if ((*pixels)[leaf] < 0) continue;
+        ++mapped;
+        const auto at = r.leafIndex->leavesAt(std::uint32_t((*pixels)[leaf]));
+        QVERIFY(std::binary_search(at.begin(), at.end(), std::uint32_t(leaf)));
+    }
+    QCOMPARE(r.leafIndex->mappedLeafCount(), mapped);
+    QVERIFY(mapped > pixels->size() / 2);
 }
 
 void DeveloppeeJobTest::shadingsGiveImagesOfTheMapSize()

@@ -2,7 +2,9 @@
 
 #include "stylos/core/util/Stopwatch.h"
 
+#include "stylos/core/annotation/LabelRaster.h"
 #include "stylos/core/image/ImageWriter.h"
+#include "stylos/core/octree/PackedOctree.h"
 
 #include "tasks/ErrorText.h"
 #include "tasks/JobResult.h"
@@ -88,6 +90,16 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
     result.heights = std::make_shared<const core::shading::HeightField>(std::move(made->field));
     result.shaded = std::make_shared<const core::shading::ShadedImage>(std::move(made->shaded));
     result.map = std::move(made->map);
+    if (QFileInfo(m_path).suffix().compare(QStringLiteral("poct"), Qt::CaseInsensitive) == 0) {
+        // The pixel ↔ leaf index for painting: once per développée, here in the background.
+        if (auto octree = core::octree::PackedOctree::open(source)) {
+            auto pixels = core::annotation::leafPixels(*octree, *result.map);
+            if (!pixels && pixels.error().code == core::ErrorCode::Cancelled) return pixels.error();
+            if (pixels)
+                result.leafIndex = std::make_shared<const core::annotation::PixelLeafIndex>(
+                    core::annotation::PixelLeafIndex::build(*pixels, result.map->width(), result.map->height()));
+        }
+    }
     if (progress) progress->update(1.0);
     return result;
 }

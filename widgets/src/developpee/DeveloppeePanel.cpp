@@ -149,6 +149,13 @@ void DeveloppeePanel::clearResult()
     refreshStatus();
 }
 
+void DeveloppeePanel::setPaintBar(QWidget* bar)
+{
+    auto* layout = static_cast<QVBoxLayout*>(this->layout());
+    bar->setParent(this);
+    layout->insertWidget(layout->indexOf(m_view), bar);
+}
+
 QString DeveloppeePanel::statusText() const { return m_status->text(); }
 
 QString DeveloppeePanel::fitSummary(const DeveloppeeResult& result)

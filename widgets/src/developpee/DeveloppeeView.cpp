@@ -2,6 +2,8 @@
 
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
 
+#include "DeveloppeePaintTool.h"
+
 #include <QKeyEvent>
 #include <QLocale>
 #include <QMouseEvent>
@@ -44,11 +46,15 @@ DeveloppeeView::DeveloppeeView(QWidget* parent) : QWidget(parent)
     setCursor(Qt::CrossCursor);
     setMinimumSize(160, 120);
     m_placeholder = tr("No développée yet: select a fragment and press Compute.");
+    m_paint = std::make_unique<DeveloppeePaintTool>(*this);
 }
+
+DeveloppeeView::~DeveloppeeView() = default;
 
 void DeveloppeeView::setDeveloppee(quint64 fragmentId, const QImage& image,
                                    std::shared_ptr<const core::shading::HeightField> heights,
-                                   const core::unroll::UnrollMap& map)
+                                   const core::unroll::UnrollMap& map,
+                                   std::shared_ptr<const core::annotation::PixelLeafIndex> leafIndex)
 {
     assert(heights && heights->width() == image.width() && heights->height() == image.height() &&
            map.width() == image.width() && map.height() == image.height() &&
@@ -59,15 +65,77 @@ void DeveloppeeView::setDeveloppee(quint64 fragmentId, const QImage& image,
     m_pixmap = QPixmap::fromImage(image);
     m_heights = std::move(heights);
     m_map = map;
+    m_leafIndex = leafIndex && leafIndex->width() == image.width() && leafIndex->height() == image.height()
+                      ? std::move(leafIndex)
+                      : nullptr;
+    resetPainting();
     setPieces(nullptr);
     fitToWindow();
     setReadout({});
+    Q_EMIT developpeeChanged();
+}
+
+void DeveloppeeView::resetPainting()
+{
+    m_paint->cancel();
+    m_overlay.clear();
+    m_shades.clear();
+    m_valid.clear();
+}
+
+void DeveloppeeView::setOverlayOpacity(double opacity)
+{
+    m_overlayOpacity = std::clamp(opacity, 0.0, 1.0);
+    update();
+}
+
+void DeveloppeeView::setTool(PaintTool tool)
+{
+    if (tool == m_tool) return;
+    m_paint->cancel();
+    m_tool = tool;
+    setCursor(Qt::CrossCursor);
+    update();
+    Q_EMIT toolChanged(tool);
+}
+
+std::vector<QPointF> DeveloppeeView::polygonInProgress() const
+{
+    std::vector<QPointF> out;
+    for (const auto& p : m_paint->polygon()) out.emplace_back(p.x, p.y);
+    return out;
+}
+
+std::vector<std::uint32_t> DeveloppeeView::wandPixels(std::uint32_t seed) const
+{
+    if (!m_heights) return {};
+    const int w = m_image.width(), h = m_image.height();
+    const std::size_t n = std::size_t(w) * std::size_t(h);
+    if (m_valid.size() != n) {
+        m_valid.resize(n);
+        const auto states = m_heights->states();
+        for (std::size_t i = 0; i < n; ++i) m_valid[i] = states[i] != core::shading::PixelState::Empty;
+    }
+    if (m_wandCriterion == WandCriterion::Height)
+        return core::annotation::floodFill(m_heights->heights(), m_valid, w, h, seed, float(m_wandTolerance));
+    if (m_shades.size() != n) { // the grey shown (premultiplied by coverage: divided back), 0..1
+        m_shades.resize(n);
+        for (int row = 0; row < h; ++row) {
+            const auto* line = reinterpret_cast<const QRgb*>(m_image.constScanLine(row));
+            for (int column = 0; column < w; ++column) {
+                const QRgb c = line[column];
+                m_shades[std::size_t(row) * std::size_t(w) + std::size_t(column)] =
+                    qAlpha(c) > 0 ? float(qGray(c)) / float(qAlpha(c)) : 0.0f;
+            }
+        }
+    }
+    return core::annotation::floodFill(m_shades, m_valid, w, h, seed, float(m_wandTolerance));
 }
 
 bool DeveloppeeView::setResult(const DeveloppeeResult& result)
 {
     if (!result.ok() || !result.heights) return false;
-    setDeveloppee(result.fragmentId, result.image, result.heights, *result.map);
+    setDeveloppee(result.fragmentId, result.image, result.heights, *result.map, result.leafIndex);
     setPieces(result.pieceAt);
     return true;
 }
@@ -115,9 +183,12 @@ void DeveloppeeView::clear()
     m_map.reset();
     m_pieceAt.reset();
     m_outline = {};
+    m_leafIndex.reset();
+    resetPainting();
     m_autoFit = true;
     setReadout({});
     update();
+    Q_EMIT developpeeChanged();
 }
 
 void DeveloppeeView::setPlaceholderText(const QString& text)
@@ -224,12 +295,19 @@ void DeveloppeeView::paintEvent(QPaintEvent*)
         const QRectF target(imageToWidget(source.topLeft()), QSizeF(source.width(), source.height()) * m_zoom);
         painter.setRenderHint(QPainter::SmoothPixmapTransform, m_zoom < 1.0);
         painter.drawPixmap(target, m_pixmap, QRectF(source));
+        if (!m_overlay.isEmpty() && m_overlayOpacity > 0.0 && m_overlay.width() == m_image.width() &&
+            m_overlay.height() == m_image.height()) {
+            painter.setOpacity(m_overlayOpacity);
+            painter.drawImage(target, m_overlay.image(), QRectF(source));
+            painter.setOpacity(1.0);
+        }
         if (!m_outline.isNull()) painter.drawImage(target, m_outline, QRectF(source));
     }
     painter.setPen(QColor(96, 96, 96));
     painter.drawRect(QRectF(m_offset, QSizeF(m_pixmap.size()) * m_zoom));
     drawGuideLines(painter);
     drawMarker(painter);
+    m_paint->draw(painter, m_cursor, m_cursorInside);
     drawOverlays(painter);
 }
 
@@ -333,16 +411,29 @@ void DeveloppeeView::resizeEvent(QResizeEvent* event)
 
 void DeveloppeeView::mousePressEvent(QMouseEvent* event)
 {
+    setFocus(Qt::MouseFocusReason);
+    event->accept();
+    if (event->button() == Qt::LeftButton && event->buttons() == Qt::LeftButton && m_tool != PaintTool::Navigate &&
+        m_paint->press(event->position())) {
+        m_painting = true;
+        return;
+    }
     m_pressPosition = m_lastPosition = event->position().toPoint();
     m_pressButtons = event->buttons();
     m_dragged = false;
-    setFocus(Qt::MouseFocusReason);
-    event->accept();
 }
 
 void DeveloppeeView::mouseMoveEvent(QMouseEvent* event)
 {
     const QPoint position = event->position().toPoint();
+    m_cursor = event->position();
+    m_cursorInside = true;
+    if (m_tool != PaintTool::Navigate) update(); // the brush outline follows
+    if (m_painting && (event->buttons() & Qt::LeftButton)) {
+        m_paint->move(event->position());
+        updateReadout(event->position());
+        return;
+    }
     if (event->buttons() != Qt::NoButton && m_pressButtons != Qt::NoButton) {
         if (!m_dragged && (position - m_pressPosition).manhattanLength() > ClickSlop) {
             m_dragged = true;
@@ -360,6 +451,11 @@ void DeveloppeeView::mouseMoveEvent(QMouseEvent* event)
 
 void DeveloppeeView::mouseReleaseEvent(QMouseEvent* event)
 {
+    if (m_painting && event->button() == Qt::LeftButton) {
+        m_painting = false;
+        m_paint->release(event->position());
+        return;
+    }
     const bool click = !m_dragged && event->button() == Qt::LeftButton && m_pressButtons == Qt::LeftButton;
     m_pressButtons = Qt::NoButton;
     m_dragged = false;
@@ -377,7 +473,10 @@ void DeveloppeeView::mouseReleaseEvent(QMouseEvent* event)
 
 void DeveloppeeView::mouseDoubleClickEvent(QMouseEvent* event)
 {
-    if (event->button() == Qt::LeftButton) fitToWindow();
+    if (event->button() != Qt::LeftButton) return;
+    if (m_tool == PaintTool::Navigate) fitToWindow();
+    else if (m_tool == PaintTool::Lasso) m_paint->doubleClick();
+    else mousePressEvent(event); // a quick second dab or fill
 }
 
 void DeveloppeeView::wheelEvent(QWheelEvent* event)
@@ -393,8 +492,18 @@ void DeveloppeeView::wheelEvent(QWheelEvent* event)
 void DeveloppeeView::keyPressEvent(QKeyEvent* event)
 {
     const QPointF centre(width() / 2.0, height() / 2.0);
+    if (m_paint->key(event->key())) {
+        event->accept();
+        return;
+    }
     switch (event->key()) {
     case Qt::Key_F: fitToWindow(); break;
+    case Qt::Key_N: setTool(PaintTool::Navigate); break;
+    case Qt::Key_B: setTool(PaintTool::Brush); break;
+    case Qt::Key_E: setTool(PaintTool::Eraser); break;
+    case Qt::Key_L: setTool(PaintTool::Lasso); break;
+    case Qt::Key_W: setTool(PaintTool::Wand); break;
+    case Qt::Key_H: setTool(PaintTool::Holes); break;
     case Qt::Key_Plus:
     case Qt::Key_Equal: zoomAbout(centre, WheelStep); break;
     case Qt::Key_Minus: zoomAbout(centre, 1.0 / WheelStep); break;
@@ -406,6 +515,8 @@ void DeveloppeeView::keyPressEvent(QKeyEvent* event)
 void DeveloppeeView::leaveEvent(QEvent* event)
 {
     QWidget::leaveEvent(event);
+    m_cursorInside = false;
+    if (m_tool != PaintTool::Navigate) update();
     setReadout({});
 }
 

@@ -8,10 +8,12 @@
  * result, or none when cancelled; a failure is a result whose error() is a translated message naming the
  * file and the reason. Progress: reading to 0.15, fitting to 0.4, unrolling to 0.7, shading to 1.
  * Memory: the cloud (24 bytes a leaf with normals) until the unroll is done, then the field (5 bytes a
- * pixel), the shading (5 bytes a pixel) and the image (4 bytes a pixel).
+ * pixel), the shading (5 bytes a pixel), the image (4 bytes a pixel) and, for a `.poct`, the pixel ↔ leaf
+ * index of the annotation painting (8 bytes a leaf, 4 a pixel; core::annotation::PixelLeafIndex).
  * Thread-safety: the job is a value; run() and operator() are reentrant and touch no widget.
  * Everything in the result is in the octree's frame (the fragment's own), metres.
  */
+#include "stylos/core/annotation/PixelLeafIndex.h"
 #include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/shading/HeightField.h"
 #include "stylos/core/shading/ShadedImage.h"
@@ -54,6 +56,9 @@ struct DeveloppeeResult {
     /** An assembly's développée (AssemblyDeveloppeeJob): the fragment each pixel shows (row-major, the image's
      *  size; 0 for the drum or none); null for one fragment's. */
     std::shared_ptr<const std::vector<std::uint64_t>> pieceAt;
+    /** The pixel ↔ leaf index of the fragment's octree on this développée's grid (annotation painting and its
+     *  overlay); null when the source is not a `.poct` or for an assembly's développée. */
+    std::shared_ptr<const core::annotation::PixelLeafIndex> leafIndex;
     DeveloppeeTimings timings;
     /** Empty on success; a translated message naming the file and the reason otherwise. */
     QString error;

@@ -37,6 +37,8 @@ public:
     explicit DeveloppeePanel(QWidget* parent = nullptr);
 
     DeveloppeeView* view() const { return m_view; }
+    /** @brief Puts @p bar (the painting bar, owned from then on) between the settings and the view. */
+    void setPaintBar(QWidget* bar);
 
     /** @brief The bar's settings, with the axis guide when "use the axis guide" is on. */
     DeveloppeeSettings settings() const;

@@ -10,13 +10,27 @@
  * pointPicked(fragmentId, map.worldAtPixel(c + 0.5, r + 0.5, h)) — the centre of pixel (c, r) at its
  * height h — and marks that pixel; setMarker(point) draws a marker where map.pixelOf(point) lands.
  *
+ * Annotation (docs/annotation.md): with a pixel ↔ leaf index (DeveloppeeResult::leafIndex) the view paints. It
+ * draws a LabelOverlay (class ids per pixel in the legend's colours, at overlayOpacity()) that someone else
+ * fills (DeveloppeeAnnotator, from the document's labels), and with a paint tool (setTool(); keys B brush,
+ * E eraser, L polygon / lasso, W magic wand, H fill holes, N navigate) a left press paints: it emits
+ * strokeStarted(), then pixelsPainted() once per dab or fill, then strokeFinished() — one press-drag-release
+ * (or one fill) is one stroke. Brush and eraser take the pixels whose centre is within brushSize() / 2 (metres
+ * on the object, through the map's pixel size) of the dragged path; the polygon is made of clicks (closed by a
+ * double-click, Enter or a click on its first vertex; Escape cancels it) or one freehand drag (closed on
+ * release); the wand fills the 4-connected pixels whose height (or shading) is within the tolerance of the
+ * clicked one; "holes" fills what the clicked region encloses with its class. With a paint tool, the middle
+ * and right buttons pan and the wheel zooms as always. The view never changes labels itself.
+ *
  * Coordinates: "image" positions are the UnrollMap's continuous pixel coordinates (pixel (c, r) spans
  * [c, c + 1) × [r, r + 1), row 0 at the top); "widget" positions are logical pixels of this widget;
  * widget = offset + zoom · image. GUI thread only.
  */
+#include "stylos/core/annotation/PixelLeafIndex.h"
 #include "stylos/core/shading/HeightField.h"
 #include "stylos/core/unroll/UnrollMap.h"
 // Q_DECLARE_METATYPE(Eigen::Vector3d) is made there; pointPicked() uses the same type.
+#include "stylos/widgets/developpee/LabelOverlay.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <Eigen/Core>
@@ -27,6 +41,7 @@
 #include <QString>
 #include <QWidget>
 
+#include <algorithm>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -34,6 +49,12 @@
 namespace stylos::widgets {
 
 struct DeveloppeeResult;
+class DeveloppeePaintTool;
+
+/** @brief What a left press does in the développée view. */
+enum class PaintTool { Navigate, Brush, Eraser, Lasso, Wand, Holes };
+/** @brief What the magic wand compares: the unrolled height, or the shading (skydome, light or height grey). */
+enum class WandCriterion { Height, Shading };
 
 class DeveloppeeView : public QWidget {
     Q_OBJECT
@@ -43,14 +64,17 @@ public:
     static constexpr double MaxZoom = 64.0;
 
     explicit DeveloppeeView(QWidget* parent = nullptr);
+    ~DeveloppeeView() override;
 
     /**
      * @brief Shows @p image (any format; grey + alpha from DeveloppeeJob) of fragment @p fragmentId, with
      *        its @p heights and @p map (same size as the image; asserted) and fits it to the window. The
      *        marker is kept (placed again through the new map) for the same fragment, dropped for another.
+     *        @p leafIndex (the same grid, else ignored) makes it paintable. Emits developpeeChanged().
      */
     void setDeveloppee(quint64 fragmentId, const QImage& image,
-                       std::shared_ptr<const core::shading::HeightField> heights, const core::unroll::UnrollMap& map);
+                       std::shared_ptr<const core::shading::HeightField> heights, const core::unroll::UnrollMap& map,
+                       std::shared_ptr<const core::annotation::PixelLeafIndex> leafIndex = nullptr);
     /** @brief setDeveloppee() from a successful job result; a failed one is ignored (returns false). */
     bool setResult(const DeveloppeeResult& result);
     /** @brief Shows nothing (the placeholder text). */
@@ -60,6 +84,38 @@ public:
     quint64 fragmentId() const { return m_fragmentId; }
     const std::optional<core::unroll::UnrollMap>& map() const { return m_map; }
     const QImage& image() const { return m_image; }
+    const std::shared_ptr<const core::shading::HeightField>& heights() const { return m_heights; }
+    /** @brief The pixel ↔ leaf index of the shown développée; null when it cannot be painted. */
+    const std::shared_ptr<const core::annotation::PixelLeafIndex>& leafIndex() const { return m_leafIndex; }
+    bool canPaint() const { return m_leafIndex != nullptr; }
+
+    // Annotation overlay (filled from outside; see the file comment).
+    LabelOverlay& overlay() { return m_overlay; }
+    const LabelOverlay& overlay() const { return m_overlay; }
+    /** @brief Redraws after the overlay changed (only the screen; the ids are the overlay's). */
+    void overlayChanged() { update(); }
+    /** @brief 0 (hidden) to 1 (opaque); 0.6 at first. */
+    void setOverlayOpacity(double opacity);
+    double overlayOpacity() const { return m_overlayOpacity; }
+
+    // Painting tools.
+    void setTool(PaintTool tool);
+    PaintTool tool() const { return m_tool; }
+    /** @brief The class the brush, polygon and wand paint (0: none chosen, they do nothing). */
+    void setActiveClass(std::uint8_t classId) { m_activeClass = classId; }
+    std::uint8_t activeClass() const { return m_activeClass; }
+    /** @brief Brush and eraser diameter on the object, metres (> 0). */
+    void setBrushSize(double metres) { m_brushSize = std::max(1e-6, metres); update(); }
+    double brushSize() const { return m_brushSize; }
+    void setWandCriterion(WandCriterion criterion) { m_wandCriterion = criterion; }
+    WandCriterion wandCriterion() const { return m_wandCriterion; }
+    /** @brief The wand's tolerance: metres for Height, a fraction of the grey range (0..1) for Shading. */
+    void setWandTolerance(double tolerance) { m_wandTolerance = std::max(0.0, tolerance); }
+    double wandTolerance() const { return m_wandTolerance; }
+    /** @brief The pixels the wand takes from @p seed with the current criterion and tolerance. */
+    std::vector<std::uint32_t> wandPixels(std::uint32_t seed) const;
+    /** @brief The polygon being drawn (image positions); empty when none. */
+    std::vector<QPointF> polygonInProgress() const;
 
     /** @brief The text shown when there is nothing to show. */
     void setPlaceholderText(const QString& text);
@@ -121,6 +177,15 @@ Q_SIGNALS:
     void piecePicked(quint64 fragmentId);
     /** @brief The readout under the cursor changed (empty when the cursor left the image). */
     void readoutChanged(const QString& text);
+    /** @brief Another développée (or none) is shown: the overlay was emptied. */
+    void developpeeChanged();
+    /** @brief setTool() (or its key) chose another tool. */
+    void toolChanged(stylos::widgets::PaintTool tool);
+    /** @brief A stroke begins: the pixelsPainted() until strokeFinished() are one undo step. */
+    void strokeStarted();
+    /** @brief Pixels (row-major, ascending) to give @p classId (0: erase). */
+    void pixelsPainted(const std::vector<std::uint32_t>& pixels, std::uint8_t classId);
+    void strokeFinished();
 
 protected:
     void paintEvent(QPaintEvent* event) override;
@@ -134,6 +199,7 @@ protected:
     void leaveEvent(QEvent* event) override;
 
 private:
+    void resetPainting();
     void updateReadout(const QPointF& widget);
     void setReadout(const QString& text);
     void drawMarker(class QPainter& painter) const;
@@ -161,6 +227,21 @@ private:
     QPoint m_lastPosition;
     Qt::MouseButtons m_pressButtons;
     bool m_dragged = false;
+    bool m_painting = false; ///< the left press went to the paint tool
+    QPointF m_cursor;        ///< the last mouse position (widget)
+    bool m_cursorInside = false;
+
+    std::shared_ptr<const core::annotation::PixelLeafIndex> m_leafIndex;
+    LabelOverlay m_overlay;
+    double m_overlayOpacity = 0.6;
+    PaintTool m_tool = PaintTool::Navigate;
+    std::uint8_t m_activeClass = 0;
+    double m_brushSize = 0.01;
+    WandCriterion m_wandCriterion = WandCriterion::Height;
+    double m_wandTolerance = 0.001;
+    mutable std::vector<float> m_shades;        ///< the wand's shading values, made on first use
+    mutable std::vector<std::uint8_t> m_valid;  ///< pixels with a height, made on first use
+    std::unique_ptr<DeveloppeePaintTool> m_paint;
 };
 
 } // namespace stylos::widgets
