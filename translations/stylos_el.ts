@@ -197,8 +197,8 @@
         <translation>το --paint χρησιμοποιείται με το --grab</translation>
     </message>
     <message>
-        <source>--paint does not go with --dock or --gizmo</source>
-        <translation>το --paint δεν συνδυάζεται με το --dock ή το --gizmo</translation>
+        <source>--paint does not go with --dock, --gizmo or --annotation</source>
+        <translation>το --paint δεν συνδυάζεται με --dock, --gizmo ή --annotation</translation>
     </message>
 </context>
 <context>
@@ -278,10 +278,6 @@
         <translation>Επίπεδο λεπτομέρειας</translation>
     </message>
     <message>
-        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), or in the scan&apos;s colours</source>
-        <translation>Πώς φωτίζονται τα σημεία: από ένα φως στο μάτι (προβολέας), από τον ουρανό που βλέπει κάθε κελί (θόλος ουρανού· χρειάζεται Εργαλεία › Υπολογισμός θόλου ουρανού, αλλιώς ο προβολέας) ή με τα χρώματα της σάρωσης</translation>
-    </message>
-    <message>
         <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
         <translation>Μέγεθος των σημείων που σχεδιάζονται, ως πολλαπλάσιο του μεγέθους του κελιού τους στο οκταδικό δέντρο</translation>
     </message>
@@ -306,10 +302,6 @@
         <translation>Σχολιασμός</translation>
     </message>
     <message>
-        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. Annotation tints each cell by its class in the annotation layer below</source>
-        <translation>Ο ουράνιος θόλος χρειάζεται Εργαλεία › Υπολογισμός ουράνιου θόλου· χωρίς αυτόν ένα θραύσμα φωτίζεται από τον προβολέα. Ο Σχολιασμός χρωματίζει κάθε κυψέλη κατά την κατηγορία της στο επίπεδο σχολιασμού παρακάτω</translation>
-    </message>
-    <message>
         <source>Material / condition</source>
         <translation>Υλικό / κατάσταση</translation>
     </message>
@@ -324,6 +316,10 @@
     <message>
         <source>Annotation layer</source>
         <translation>Επίπεδο σχολιασμού</translation>
+    </message>
+    <message>
+        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), in the scan&apos;s colours, by eye-dome lighting (the relief from the depth alone), or tinted by each cell&apos;s class in the annotation layer below</source>
+        <translation>Πώς φωτίζονται τα σημεία: με φως στο μάτι (προβολέας), με τον ουρανό που βλέπει κάθε κελί (skydome· απαιτεί Εργαλεία › Υπολογισμός skydome, αλλιώς ο προβολέας), με τα χρώματα της σάρωσης, με φωτισμό eye-dome (το ανάγλυφο μόνο από το βάθος), ή χρωματισμένα κατά την κλάση κάθε κελιού στο στρώμα σχολιασμού παρακάτω</translation>
     </message>
 </context>
 <context>
@@ -1870,11 +1866,8 @@
         <translation>Δεν ήταν δυνατή η αποθήκευση των σχολίων του %1 στο %2: %3.</translation>
     </message>
     <message>
+        <source></source>
         <translation>Αφαίρεση της κλάσης %1</translation>
-    </message>
-    <message>
-        <source>Could not save the annotations of %1 into %2: %3.</source>
-        <translation>Δεν ήταν δυνατή η αποθήκευση των σχολιασμών του %1 στο %2: %3.</translation>
     </message>
 </context>
 <context>

@@ -186,6 +186,7 @@
     </message>
     <message>
         <source>--annotation goes with --grab alone</source>
+        <translation></translation>
     </message>
     <message>
         <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer).</source>
@@ -196,7 +197,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>--paint does not go with --dock or --gizmo</source>
+        <source>--paint does not go with --dock, --gizmo or --annotation</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -277,10 +278,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), or in the scan&apos;s colours</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
         <translation type="unfinished"></translation>
     </message>
@@ -305,10 +302,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. Annotation tints each cell by its class in the annotation layer below</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Material / condition</source>
         <translation type="unfinished"></translation>
     </message>
@@ -322,6 +315,10 @@
     </message>
     <message>
         <source>Annotation layer</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), in the scan&apos;s colours, by eye-dome lighting (the relief from the depth alone), or tinted by each cell&apos;s class in the annotation layer below</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -197,8 +197,8 @@
         <translation>--paint s’emploie avec --grab</translation>
     </message>
     <message>
-        <source>--paint does not go with --dock or --gizmo</source>
-        <translation>--paint ne va ni avec --dock ni avec --gizmo</translation>
+        <source>--paint does not go with --dock, --gizmo or --annotation</source>
+        <translation>--paint ne va ni avec --dock, ni avec --gizmo, ni avec --annotation</translation>
     </message>
 </context>
 <context>
@@ -278,10 +278,6 @@
         <translation>Niveau de détail</translation>
     </message>
     <message>
-        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), or in the scan&apos;s colours</source>
-        <translation>Comment les points sont éclairés : par une lumière à l&apos;œil (phare), par le ciel que voit chaque cellule (skydome ; il faut Outils › Calculer le skydome, sinon le phare), ou dans les couleurs du scan</translation>
-    </message>
-    <message>
         <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
         <translation>Taille des points dessinés, en multiple de la taille de leur cellule d&apos;octree</translation>
     </message>
@@ -306,10 +302,6 @@
         <translation>Annotation</translation>
     </message>
     <message>
-        <source>Skydome needs Tools › Compute skydome; without it a fragment is lit by the headlight. Annotation tints each cell by its class in the annotation layer below</source>
-        <translation>Le skydome demande Outils › Calculer le skydome ; sans lui, un fragment est éclairé par la lampe frontale. Annotation teinte chaque cellule selon sa classe dans la couche d’annotation ci-dessous</translation>
-    </message>
-    <message>
         <source>Material / condition</source>
         <translation>Matériau / état</translation>
     </message>
@@ -324,6 +316,10 @@
     <message>
         <source>Annotation layer</source>
         <translation>Couche d’annotation</translation>
+    </message>
+    <message>
+        <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), in the scan&apos;s colours, by eye-dome lighting (the relief from the depth alone), or tinted by each cell&apos;s class in the annotation layer below</source>
+        <translation>Comment les points sont éclairés : par une lumière à l’œil (phare), par le ciel que voit chaque cellule (skydome ; demande Outils › Calculer le skydome, sinon le phare), dans les couleurs du relevé, par éclairage eye-dome (le relief tiré de la seule profondeur), ou teintés par la classe de chaque cellule dans la couche d’annotation ci-dessous</translation>
     </message>
 </context>
 <context>
