@@ -171,6 +171,12 @@ void DisplaySettingsWidget::retranslateUi()
                                       ? m_form->itemAt(static_cast<int>(row), QFormLayout::FieldRole)->widget()->toolTip()
                                       : m_level->toolTip());
     }
+    // The combo boxes as wide as their longest item in this language, as a hard minimum, which the form
+    // layout honours when it decides to put a label above its field.
+    for (QComboBox* box : {m_shading, m_layer, m_detail}) {
+        box->setMinimumWidth(0);
+        box->setMinimumWidth(box->minimumSizeHint().width());
+    }
 }
 
 } // namespace stylos::app

@@ -323,7 +323,7 @@ void WindowUsabilityTest::docksShowEveryLabelInEveryLanguage()
         auto window = makeWindow();
         importDrum(*window);
         window->sceneDock().selectFragment(window->document().scene().fragments().front().id);
-        QCoreApplication::processEvents();
+        QTest::qWait(100); // the layout requests settle: contents → the scroll area's minimum → the dock → the window
         QWidget* dock = &window->propertiesDock();
         // The dock's contents fit its width: nothing cut on the right.
         auto* scroll = dock->findChild<QScrollArea*>();
