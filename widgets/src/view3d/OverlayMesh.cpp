@@ -1,4 +1,5 @@
 #include "view3d/OverlayMesh.h"
+#include "view3d/ShaderProgram.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLShaderProgram>
@@ -36,11 +37,8 @@ OverlayMesh::~OverlayMesh() = default;
 bool OverlayMesh::initialize()
 {
     initializeOpenGLFunctions();
-    auto program = std::make_unique<QOpenGLShaderProgram>();
-    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, VertexShader) ||
-        !program->addShaderFromSourceCode(QOpenGLShader::Fragment, FragmentShader) || !program->link())
-        return false;
-    m_program = std::move(program);
+    m_program = linkShaderProgram(VertexShader, FragmentShader);
+    if (!m_program) return false;
     m_vao = std::make_unique<QOpenGLVertexArrayObject>();
     m_vao->create();
     QOpenGLVertexArrayObject::Binder bind(m_vao.get());

@@ -1,4 +1,5 @@
 #include "stylos/widgets/view3d/PointRenderer.h"
+#include "view3d/ShaderProgram.h"
 
 #include <QOpenGLBuffer>
 #include <QOpenGLShaderProgram>
@@ -129,13 +130,8 @@ PointRenderer::~PointRenderer() = default;
 bool PointRenderer::initialize()
 {
     initializeOpenGLFunctions();
-    auto program = std::make_unique<QOpenGLShaderProgram>();
-    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, VertexShader) ||
-        !program->addShaderFromSourceCode(QOpenGLShader::Fragment, FragmentShader) || !program->link()) {
-        m_log = program->log();
-        return false;
-    }
-    m_program = std::move(program);
+    m_program = linkShaderProgram(VertexShader, FragmentShader, &m_log);
+    if (!m_program) return false;
     m_program->bind();
     m_program->setUniformValue("uLabels", 0);        // texture units
     m_program->setUniformValue("uClassColours", 1);

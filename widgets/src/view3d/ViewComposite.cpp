@@ -1,4 +1,5 @@
 #include "stylos/widgets/view3d/ViewComposite.h"
+#include "view3d/ShaderProgram.h"
 
 #include <QOpenGLShaderProgram>
 
@@ -78,11 +79,8 @@ ViewComposite::~ViewComposite() = default;
 bool ViewComposite::initialize()
 {
     initializeOpenGLFunctions();
-    auto program = std::make_unique<QOpenGLShaderProgram>();
-    if (!program->addShaderFromSourceCode(QOpenGLShader::Vertex, VertexShader) ||
-        !program->addShaderFromSourceCode(QOpenGLShader::Fragment, FragmentShader) || !program->link())
-        return false;
-    m_program = std::move(program);
+    m_program = linkShaderProgram(VertexShader, FragmentShader);
+    if (!m_program) return false;
     glGenVertexArrays(1, &m_vao);
     return true;
 }
