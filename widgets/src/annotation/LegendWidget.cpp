@@ -80,8 +80,9 @@ LegendWidget::LegendWidget(SceneDocument& document, ClassMeasures* measures, QWi
     m_tree->setRootIsDecorated(false);
     m_tree->setUniformRowHeights(true);
     m_tree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
-    m_tree->header()->setSectionResizeMode(HatchColumn, QHeaderView::Stretch); // the names keep their width
-    for (int column : {NameColumn, CellsColumn, AreaColumn})
+    // Every column as wide as its contents (the hatch boxes included: their longest name in Greek is cut
+    // otherwise); a narrow dock scrolls sideways rather than cutting a word.
+    for (int column : {NameColumn, HatchColumn, CellsColumn, AreaColumn})
         m_tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
     m_tree->header()->setStretchLastSection(false);
     m_tree->setMinimumWidth(340);
