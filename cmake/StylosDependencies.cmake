@@ -13,6 +13,8 @@ find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp REQUIRED)
 add_library(stylos_nanoflann INTERFACE)
 target_include_directories(stylos_nanoflann SYSTEM INTERFACE ${NANOFLANN_INCLUDE_DIR})
 
+# Qt Gui and Svg draw and write plates (stylos_plate), also for stylos-cli; the widgets only for the workbench.
+find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Svg)
 if(STYLOS_BUILD_GUI)
-  find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Widgets OpenGL OpenGLWidgets Concurrent LinguistTools Test)
+  find_package(Qt6 6.4 REQUIRED COMPONENTS Core Gui Svg Widgets OpenGL OpenGLWidgets Concurrent LinguistTools Test)
 endif()

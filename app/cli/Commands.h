@@ -15,5 +15,6 @@ int runGuides(const std::vector<std::string>& args);
 int runDock(const std::vector<std::string>& args);
 int runAnnotate(const std::vector<std::string>& args);
 int runExport(const std::vector<std::string>& args);
+int runPlate(const std::vector<std::string>& args);
 
 } // namespace stylos::cli

@@ -30,6 +30,8 @@ constexpr Command Commands[] = {
     {"dock", runDock, "dock FRAGMENT --drum DRUM", "dock a fragment against a drum's guides: flute snap and registration"},
     {"annotate", runAnnotate, "annotate IN.poct ...", "label the leaves from a label raster painted on a développée"},
     {"export", runExport, "export IN.poct -o OUT.ply", "one point per leaf with its annotation and ambient layers"},
+    {"plate", runPlate, "plate IN -o OUT.pdf", "a publication plate at 1:N: développée or orthographic view, scale bar,\n"
+                                           "                         legend, caption; PDF, SVG, TIFF or PNG"},
 };
 
 void printUsage()

@@ -1,0 +1,68 @@
+#pragma once
+/** @file
+ * @brief Where everything of a plate goes on the page, in millimetres from the page's top-left corner: each
+ *        panel's image at its exact size (the object's extent · 1000 / N), its letter, its "1:N" text, its scale
+ *        bar (core/plate/ScaleBar.h) and, for a développée, its angle ruler; then the legend and the caption.
+ *        Pure geometry: the painter (plate/PlatePainter) draws what this places.
+ *
+ * Packing: panels without "at_mm" go in rows inside the print area (page less margins), left to right while
+ * they fit, each row centred; a panel block is its letter band, its image, its ruler (développée) and its bar
+ * band. Then the legend (one row per class) and the caption band, under the panels. Panels with "at_mm" keep
+ * their place and must lie inside the page.
+ * Failure modes: InvalidArgument when something does not fit — the message says what and how big, and the
+ * smallest scale that would fit a panel too large on its own ("panel A (développée, 1:10) is 314.2 × 80.1 mm;
+ * the A4 print area is 180.0 × 267.0 mm: use 1:18 or smaller"); nothing is placed then.
+ * Thread-safety: pure function.
+ */
+#include "stylos/core/plate/PlateSpec.h"
+#include "stylos/core/plate/ScaleBar.h"
+
+#include <array>
+#include <span>
+#include <string>
+#include <vector>
+
+namespace stylos::core::plate {
+
+struct RectMm {
+    double x = 0, y = 0, w = 0, h = 0;
+    double right() const { return x + w; }
+    double bottom() const { return y + h; }
+};
+
+/** Heights of the bands around an image, mm. */
+inline constexpr double kLetterBandMm = 7.0;
+inline constexpr double kRulerBandMm = 7.0;
+inline constexpr double kBarBandMm = 11.0;
+inline constexpr double kPanelGapMm = 6.0;
+inline constexpr double kLegendRowMm = 5.5;
+
+struct PanelBox {
+    RectMm image;          ///< the panel's image at its exact size
+    std::string letter;    ///< "A", "B", … ; empty for a plate of one panel
+    std::string scaleText; ///< "1:10"
+    ScaleBar bar;          ///< segments == 0: no bar
+    RectMm barRect;        ///< the bar itself: x, y top-left, w = bar.lengthMm, h its thickness
+    bool ruler = false;    ///< an angle ruler 0–360° under the image (développées)
+    RectMm rulerRect;      ///< its band
+};
+
+struct PlateLayout {
+    PageSize page;
+    RectMm printArea;
+    std::vector<PanelBox> panels;
+    RectMm legend;         ///< h = 0: no legend
+    RectMm caption;        ///< h = 0: no caption
+};
+
+/**
+ * @brief Places @p spec's panels, whose images are @p imageMm (width, height on paper, mm, one per panel), with
+ *        a legend of @p legendRows rows (0: none) and a caption band of @p captionMm (0: none).
+ */
+Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
+                                double captionMm);
+
+/** @brief "1:10", "1:2.5". */
+std::string scaleText(double scale);
+
+} // namespace stylos::core::plate

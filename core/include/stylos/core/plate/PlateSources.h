@@ -1,0 +1,75 @@
+#pragma once
+/** @file
+ * @brief What a plate is made from, and each panel's picture at print resolution.
+ *
+ * Sources: a project (`.stylos`: its fragments with their world poses, visibility and legend), a packed octree
+ * (`.poct`: one fragment at the identity) or a point file (one fragment; its octree is built at depth 12 into
+ * @p scratch on demand, for 3D panels only — a développée reads the points directly).
+ *
+ * renderPanel: a panel at 1:N and D dpi has pixels of P = N · 25.4 / D mm on the object.
+ * - Développée (of the named fragment, or the first): computed at its own pixel size (the sampling spacing),
+ *   then resampled to round(2πR / P) × round(height / P) plate pixels (periodic along the circumference); it is
+ *   placed exactly 2πR · 1000 / N mm wide on paper. The classes of the layer, when asked, come from the octree's
+ *   layer through the développée's map (majority per pixel, annotation/LabelRaster.h), resampled nearest.
+ * - 3D (front, back, …; every visible fragment, or the named one): renderOrtho at exactly P.
+ * Then the classes tint the picture in legend colours unless the panel asks for hatches.
+ * Failure modes: the readers' and computeDeveloppee's errors (naming the file); InvalidArgument for a fragment
+ * name not in the project, a panel whose octree is missing (naming the fragment and its path), labels asked of
+ * a point file; OutOfBudget when the picture would be over @p maxPixels (what size and the limit).
+ * Thread-safety: reentrant.
+ */
+#include "stylos/core/annotation/Legend.h"
+#include "stylos/core/plate/PanelImage.h"
+#include "stylos/core/plate/PlateSpec.h"
+#include "stylos/core/scene/Pose.h"
+#include "stylos/core/util/Progress.h"
+#include "stylos/core/util/Result.h"
+
+#include <array>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+namespace stylos::core::plate {
+
+struct PlateFragment {
+    std::string name;
+    std::filesystem::path path;     ///< the .poct, or the point file
+    bool isOctree = true;
+    bool missing = false;           ///< a project's octree that was not found
+    scene::Pose pose;               ///< fragment → scene
+    bool visible = true;
+};
+
+struct PlateSources {
+    std::string source;                       ///< the file the user named
+    std::vector<PlateFragment> fragments;
+    annotation::Legend legend = annotation::Legend::defaults();
+    bool isProject = false;
+};
+
+/** @brief Reads @p path as a project, an octree or a point file (by content and extension). */
+Result<PlateSources> readPlateSources(const std::filesystem::path& path);
+
+struct RenderedPanel {
+    PanelImage image;                  ///< at the plate's pixels, tinted unless hatched
+    std::array<double, 2> imageMm{};   ///< its size on paper
+    double pixelSizeM = 0;             ///< on the object, per plate pixel
+    double naturalPixelM = 0;          ///< développée: the pixel size it was computed at
+    std::uint64_t leaves = 0;          ///< 3D: leaves drawn
+};
+
+struct PanelRenderOptions {
+    int dpi = 600;
+    std::filesystem::path scratch;     ///< a folder for octrees built from point files
+    std::uint64_t maxPixels = 600'000'000;
+    unsigned threads = 0;
+};
+
+/** @brief The object's pixel size at 1:@p scale and @p dpi: scale · 0.0254 / dpi metres. */
+inline double printPixelSize(double scale, int dpi) { return scale * 0.0254 / double(dpi); }
+
+Result<RenderedPanel> renderPanel(const PlateSources& sources, const PanelSpec& panel, const PanelRenderOptions& options,
+                                  ProgressSink* progress = nullptr);
+
+} // namespace stylos::core::plate

@@ -1,0 +1,139 @@
+// Placing a plate's panels, bars, rulers, legend and caption on the page.
+#include "stylos/core/plate/PlateLayout.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace stylos::core::plate {
+
+namespace {
+
+std::string mm(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%.1f", value);
+    return text;
+}
+
+double blockHeight(const PanelSpec& panel, double imageH)
+{
+    return kLetterBandMm + imageH + (panel.view == PanelView::Developpee ? kRulerBandMm : 0.0) + kBarBandMm;
+}
+
+/** Fills the bands of a panel whose image's top-left is (x, y). */
+PanelBox place(const PanelSpec& panel, double x, double y, const std::array<double, 2>& size, const std::string& letter)
+{
+    PanelBox box;
+    box.letter = letter;
+    box.scaleText = scaleText(panel.scale);
+    box.image = {x, y, size[0], size[1]};
+    double below = box.image.bottom();
+    if (panel.view == PanelView::Developpee) {
+        box.ruler = true;
+        box.rulerRect = {x, below, size[0], kRulerBandMm};
+        below += kRulerBandMm;
+    }
+    box.bar = chooseScaleBar(panel.scale);
+    // Labels sit above the bar (4 mm), the bar is 1.5 mm thick.
+    box.barRect = {x, below + 5.0, box.bar.lengthMm, 1.5};
+    return box;
+}
+
+} // namespace
+
+std::string scaleText(double scale)
+{
+    char text[48];
+    std::snprintf(text, sizeof text, "1:%g", scale);
+    return text;
+}
+
+Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
+                                double captionMm)
+{
+    PlateLayout out;
+    out.page = spec.orientedPage();
+    const double m = spec.marginMm;
+    out.printArea = {m, m, out.page.widthMm - 2 * m, out.page.heightMm - 2 * m};
+    const RectMm& area = out.printArea;
+    const std::string areaText = mm(area.w) + " × " + mm(area.h) + " mm";
+    const std::string pageText = "the " + spec.pageName + (spec.landscape ? " landscape" : "") + " print area is " + areaText;
+    if (imageMm.size() != spec.panels.size())
+        return Error{ErrorCode::InvalidArgument, "layoutPlate: one image size per panel is needed"};
+    const bool letters = spec.panels.size() > 1;
+
+    // Panels too large on their own.
+    for (std::size_t i = 0; i < spec.panels.size(); ++i) {
+        const PanelSpec& p = spec.panels[i];
+        const auto& s = imageMm[i];
+        const double needW = s[0], needH = blockHeight(p, s[1]);
+        if (needW <= area.w + 1e-9 && needH <= area.h + 1e-9) continue;
+        const double fixedH = needH - s[1];
+        const double factor = std::max(s[0] / area.w, s[1] / std::max(1e-9, area.h - fixedH));
+        const std::string name = letters ? std::string(1, char('A' + i)) + " " : std::string();
+        return Error{ErrorCode::InvalidArgument,
+                     "panel " + name + "(" + panelViewName(p.view) + ", " + scaleText(p.scale) + ") is " + mm(s[0]) +
+                         " × " + mm(s[1]) + " mm; " + pageText + ": use " + scaleText(std::ceil(p.scale * factor)) +
+                         " or smaller, or a larger page"};
+    }
+
+    // Rows of stacked panels.
+    double y = area.y;
+    std::vector<std::size_t> row;
+    double rowW = 0, rowH = 0;
+    out.panels.resize(spec.panels.size());
+    auto flush = [&]() {
+        double x = area.x + 0.5 * (area.w - rowW);
+        for (const std::size_t i : row) {
+            const std::string letter = letters ? std::string(1, char('A' + i)) : std::string();
+            out.panels[i] = place(spec.panels[i], x, y + kLetterBandMm, imageMm[i], letter);
+            x += imageMm[i][0] + kPanelGapMm;
+        }
+        if (!row.empty()) y += rowH + kPanelGapMm;
+        row.clear();
+        rowW = rowH = 0;
+    };
+    for (std::size_t i = 0; i < spec.panels.size(); ++i) {
+        const PanelSpec& p = spec.panels[i];
+        if (p.atMm) {
+            const auto [x, top] = *p.atMm;
+            const std::string letter = letters ? std::string(1, char('A' + i)) : std::string();
+            out.panels[i] = place(p, x, top, imageMm[i], letter);
+            const PanelBox& b = out.panels[i];
+            const double bottom = b.barRect.bottom() + 4.0;
+            if (x < 0 || top - kLetterBandMm < 0 || std::max(b.image.right(), b.barRect.right()) > out.page.widthMm + 1e-9 ||
+                bottom > out.page.heightMm + 1e-9)
+                return Error{ErrorCode::InvalidArgument, "panel " + letter + " at (" + mm(x) + ", " + mm(top) + ") mm is " +
+                                                             mm(b.image.w) + " × " + mm(bottom - top) +
+                                                             " mm with its bands and leaves the " + mm(out.page.widthMm) +
+                                                             " × " + mm(out.page.heightMm) + " mm page"};
+            continue;
+        }
+        const double w = imageMm[i][0], h = blockHeight(p, imageMm[i][1]);
+        if (!row.empty() && rowW + kPanelGapMm + w > area.w + 1e-9) flush();
+        rowW += (row.empty() ? 0.0 : kPanelGapMm) + w;
+        rowH = std::max(rowH, h);
+        row.push_back(i);
+    }
+    flush();
+    // The stacked panels' bottom (placed ones count too, so the legend goes under everything).
+    double bottom = area.y;
+    for (const PanelBox& b : out.panels) bottom = std::max(bottom, b.barRect.bottom() + 4.0);
+    if (legendRows > 0) {
+        out.legend = {area.x, bottom + 2.0, area.w, kLegendRowMm * double(legendRows)};
+        bottom = out.legend.bottom() + 2.0;
+    }
+    if (captionMm > 0) {
+        out.caption = {area.x, bottom + 2.0, area.w, captionMm};
+        bottom = out.caption.bottom();
+    }
+    if (bottom > area.bottom() + 1e-9)
+        return Error{ErrorCode::InvalidArgument, "the panels" + std::string(legendRows > 0 ? ", the legend" : "") +
+                                                     (captionMm > 0 ? " and the caption" : "") + " need " +
+                                                     mm(bottom - area.y) + " mm of height; " + pageText +
+                                                     ": use a smaller scale, a larger page or landscape"};
+    return out;
+}
+
+} // namespace stylos::core::plate

@@ -1,0 +1,36 @@
+// Rendering a plate's panels and placing them with the legend and the caption.
+#include "stylos/plate/PlateComposer.h"
+
+#include "stylos/core/util/SubProgress.h"
+
+namespace stylos::plate {
+
+namespace cp = core::plate;
+
+core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const cp::PlateSpec& spec,
+                                        const cp::PanelRenderOptions& options, core::ProgressSink* progress)
+{
+    if (auto s = spec.validate(sources.source); !s) return s.error();
+    PlateContent plate;
+    plate.spec = spec;
+    plate.legend = sources.legend;
+    cp::PanelRenderOptions o = options;
+    o.dpi = spec.dpi;
+    std::vector<std::array<double, 2>> sizes;
+    const double share = 1.0 / double(spec.panels.size());
+    for (std::size_t i = 0; i < spec.panels.size(); ++i) {
+        core::SubProgress part(progress, share * double(i), share * double(i + 1));
+        auto panel = cp::renderPanel(sources, spec.panels[i], o, &part);
+        if (!panel) return panel.error();
+        sizes.push_back(panel->imageMm);
+        plate.panels.push_back(std::move(panel).value());
+    }
+    const double width = spec.orientedPage().widthMm - 2 * spec.marginMm;
+    auto layout = cp::layoutPlate(spec, sizes, legendRows(spec, plate.panels, plate.legend),
+                                  captionHeightMm(QString::fromStdString(spec.caption), width));
+    if (!layout) return layout.error();
+    plate.layout = std::move(layout).value();
+    return plate;
+}
+
+} // namespace stylos::plate

@@ -1,0 +1,326 @@
+// Drawing a composed plate in millimetres: panels, hatches, letters, bars, rulers, triads, legend, caption.
+#include "stylos/plate/PlatePainter.h"
+
+#include "stylos/core/plate/HatchLines.h"
+#include "stylos/core/plate/OrthoRender.h"
+
+#include <QFontMetricsF>
+#include <QPainter>
+#include <QPainterPath>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+namespace stylos::plate {
+
+namespace {
+
+namespace cp = core::plate;
+namespace ann = core::annotation;
+
+constexpr double kPt = 25.4 / 72.0;          // mm per point
+constexpr double kThinMm = 0.3 * kPt * 1.2;  // a little over 0.3 pt
+constexpr double kHatchSpacingMm = 1.6;
+constexpr double kHatchPenMm = 0.18;
+constexpr double kLegendColumnMm = 60.0;
+
+/** Draws @p text with its baseline-left (or aligned box) at @p at (mm), @p pt points high, in device pixels so
+ *  glyphs are laid out at the device's resolution. */
+void text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bold = false, bool serif = false,
+          Qt::Alignment align = Qt::AlignLeft)
+{
+    const QTransform t = p.transform();
+    const double scale = std::sqrt(std::abs(t.determinant()));
+    QFont font(serif ? QStringLiteral("DejaVu Serif") : QStringLiteral("DejaVu Sans"));
+    font.setPixelSize(std::max(1, int(std::lround(pt * kPt * scale))));
+    font.setBold(bold);
+    font.setHintingPreference(QFont::PreferNoHinting);
+    p.save();
+    p.resetTransform();
+    p.setFont(font);
+    p.setPen(Qt::black);
+    const QPointF d = t.map(at);
+    const QFontMetricsF m(font);
+    double x = d.x();
+    if (align & Qt::AlignHCenter) x -= 0.5 * m.horizontalAdvance(s);
+    else if (align & Qt::AlignRight) x -= m.horizontalAdvance(s);
+    p.drawText(QPointF(x, d.y()), s);
+    p.restore();
+}
+
+QPen pen(double widthMm, const QColor& colour = Qt::black)
+{
+    QPen p(colour, widthMm);
+    p.setCapStyle(Qt::FlatCap);
+    p.setJoinStyle(Qt::MiterJoin);
+    return p;
+}
+
+void arrow(QPainter& p, const QPointF& from, const QPointF& to)
+{
+    p.setPen(pen(kThinMm * 1.5));
+    p.drawLine(from, to);
+    const QPointF d = to - from;
+    const double len = std::hypot(d.x(), d.y());
+    if (len <= 0) return;
+    const QPointF u = d / len, n(-u.y(), u.x());
+    QPainterPath head;
+    head.moveTo(to);
+    head.lineTo(to - 1.6 * u + 0.7 * n);
+    head.lineTo(to - 1.6 * u - 0.7 * n);
+    head.closeSubpath();
+    p.fillPath(head, Qt::black);
+}
+
+QString viewTitle(const cp::PanelSpec& panel)
+{
+    const QString shading = QString::fromLatin1(cp::panelShadingName(panel.shading));
+    if (panel.view == cp::PanelView::Developpee) return QStringLiteral("développée, %1").arg(shading);
+    return QStringLiteral("%1 view, %2").arg(QString::fromLatin1(cp::panelViewName(panel.view)), shading);
+}
+
+void drawBar(QPainter& p, const cp::PanelBox& box)
+{
+    const cp::ScaleBar& bar = box.bar;
+    if (bar.segments <= 0) return;
+    const QRectF r(box.barRect.x, box.barRect.y, box.barRect.w, box.barRect.h);
+    const double seg = r.width() / bar.segments;
+    for (int i = 0; i < bar.segments; ++i) {
+        const QRectF s(r.x() + i * seg, r.y(), seg, r.height());
+        p.fillRect(s, i % 2 == 0 ? Qt::black : Qt::white);
+    }
+    p.setPen(pen(kThinMm));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(r);
+    const bool every = seg >= 8.0;
+    for (int i = 0; i <= bar.segments; ++i) {
+        const double x = r.x() + i * seg;
+        p.drawLine(QPointF(x, r.y() - 0.8), QPointF(x, r.y()));
+        if (every || i == 0 || i == bar.segments)
+            text(p, QPointF(x, r.y() - 1.3), QString::fromStdString(bar.tickLabel(i)), 6.5, false, false,
+                 i == bar.segments && !every ? Qt::AlignLeft : Qt::AlignHCenter);
+    }
+    text(p, QPointF(r.right() + 9.0, r.bottom()), QString::fromStdString(box.scaleText), 8);
+}
+
+void drawRuler(QPainter& p, const cp::PanelBox& box)
+{
+    const QRectF r(box.rulerRect.x, box.rulerRect.y, box.rulerRect.w, box.rulerRect.h);
+    const double top = r.y() + 0.8;
+    p.setPen(pen(kThinMm));
+    p.drawLine(QPointF(r.x(), top), QPointF(r.right(), top));
+    const int labelEvery = r.width() >= 120 ? 30 : (r.width() >= 50 ? 90 : 180);
+    for (int deg = 0; deg <= 360; deg += 10) {
+        const double x = r.x() + r.width() * deg / 360.0;
+        const bool major = deg % 30 == 0;
+        p.drawLine(QPointF(x, top), QPointF(x, top + (major ? 1.8 : 1.0)));
+        if (deg % labelEvery == 0)
+            text(p, QPointF(x, top + 4.6), QStringLiteral("%1°").arg(deg), 6, false, false,
+                 deg == 0 ? Qt::AlignLeft : (deg == 360 ? Qt::AlignRight : Qt::AlignHCenter));
+    }
+    // The axis: an arrow up the left edge of the image.
+    const QRectF img(box.image.x, box.image.y, box.image.w, box.image.h);
+    const double len = std::min(12.0, img.height());
+    arrow(p, QPointF(img.x() - 2.5, img.bottom()), QPointF(img.x() - 2.5, img.bottom() - len));
+    p.save();
+    const QPointF at(img.x() - 3.4, img.bottom() - 0.5);
+    p.translate(at);
+    p.rotate(-90);
+    text(p, QPointF(0, 0), QStringLiteral("axis"), 6);
+    p.restore();
+}
+
+/** The scene axis ("+X", "−Z", …) that a camera axis (a column of the standard orientation) shows. */
+QString axisName(const Eigen::Vector3d& v)
+{
+    int k = 0;
+    for (int i = 1; i < 3; ++i)
+        if (std::abs(v[i]) > std::abs(v[k])) k = i;
+    return QString(v[k] < 0 ? QStringLiteral("−") : QStringLiteral("")) + QChar("XYZ"[k]);
+}
+
+void drawTriad(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box)
+{
+    const Eigen::Matrix3d m = core::view::Camera::standardOrientation(cp::standardViewOf(panel.view)).toRotationMatrix();
+    const QPointF o(box.image.right() - 9.0, box.barRect.bottom());
+    arrow(p, o, o + QPointF(6.0, 0));
+    arrow(p, o, o + QPointF(0, -6.0));
+    text(p, o + QPointF(6.8, 0.9), axisName(m.col(0)), 6.5);
+    text(p, o + QPointF(-0.9, -7.0), axisName(m.col(1)), 6.5);
+}
+
+void drawHatches(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box, const cp::PanelImage& image,
+                 const ann::Legend& legend)
+{
+    if (!panel.layer || !panel.hatches || image.classes.empty()) return;
+    const double mmPerPx = box.image.w / double(image.width);
+    const double myPerPx = box.image.h / double(image.height);
+    p.setPen(pen(kHatchPenMm));
+    for (const ann::LegendClass& c : legend.classes(*panel.layer)) {
+        if (std::find(image.classes.begin(), image.classes.end(), c.id) == image.classes.end()) continue;
+        const auto segments = cp::hatchSegments(image.classes, image.width, image.height, c.id, c.hatch, kHatchSpacingMm / mmPerPx);
+        for (const cp::HatchSegment& s : segments) {
+            const QPointF a(box.image.x + s.x0 * mmPerPx, box.image.y + s.y0 * myPerPx);
+            const QPointF b(box.image.x + s.x1 * mmPerPx, box.image.y + s.y1 * myPerPx);
+            if (a == b) p.fillRect(QRectF(a.x() - 0.15, a.y() - 0.15, 0.3, 0.3), Qt::black);
+            else p.drawLine(a, b);
+        }
+    }
+}
+
+struct LegendEntry {
+    QString title;                       // a layer's title row
+    const ann::LegendClass* cls = nullptr;
+    bool hatched = false;
+};
+
+std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& panels,
+                                       const ann::Legend& legend)
+{
+    std::vector<LegendEntry> out;
+    if (!spec.legend) return out;
+    for (const ann::AnnotationLayer layer : ann::AllAnnotationLayers) {
+        std::array<bool, 256> present{};
+        bool used = false, hatched = false;
+        for (std::size_t i = 0; i < spec.panels.size() && i < panels.size(); ++i) {
+            if (spec.panels[i].layer != layer) continue;
+            used = true;
+            hatched = hatched || spec.panels[i].hatches;
+            for (const std::uint8_t id : panels[i].image.classes) present[id] = true;
+        }
+        if (!used) continue;
+        std::vector<LegendEntry> rows;
+        for (const ann::LegendClass& c : legend.classes(layer))
+            if (present[c.id]) rows.push_back({{}, &c, hatched});
+        if (rows.empty()) continue;
+        out.push_back({layer == ann::AnnotationLayer::Material ? QStringLiteral("Material / condition")
+                                                               : QStringLiteral("Tool marks"),
+                       nullptr, false});
+        out.insert(out.end(), rows.begin(), rows.end());
+    }
+    return out;
+}
+
+int legendColumns(double widthMm) { return std::max(1, int(widthMm / kLegendColumnMm)); }
+
+void drawSwatch(QPainter& p, const QRectF& r, const ann::LegendClass& c, bool hatched)
+{
+    if (!hatched) {
+        p.fillRect(r, QColor(c.colour.r, c.colour.g, c.colour.b));
+    } else {
+        // The hatch traced as on the panels, over a swatch-sized raster of the class.
+        const int w = int(std::lround(r.width() * 10)), h = int(std::lround(r.height() * 10));
+        const std::vector<std::uint8_t> ids(std::size_t(w) * std::size_t(h), c.id);
+        p.setPen(pen(kHatchPenMm));
+        for (const cp::HatchSegment& s : cp::hatchSegments(ids, w, h, c.id, c.hatch, kHatchSpacingMm * 10)) {
+            const QPointF a(r.x() + s.x0 / 10, r.y() + s.y0 / 10), b(r.x() + s.x1 / 10, r.y() + s.y1 / 10);
+            if (a == b) p.fillRect(QRectF(a.x() - 0.15, a.y() - 0.15, 0.3, 0.3), Qt::black);
+            else p.drawLine(a, b);
+        }
+    }
+    p.setPen(pen(kThinMm));
+    p.setBrush(Qt::NoBrush);
+    p.drawRect(r);
+}
+
+} // namespace
+
+int legendRows(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& panels, const ann::Legend& legend)
+{
+    const auto entries = legendEntries(spec, panels, legend);
+    if (entries.empty()) return 0;
+    const double width = spec.orientedPage().widthMm - 2 * spec.marginMm;
+    const int columns = legendColumns(width);
+    return int((entries.size() + std::size_t(columns) - 1) / std::size_t(columns));
+}
+
+double captionHeightMm(const QString& caption, double widthMm)
+{
+    if (caption.trimmed().isEmpty()) return 0;
+    QFont font(QStringLiteral("DejaVu Serif"));
+    font.setPixelSize(int(std::lround(9 * kPt * 100))); // 0.01 mm units
+    const QFontMetricsF m(font);
+    const QRectF r = m.boundingRect(QRectF(0, 0, widthMm * 100, 1e7), Qt::TextWordWrap, caption);
+    return r.height() / 100 + 2.0;
+}
+
+QImage panelQImage(const cp::PanelImage& image, bool sixteenBits)
+{
+    const int w = image.width, h = image.height;
+    const bool rgb = image.channels == 3;
+    QImage out(w, h, rgb ? (sixteenBits ? QImage::Format_RGBX64 : QImage::Format_RGB888)
+                         : (sixteenBits ? QImage::Format_Grayscale16 : QImage::Format_Grayscale8));
+    for (int y = 0; y < h; ++y) {
+        uchar* line = out.scanLine(y);
+        for (int x = 0; x < w; ++x) {
+            if (!rgb) {
+                const std::uint16_t g = image.sample(x, y);
+                if (sixteenBits) reinterpret_cast<quint16*>(line)[x] = g;
+                else line[x] = uchar((g + 128) / 257);
+            } else if (sixteenBits) {
+                quint16* px = reinterpret_cast<quint16*>(line) + 4 * x;
+                px[0] = image.sample(x, y, 0), px[1] = image.sample(x, y, 1), px[2] = image.sample(x, y, 2), px[3] = 65535;
+            } else {
+                for (int c = 0; c < 3; ++c) line[3 * x + c] = uchar((image.sample(x, y, c) + 128) / 257);
+            }
+        }
+    }
+    return out;
+}
+
+void paintPlate(QPainter& p, const PlateContent& plate)
+{
+    const cp::PlateLayout& layout = plate.layout;
+    p.fillRect(QRectF(0, 0, layout.page.widthMm, layout.page.heightMm), Qt::white);
+    p.setRenderHint(QPainter::LosslessImageRendering, true);
+    p.setRenderHint(QPainter::Antialiasing, true);
+    const bool sixteen = plate.spec.bits == 16;
+    for (std::size_t i = 0; i < layout.panels.size() && i < plate.panels.size(); ++i) {
+        const cp::PanelBox& box = layout.panels[i];
+        const cp::PanelSpec& panel = plate.spec.panels[i];
+        const cp::PanelImage& image = plate.panels[i].image;
+        p.drawImage(QRectF(box.image.x, box.image.y, box.image.w, box.image.h), panelQImage(image, sixteen));
+        drawHatches(p, panel, box, image, plate.legend);
+        const double titleX = box.image.x + (box.letter.empty() ? 0.0 : 6.0);
+        if (!box.letter.empty()) text(p, QPointF(box.image.x, box.image.y - 2.0), QString::fromStdString(box.letter), 12, true);
+        text(p, QPointF(titleX, box.image.y - 2.0), viewTitle(panel), 7.5);
+        if (box.ruler) drawRuler(p, box);
+        else drawTriad(p, panel, box);
+        drawBar(p, box);
+    }
+    const auto entries = legendEntries(plate.spec, plate.panels, plate.legend);
+    if (!entries.empty() && layout.legend.h > 0) {
+        const int columns = legendColumns(layout.legend.w);
+        const int rows = int((entries.size() + std::size_t(columns) - 1) / std::size_t(columns));
+        for (std::size_t k = 0; k < entries.size(); ++k) {
+            const int col = int(k) / rows, row = int(k) % rows;
+            const double x = layout.legend.x + col * kLegendColumnMm, y = layout.legend.y + row * cp::kLegendRowMm;
+            const LegendEntry& e = entries[k];
+            if (!e.cls) {
+                text(p, QPointF(x, y + 3.8), e.title, 8, true);
+                continue;
+            }
+            drawSwatch(p, QRectF(x, y + 0.8, 8.0, 4.0), *e.cls, e.hatched);
+            text(p, QPointF(x + 10.0, y + 3.8), QString::fromStdString(e.cls->name), 8);
+        }
+    }
+    if (layout.caption.h > 0) {
+        const QTransform t = p.transform();
+        const double scale = std::sqrt(std::abs(t.determinant()));
+        QFont font(QStringLiteral("DejaVu Serif"));
+        font.setPixelSize(std::max(1, int(std::lround(9 * kPt * scale))));
+        font.setHintingPreference(QFont::PreferNoHinting);
+        p.save();
+        p.resetTransform();
+        p.setFont(font);
+        p.setPen(Qt::black);
+        const QRectF r = t.mapRect(QRectF(layout.caption.x, layout.caption.y, layout.caption.w, layout.caption.h));
+        p.drawText(r, int(Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop), QString::fromStdString(plate.spec.caption));
+        p.restore();
+    }
+}
+
+} // namespace stylos::plate

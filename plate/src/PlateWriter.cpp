@@ -1,0 +1,222 @@
+// Writing a plate page as PDF, SVG, TIFF or PNG, atomically and reproducibly.
+#include "stylos/plate/PlateWriter.h"
+
+#include <QFile>
+#include <QPageLayout>
+#include <QPageSize>
+#include <QPainter>
+#include <QPdfWriter>
+#include <QRegularExpression>
+#include <QSvgGenerator>
+
+#include <OpenImageIO/imageio.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+
+namespace stylos::plate {
+
+namespace {
+
+namespace fs = std::filesystem;
+using core::Error;
+using core::ErrorCode;
+using core::Status;
+
+constexpr int kPdfDpi = 1200;   // QPdfWriter's device units: 1/1200 inch
+constexpr int kSvgPerMm = 10;   // SVG user units: 0.1 mm
+
+fs::path partialPath(const fs::path& output)
+{
+    return output.parent_path() / ("." + output.filename().string() + ".partial");
+}
+
+Status finish(const fs::path& partial, const fs::path& output)
+{
+    std::error_code error;
+    fs::rename(partial, output, error);
+    if (error) {
+        fs::remove(partial, error);
+        return Error::at(ErrorCode::WriteFailed, output.string(), {}, "cannot rename the finished file into place");
+    }
+    return {};
+}
+
+Status failed(const fs::path& partial, const fs::path& output, const std::string& why)
+{
+    std::error_code error;
+    fs::remove(partial, error);
+    return Error::at(ErrorCode::WriteFailed, output.string(), {}, why);
+}
+
+/** Replaces the clock- and random-dependent parts of a Qt PDF by fixed text of the same length. */
+bool makeReproducible(const fs::path& path)
+{
+    QFile file(QString::fromStdString(path.string()));
+    if (!file.open(QIODevice::ReadOnly)) return false;
+    QByteArray bytes = file.readAll();
+    file.close();
+    // Digits and letters become those of a fixed date (2000-01-01 00:00:00), then zeros: same length, same offsets.
+    auto blank = [&](const QRegularExpression& re, char) {
+        static const char fixed[] = "20000101000000";
+        auto it = re.globalMatch(QString::fromLatin1(bytes));
+        while (it.hasNext()) {
+            const auto m = it.next();
+            std::size_t k = 0;
+            for (int i = int(m.capturedStart(1)); i < int(m.capturedEnd(1)); ++i)
+                if (std::isalnum(static_cast<unsigned char>(bytes[i]))) bytes[i] = k < 14 ? fixed[k++] : '0';
+        }
+    };
+    blank(QRegularExpression(QStringLiteral("/CreationDate \\(D:([^)]*)\\)")), '0');
+    blank(QRegularExpression(QStringLiteral("/ModDate \\(D:([^)]*)\\)")), '0');
+    blank(QRegularExpression(QStringLiteral("/ID \\[\\s*(<[0-9a-fA-F]*>\\s*<[0-9a-fA-F]*>)\\s*\\]")), '0');
+    blank(QRegularExpression(QStringLiteral("<xmp:CreateDate>([^<]*)<")), '0');
+    blank(QRegularExpression(QStringLiteral("<xmp:ModifyDate>([^<]*)<")), '0');
+    blank(QRegularExpression(QStringLiteral("<xmp:MetadataDate>([^<]*)<")), '0');
+    blank(QRegularExpression(QStringLiteral("uuid:([0-9a-fA-F-]*)")), '0');
+    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)) return false;
+    return file.write(bytes) == bytes.size() && file.flush();
+}
+
+Status writePdf(const PlateContent& plate, const fs::path& output)
+{
+    const fs::path partial = partialPath(output);
+    {
+        QPdfWriter writer(QString::fromStdString(partial.string()));
+        const auto& page = plate.layout.page;
+        writer.setPageLayout(QPageLayout(QPageSize(QSizeF(page.widthMm, page.heightMm), QPageSize::Millimeter,
+                                                   QString(), QPageSize::ExactMatch),
+                                         QPageLayout::Portrait, QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter));
+        writer.setResolution(kPdfDpi);
+        writer.setCreator(QStringLiteral("Stylos"));
+        writer.setTitle(QString::fromStdString(plate.spec.caption.substr(0, 200)));
+        QPainter painter;
+        if (!painter.begin(&writer)) return failed(partial, output, "cannot start the PDF");
+        painter.scale(kPdfDpi / 25.4, kPdfDpi / 25.4);
+        paintPlate(painter, plate);
+        if (!painter.end()) return failed(partial, output, "writing the PDF failed");
+    }
+    if (!makeReproducible(partial)) return failed(partial, output, "cannot rewrite the PDF's dates");
+    return finish(partial, output);
+}
+
+Status writeSvg(const PlateContent& plate, const fs::path& output)
+{
+    const fs::path partial = partialPath(output);
+    const auto& page = plate.layout.page;
+    {
+        QSvgGenerator svg;
+        svg.setFileName(QString::fromStdString(partial.string()));
+        const QSize size(int(std::lround(page.widthMm * kSvgPerMm)), int(std::lround(page.heightMm * kSvgPerMm)));
+        svg.setSize(size);
+        svg.setViewBox(QRect(QPoint(0, 0), size));
+        svg.setResolution(int(std::lround(25.4 * kSvgPerMm))); // 254 dpi: width and height come out in mm
+        svg.setTitle(QString::fromStdString(plate.spec.caption.substr(0, 200)));
+        svg.setDescription(QStringLiteral("Stylos plate"));
+        QPainter painter;
+        if (!painter.begin(&svg)) return failed(partial, output, "cannot start the SVG");
+        painter.scale(kSvgPerMm, kSvgPerMm);
+        paintPlate(painter, plate);
+        if (!painter.end()) return failed(partial, output, "writing the SVG failed");
+    }
+    return finish(partial, output);
+}
+
+bool inColour(const PlateContent& plate)
+{
+    for (const auto& panel : plate.panels)
+        if (panel.image.channels == 3) return true;
+    if (plate.spec.legend)
+        for (const auto& p : plate.spec.panels)
+            if (p.layer && !p.hatches) return true;
+    return false;
+}
+
+Status writeRaster(const PlateContent& plate, const fs::path& output, PlateFormat format)
+{
+    const QSize size = rasterPageSize(plate);
+    const double pixels = double(size.width()) * double(size.height());
+    if (pixels > 2.0e9)
+        return Error::at(ErrorCode::InvalidArgument, output.string(), {},
+                         "the page at " + std::to_string(plate.spec.dpi) + " dpi would be " + std::to_string(size.width()) +
+                             " × " + std::to_string(size.height()) + " pixels, too large to write; lower the dpi");
+    const bool colour = inColour(plate), sixteen = plate.spec.bits == 16;
+    QImage page(size, sixteen ? QImage::Format_RGBX64 : QImage::Format_RGB888);
+    page.fill(Qt::white);
+    const int dpm = int(std::lround(plate.spec.dpi / 0.0254));
+    page.setDotsPerMeterX(dpm);
+    page.setDotsPerMeterY(dpm);
+    {
+        QPainter painter(&page);
+        painter.scale(size.width() / plate.layout.page.widthMm, size.height() / plate.layout.page.heightMm);
+        paintPlate(painter, plate);
+    }
+    const int channels = colour ? 3 : 1;
+    OIIO::ImageSpec spec(size.width(), size.height(), channels, sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+    spec.attribute("XResolution", float(plate.spec.dpi));
+    spec.attribute("YResolution", float(plate.spec.dpi));
+    spec.attribute("ResolutionUnit", "in");
+    spec.attribute("Software", "Stylos");
+    if (format == PlateFormat::Tiff) spec.attribute("compression", "zip");
+    std::vector<std::uint8_t> buffer(std::size_t(size.width()) * std::size_t(size.height()) * std::size_t(channels) *
+                                     (sixteen ? 2u : 1u));
+    for (int y = 0; y < size.height(); ++y) {
+        const uchar* line = page.constScanLine(y);
+        for (int x = 0; x < size.width(); ++x) {
+            const std::size_t o = (std::size_t(y) * std::size_t(size.width()) + std::size_t(x)) * std::size_t(channels);
+            if (sixteen) {
+                const quint16* px = reinterpret_cast<const quint16*>(line) + 4 * x;
+                auto* out = reinterpret_cast<std::uint16_t*>(buffer.data());
+                if (colour) out[o] = px[0], out[o + 1] = px[1], out[o + 2] = px[2];
+                else out[o] = std::uint16_t((std::uint32_t(px[0]) * 299 + std::uint32_t(px[1]) * 587 + std::uint32_t(px[2]) * 114 + 500) / 1000);
+            } else {
+                const uchar* px = line + 3 * x;
+                if (colour) buffer[o] = px[0], buffer[o + 1] = px[1], buffer[o + 2] = px[2];
+                else buffer[o] = std::uint8_t((int(px[0]) * 299 + int(px[1]) * 587 + int(px[2]) * 114 + 500) / 1000);
+            }
+        }
+    }
+    const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
+    auto out = OIIO::ImageOutput::create(partial.string());
+    if (!out || !out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + OIIO::geterror());
+    const bool ok = out->write_image(sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8, buffer.data());
+    const bool closed = out->close();
+    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->geterror());
+    return finish(partial, output);
+}
+
+} // namespace
+
+std::optional<PlateFormat> plateFormatOf(const fs::path& path)
+{
+    std::string e = path.extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    if (e == ".pdf") return PlateFormat::Pdf;
+    if (e == ".svg") return PlateFormat::Svg;
+    if (e == ".tif" || e == ".tiff") return PlateFormat::Tiff;
+    if (e == ".png") return PlateFormat::Png;
+    return std::nullopt;
+}
+
+QSize rasterPageSize(const PlateContent& plate)
+{
+    const double dpi = plate.spec.dpi;
+    return {int(std::lround(plate.layout.page.widthMm / 25.4 * dpi)), int(std::lround(plate.layout.page.heightMm / 25.4 * dpi))};
+}
+
+Status writePlate(const PlateContent& plate, const fs::path& output)
+{
+    const auto format = plateFormatOf(output);
+    if (!format)
+        return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "a plate is written as .pdf, .svg, .tif or .png");
+    switch (*format) {
+    case PlateFormat::Pdf: return writePdf(plate, output);
+    case PlateFormat::Svg: return writeSvg(plate, output);
+    case PlateFormat::Tiff:
+    case PlateFormat::Png: return writeRaster(plate, output, *format);
+    }
+    return {};
+}
+
+} // namespace stylos::plate
