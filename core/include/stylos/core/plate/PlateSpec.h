@@ -44,6 +44,7 @@ std::optional<PanelShading> panelShadingFromName(std::string_view name);
 struct PageSize {
     double widthMm = 210;
     double heightMm = 297;
+    bool operator==(const PageSize&) const = default;
 };
 
 /**

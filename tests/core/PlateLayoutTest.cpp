@@ -1,0 +1,194 @@
+// Plate model in millimetres: scale bars from {1, 2, 5}·10^k within 20–60 mm at every scale, the layout file's
+// round trip and its errors by key, page names, and the packing (exact image places, a too-large panel named
+// with the scale that would fit, nothing placed then).
+#include "stylos/core/plate/PlateLayout.h"
+#include "stylos/core/plate/ScaleBar.h"
+
+#include <nlohmann/json.hpp>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace stylos::core::plate;
+
+TEST(ScaleBar, PicksTheNiceLengthNearestFortyMillimetres)
+{
+    const ScaleBar ten = chooseScaleBar(10);
+    EXPECT_DOUBLE_EQ(ten.lengthM, 0.5);
+    EXPECT_DOUBLE_EQ(ten.lengthMm, 50.0);
+    EXPECT_EQ(ten.segments, 5);
+    EXPECT_EQ(ten.unit, "cm");
+    EXPECT_EQ(ten.tickLabel(0), "0");
+    EXPECT_EQ(ten.tickLabel(1), "10");
+    EXPECT_EQ(ten.tickLabel(5), "50 cm");
+
+    const ScaleBar three = chooseScaleBar(3);
+    EXPECT_DOUBLE_EQ(three.lengthM, 0.1);
+    EXPECT_DOUBLE_EQ(three.lengthMm, 0.1 * 1000.0 / 3.0);
+
+    const ScaleBar fifty = chooseScaleBar(50);
+    EXPECT_DOUBLE_EQ(fifty.lengthM, 2.0);
+    EXPECT_EQ(fifty.segments, 4);
+    EXPECT_EQ(fifty.unit, "m");
+    EXPECT_EQ(fifty.tickLabel(1), "0.5");
+
+    const ScaleBar half = chooseScaleBar(0.5); // 2:1 enlargement of a small find
+    EXPECT_DOUBLE_EQ(half.lengthM, 0.02);
+    EXPECT_EQ(half.unit, "cm");
+    EXPECT_EQ(chooseScaleBar(0.1).unit, "mm");
+
+    EXPECT_EQ(chooseScaleBar(0).segments, 0);
+    EXPECT_EQ(chooseScaleBar(-3).segments, 0);
+    EXPECT_EQ(chooseScaleBar(std::nan("")).segments, 0);
+}
+
+TEST(ScaleBar, HoldsAtEveryScale)
+{
+    for (double n = 1; n <= 200000; n *= 1.0173) {
+        const ScaleBar bar = chooseScaleBar(n);
+        ASSERT_GE(bar.segments, 2) << n;
+        EXPECT_GE(bar.lengthMm, kScaleBarMinMm - 1e-9) << n;
+        EXPECT_LE(bar.lengthMm, kScaleBarMaxMm + 1e-9) << n;
+        EXPECT_DOUBLE_EQ(bar.lengthMm, bar.lengthM * 1000.0 / n) << n;
+        const double mantissa = bar.lengthM / std::pow(10.0, std::floor(std::log10(bar.lengthM) + 1e-9));
+        EXPECT_TRUE(std::abs(mantissa - 1) < 1e-9 || std::abs(mantissa - 2) < 1e-9 || std::abs(mantissa - 5) < 1e-9) << n;
+    }
+}
+
+TEST(PlateSpec, PageNamesAndOrientation)
+{
+    EXPECT_DOUBLE_EQ(pageFromName("a4")->widthMm, 210);
+    EXPECT_DOUBLE_EQ(pageFromName("A3")->heightMm, 420);
+    EXPECT_DOUBLE_EQ(pageFromName("letter")->widthMm, 215.9);
+    EXPECT_DOUBLE_EQ(pageFromName("170x105")->heightMm, 105);
+    EXPECT_DOUBLE_EQ(pageFromName("200.5X150")->widthMm, 200.5);
+    EXPECT_FALSE(pageFromName("A5"));
+    EXPECT_FALSE(pageFromName("5x150"));
+    EXPECT_FALSE(pageFromName("200x"));
+    PlateSpec s;
+    s.landscape = true;
+    EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 297);
+    s.pageName = "170x105";
+    s.page = *pageFromName(s.pageName);
+    s.landscape = false;
+    EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 170); // a print area keeps its stated orientation
+}
+
+TEST(PlateSpec, LayoutFileRoundTripAndErrorsByKey)
+{
+    PlateSpec s;
+    s.pageName = "A3";
+    s.page = *pageFromName("A3");
+    s.landscape = true;
+    s.dpi = 1200;
+    s.caption = "Drum 2, développée";
+    PanelSpec a;
+    a.scale = 5;
+    a.layer = stylos::core::annotation::AnnotationLayer::Material;
+    a.hatches = true;
+    PanelSpec b;
+    b.view = PanelView::Top;
+    b.scale = 20;
+    b.shading = PanelShading::Headlight;
+    b.fragment = "Drum 2";
+    b.atMm = std::array<double, 2>{30, 200};
+    s.panels = {a, b};
+    const auto back = PlateSpec::fromJson(s.toJson(), "p.json");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    EXPECT_EQ(back.value(), s);
+
+    auto bad = s.toJson();
+    bad["panels"][1]["scale"] = 0.5;
+    auto r = PlateSpec::fromJson(bad, "p.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("panels[1].scale"), std::string::npos) << r.error().message;
+    bad = s.toJson();
+    bad["panels"][0]["view"] = "sideways";
+    r = PlateSpec::fromJson(bad, "p.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("panels[0].view"), std::string::npos);
+    bad = s.toJson();
+    bad["panels"][0]["shading"] = "headlight"; // a développée has no headlight
+    r = PlateSpec::fromJson(bad, "p.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_NE(r.error().message.find("panels[0].shading"), std::string::npos);
+    bad = s.toJson();
+    bad["dpi"] = 20000;
+    EXPECT_FALSE(PlateSpec::fromJson(bad, "p.json").ok());
+    bad = s.toJson();
+    bad.erase("panels");
+    EXPECT_FALSE(PlateSpec::fromJson(bad, "p.json").ok());
+    EXPECT_EQ(PlateSpec::read("/no/such/plate.json").error().code, stylos::core::ErrorCode::NotFound);
+}
+
+TEST(PlateLayout, PlacesImagesAtTheirExactSizeAndCentres)
+{
+    PlateSpec s; // A4 portrait, 15 mm margins: a 180 × 267 mm print area
+    PanelSpec p;
+    p.scale = 10;
+    s.panels = {p};
+    const std::array<double, 2> size{100.0, 50.0};
+    const auto layout = layoutPlate(s, std::span(&size, 1), 0, 0);
+    ASSERT_TRUE(layout.ok()) << layout.error().message;
+    const PanelBox& box = layout->panels[0];
+    EXPECT_DOUBLE_EQ(box.image.x, 15 + (180 - 100) / 2.0);
+    EXPECT_DOUBLE_EQ(box.image.y, 15 + kLetterBandMm);
+    EXPECT_DOUBLE_EQ(box.image.w, 100);
+    EXPECT_DOUBLE_EQ(box.image.h, 50);
+    EXPECT_TRUE(box.letter.empty());
+    EXPECT_TRUE(box.ruler);
+    EXPECT_DOUBLE_EQ(box.barRect.w, 50.0); // 0.5 m at 1:10
+    EXPECT_EQ(box.scaleText, "1:10");
+    EXPECT_DOUBLE_EQ(layout->legend.h, 0);
+}
+
+TEST(PlateLayout, PacksPanelsInRowsWithLetters)
+{
+    PlateSpec s;
+    PanelSpec front;
+    front.view = PanelView::Front;
+    front.scale = 10;
+    PanelSpec side = front;
+    side.view = PanelView::Right;
+    s.panels = {front, side};
+    const std::array<std::array<double, 2>, 2> sizes{{{80, 60}, {70, 60}}};
+    const auto layout = layoutPlate(s, sizes, 3, 10);
+    ASSERT_TRUE(layout.ok()) << layout.error().message;
+    const auto& a = layout->panels[0];
+    const auto& b = layout->panels[1];
+    EXPECT_EQ(a.letter, "A");
+    EXPECT_EQ(b.letter, "B");
+    EXPECT_DOUBLE_EQ(a.image.y, b.image.y); // one row: 80 + 6 + 70 ≤ 180
+    EXPECT_DOUBLE_EQ(a.image.x, 15 + (180 - 156) / 2.0);
+    EXPECT_DOUBLE_EQ(b.image.x, a.image.right() + kPanelGapMm);
+    EXPECT_FALSE(a.ruler);
+    EXPECT_DOUBLE_EQ(layout->legend.h, 3 * kLegendRowMm);
+    EXPECT_GT(layout->legend.y, a.barRect.bottom());
+    EXPECT_GT(layout->caption.y, layout->legend.bottom());
+}
+
+TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
+{
+    PlateSpec s;
+    PanelSpec p;
+    p.scale = 10;
+    s.panels = {p};
+    const double width = 2 * 3.14159265 * 0.5 * 1000 / 10; // a 0.5 m drum at 1:10: 314.2 mm
+    const std::array<double, 2> size{width, 50};
+    const auto layout = layoutPlate(s, std::span(&size, 1), 0, 0);
+    ASSERT_FALSE(layout.ok());
+    EXPECT_EQ(layout.error().code, stylos::core::ErrorCode::InvalidArgument);
+    EXPECT_NE(layout.error().message.find("314.2 × 50.0 mm"), std::string::npos) << layout.error().message;
+    EXPECT_NE(layout.error().message.find("180.0 × 267.0 mm"), std::string::npos) << layout.error().message;
+    EXPECT_NE(layout.error().message.find("use 1:18"), std::string::npos) << layout.error().message;
+    // At the scale it names, it fits.
+    s.panels[0].scale = 18;
+    const std::array<double, 2> smaller{width * 10 / 18, 50 * 10 / 18.0};
+    EXPECT_TRUE(layoutPlate(s, std::span(&smaller, 1), 0, 0).ok());
+    // Too much height with the caption.
+    const std::array<double, 2> tall{100, 230};
+    const auto crowded = layoutPlate(s, std::span(&tall, 1), 0, 40);
+    ASSERT_FALSE(crowded.ok());
+    EXPECT_NE(crowded.error().message.find("of height"), std::string::npos) << crowded.error().message;
+}
