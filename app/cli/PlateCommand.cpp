@@ -178,6 +178,9 @@ int runPlate(const std::vector<std::string>& args)
     if (!layoutFile || cl.value("page") || cl.value("dpi") || cl.flag("landscape") || cl.value("bits") || cl.value("margin"))
         if (!parsePage(cl, spec, problem)) return usageError(cl, problem);
 
+    // Check what can be checked before reading anything (a 3D view's default shading waits for its octrees).
+    if (shadingGiven || spec.panels[0].view == cp::PanelView::Developpee)
+        if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s) return usageError(cl, s.error().message);
     const auto start = core::Clock::now();
     auto sources = cp::readPlateSources(input);
     if (!sources) return fail(sources.error());

@@ -2,6 +2,7 @@
 #include "stylos/plate/PlateWriter.h"
 
 #include <QFile>
+#include <QHashSeed>
 #include <QPageLayout>
 #include <QPageSize>
 #include <QPainter>
@@ -82,6 +83,9 @@ bool makeReproducible(const fs::path& path)
 Status writePdf(const PlateContent& plate, const fs::path& output)
 {
     const fs::path partial = partialPath(output);
+    // Qt keeps the PDF's fonts in a QHash: with the per-process random seed their objects come out in a
+    // different order from one run to the next. A fixed seed makes the bytes the same.
+    QHashSeed::setDeterministicGlobalSeed();
     {
         QPdfWriter writer(QString::fromStdString(partial.string()));
         const auto& page = plate.layout.page;

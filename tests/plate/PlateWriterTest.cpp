@@ -1,0 +1,255 @@
+// Plates written to files and measured as a reader would: a plain generated drum (radius 0.2 m, the generator's
+// truth) unrolled at 1:10 is 2π · 0.2 · 1000 / 10 mm wide on the PDF page rasterised by poppler at 1200 dpi
+// (within 0.1 %); the scale bar's end ticks are its stated length apart (within 0.1 mm); the page is A4 within
+// Qt's whole-point MediaBox (0.18 mm); no image is JPEG and each is at least the plate's dpi; every font is
+// embedded; the same inputs give the same bytes (PDF, TIFF); the TIFF states its dpi, ZIP, and its size; the
+// SVG's page is in mm; a panel too large for the page writes nothing.
+#include "SyntheticTestSupport.h"
+#include "TestSupport.h"
+
+#include "stylos/core/octree/OctreeBuild.h"
+#include "stylos/core/plate/PlateSources.h"
+#include "stylos/plate/PlateComposer.h"
+#include "stylos/plate/PlateWriter.h"
+
+#include <OpenImageIO/imageio.h>
+#include <QGuiApplication>
+#include <QImage>
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <numbers>
+#include <sstream>
+
+using namespace stylos;
+namespace cp = core::plate;
+namespace fs = std::filesystem;
+
+namespace {
+
+std::string run(const std::string& command)
+{
+    std::string out;
+    FILE* pipe = popen((command + " 2>&1").c_str(), "r");
+    if (!pipe) return out;
+    char buffer[4096];
+    while (const std::size_t n = std::fread(buffer, 1, sizeof buffer, pipe)) out.append(buffer, n);
+    pclose(pipe);
+    return out;
+}
+
+std::string bytesOf(const fs::path& p)
+{
+    std::ifstream in(p, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+struct Fixture {
+    std::unique_ptr<test::TempDir> dir;
+    fs::path octree;
+    double radius = 0.2;
+};
+
+const Fixture& fixture()
+{
+    static Fixture f = [] {
+        Fixture f;
+        f.dir = std::make_unique<test::TempDir>();
+        auto o = test::coarse(0.003, 5);
+        o.radius = f.radius;
+        o.height = 0.25;
+        o.grooves = 0;
+        o.writeNormals = true;
+        const auto ply = *f.dir / "drum.ply";
+        test::generate(core::synth::SyntheticKind::Drum, o, ply);
+        core::octree::BuildOptions build;
+        build.depth = 9;
+        build.threads = 2;
+        f.octree = *f.dir / "drum.poct";
+        const auto built = core::octree::buildOctreeFile(ply, f.octree, build);
+        EXPECT_TRUE(built.ok()) << (built.ok() ? "" : built.error().message);
+        return f;
+    }();
+    return f;
+}
+
+cp::PlateSpec developpeeSpec()
+{
+    cp::PlateSpec spec;
+    spec.dpi = 300;
+    spec.caption = "A plain generated drum of radius 0.2 m, unrolled at 1:10.";
+    cp::PanelSpec panel;
+    panel.scale = 10;
+    spec.panels = {panel};
+    return spec;
+}
+
+core::Result<plate::PlateContent> compose(const cp::PlateSpec& spec)
+{
+    auto sources = cp::readPlateSources(fixture().octree);
+    if (!sources) return sources.error();
+    return plate::composePlate(*sources, spec, {});
+}
+
+/** Row @p yMm of page 1 of @p pdf rasterised at 1200 dpi by poppler, as grey values. */
+std::vector<int> pdfRow(const fs::path& pdf, double yMm, const fs::path& scratch)
+{
+    const int y = int(std::lround(yMm / 25.4 * 1200));
+    const fs::path out = scratch / "row";
+    run("pdftoppm -r 1200 -gray -png -singlefile -y " + std::to_string(y) + " -H 1 -W 20000 '" + pdf.string() + "' '" +
+        out.string() + "'");
+    QImage image(QString::fromStdString(out.string() + ".png"));
+    std::vector<int> row;
+    if (image.isNull()) return row;
+    image = image.convertToFormat(QImage::Format_Grayscale8);
+    for (int x = 0; x < image.width(); ++x) row.push_back(image.constScanLine(0)[x]);
+    return row;
+}
+
+} // namespace
+
+TEST(PlateWriter, DeveloppeePdfIsAtExactScale)
+{
+    auto plate = compose(developpeeSpec());
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path pdf = *fixture().dir / "dev.pdf";
+    ASSERT_TRUE(plate::writePlate(*plate, pdf).ok());
+
+    // The page: A4 within Qt's whole points.
+    const std::string info = run("pdfinfo '" + pdf.string() + "'");
+    double w = 0, h = 0;
+    const auto at = info.find("Page size:");
+    ASSERT_NE(at, std::string::npos) << info;
+    ASSERT_EQ(std::sscanf(info.c_str() + at, "Page size: %lf x %lf", &w, &h), 2);
+    EXPECT_NEAR(w * 25.4 / 72, 210.0, 0.18);
+    EXPECT_NEAR(h * 25.4 / 72, 297.0, 0.18);
+
+    // Images lossless and at the plate's dpi; fonts embedded.
+    const std::string images = run("pdfimages -list '" + pdf.string() + "'");
+    EXPECT_EQ(images.find("jpeg"), std::string::npos) << images;
+    std::istringstream lines(images);
+    std::string line;
+    int count = 0;
+    while (std::getline(lines, line)) {
+        int page, num, width, height, comp, bpc, object, generation, xppi, yppi;
+        char type[16], colour[16], enc[16], interp[8];
+        if (std::sscanf(line.c_str(), "%d %d %15s %d %d %15s %d %d %15s %7s %d %d %d %d", &page, &num, type, &width, &height,
+                        colour, &comp, &bpc, enc, interp, &object, &generation, &xppi, &yppi) != 14)
+            continue;
+        ++count;
+        EXPECT_GE(xppi, 299) << line;
+        EXPECT_GE(yppi, 299) << line;
+    }
+    EXPECT_EQ(count, 1) << images;
+    const std::string fonts = run("pdffonts '" + pdf.string() + "'");
+    std::istringstream fontLines(fonts);
+    int fontCount = 0;
+    while (std::getline(fontLines, line)) {
+        if (line.rfind("name", 0) == 0 || line.rfind("----", 0) == 0 || line.empty()) continue;
+        ++fontCount;
+        EXPECT_NE(line.find(" yes "), std::string::npos) << line; // emb
+    }
+    EXPECT_GE(fontCount, 1) << fonts;
+
+    // The développée is 2πR/N wide: the covered columns across the image's middle row.
+    const cp::PanelBox& box = plate->layout.panels[0];
+    const double expectedMm = 2 * std::numbers::pi * fixture().radius * 1000.0 / 10.0;
+    EXPECT_NEAR(box.image.w, expectedMm, 0.001 * expectedMm);
+    const auto row = pdfRow(pdf, box.image.y + 0.5 * box.image.h, fixture().dir->path());
+    ASSERT_FALSE(row.empty());
+    int first = -1, last = -1;
+    for (int x = 0; x < int(row.size()); ++x)
+        if (row[std::size_t(x)] < 250) {
+            if (first < 0) first = x;
+            last = x;
+        }
+    const double coveredMm = (last - first + 1) * 25.4 / 1200;
+    EXPECT_NEAR(coveredMm, expectedMm, 0.001 * expectedMm) << first << " " << last;
+
+    // The scale bar: its end ticks (above the bar, where nothing else is drawn) are its length apart.
+    const auto ticks = pdfRow(pdf, box.barRect.y - 0.4, fixture().dir->path());
+    std::vector<double> centres;
+    // Along the bar only: its "1:N" text stands to its right.
+    const int from = int((box.barRect.x - 2) / 25.4 * 1200), to = std::min(int(ticks.size()), int((box.barRect.right() + 2) / 25.4 * 1200));
+    for (int x = from; x < to;) {
+        if (ticks[std::size_t(x)] >= 128) { ++x; continue; }
+        int e = x;
+        while (e < to && ticks[std::size_t(e)] < 128) ++e;
+        centres.push_back(0.5 * (x + e - 1) * 25.4 / 1200);
+        x = e;
+    }
+    std::string seen;
+    for (const double c : centres) seen += std::to_string(c) + " ";
+    ASSERT_EQ(int(centres.size()), box.bar.segments + 1) << seen << " bar x " << box.barRect.x;
+    EXPECT_NEAR(centres.back() - centres.front(), box.bar.lengthMm, 0.1);
+    EXPECT_NEAR(centres.front(), box.barRect.x, 0.1);
+}
+
+TEST(PlateWriter, SameInputsGiveTheSameBytes)
+{
+    auto plate = compose(developpeeSpec());
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path a = *fixture().dir / "a.pdf", b = *fixture().dir / "b.pdf";
+    ASSERT_TRUE(plate::writePlate(*plate, a).ok());
+    ASSERT_TRUE(plate::writePlate(*plate, b).ok());
+    EXPECT_EQ(bytesOf(a), bytesOf(b));
+    const fs::path ta = *fixture().dir / "a.tif", tb = *fixture().dir / "b.tif";
+    ASSERT_TRUE(plate::writePlate(*plate, ta).ok());
+    ASSERT_TRUE(plate::writePlate(*plate, tb).ok());
+    EXPECT_EQ(bytesOf(ta), bytesOf(tb));
+}
+
+TEST(PlateWriter, TiffStatesItsResolutionAndSvgItsMillimetres)
+{
+    auto spec = developpeeSpec();
+    spec.bits = 16;
+    auto plate = compose(spec);
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path tif = *fixture().dir / "page.tif";
+    ASSERT_TRUE(plate::writePlate(*plate, tif).ok());
+    auto in = OIIO::ImageInput::open(tif.string());
+    ASSERT_TRUE(in);
+    const OIIO::ImageSpec& s = in->spec();
+    EXPECT_EQ(s.width, 2480); // 210 mm at 300 dpi
+    EXPECT_EQ(s.height, 3508);
+    EXPECT_EQ(s.nchannels, 1); // nothing in colour: grey
+    EXPECT_EQ(s.format, OIIO::TypeDesc::UINT16);
+    EXPECT_FLOAT_EQ(s.get_float_attribute("XResolution"), 300.0f);
+    EXPECT_FLOAT_EQ(s.get_float_attribute("YResolution"), 300.0f);
+    EXPECT_EQ(s.get_string_attribute("ResolutionUnit"), "in");
+    EXPECT_EQ(s.get_string_attribute("compression"), "zip");
+    in->close();
+
+    const fs::path svg = *fixture().dir / "page.svg";
+    ASSERT_TRUE(plate::writePlate(*plate, svg).ok());
+    const std::string text = bytesOf(svg);
+    EXPECT_NE(text.find("width=\"210mm\""), std::string::npos) << text.substr(0, 400);
+    EXPECT_NE(text.find("height=\"297mm\""), std::string::npos);
+    EXPECT_NE(text.find("viewBox=\"0 0 2100 2970\""), std::string::npos);
+}
+
+TEST(PlateWriter, TooLargeAPanelWritesNothing)
+{
+    auto spec = developpeeSpec();
+    spec.panels[0].scale = 2; // 628 mm wide
+    auto plate = compose(spec);
+    ASSERT_FALSE(plate.ok());
+    EXPECT_NE(plate.error().message.find("use 1:"), std::string::npos) << plate.error().message;
+    EXPECT_EQ(plate::plateFormatOf("x.jpg"), std::nullopt);
+}
+
+int main(int argc, char** argv)
+{
+    int qtArgc = 3;
+    char arg0[] = "stylos_plate_tests", arg1[] = "-platform", arg2[] = "offscreen";
+    char* qtArgv[] = {arg0, arg1, arg2, nullptr};
+    QGuiApplication app(qtArgc, qtArgv);
+    ::testing::InitGoogleTest(&argc, argv);
+    return RUN_ALL_TESTS();
+}
