@@ -13,7 +13,10 @@
 #include "SceneDock.h"
 #include "MainWindow.h"
 #include "ViewportSync.h"
+#include "PlateActions.h"
 #include "stylos/core/annotation/PaintRegion.h"
+#include "stylos/plate/PlateComposer.h"
+#include "stylos/widgets/plate/PlateDialog.h"
 #include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
@@ -366,6 +369,94 @@ void grabPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs)
             paintDemoRegions(window, view);
             window.legendDock().raise();
             grabWhenReady(window, path, timeoutMs);
+        });
+        window.sceneDock().selectFragment(id);
+        window.developpeeLink().compute();
+    });
+}
+
+namespace {
+
+/** The demo plate: the first fragment's développée with its material layer in colour, and its front view with the
+ *  same layer in black-and-white hatches, at the first scale of a short list at which both fit A4 landscape. */
+core::plate::PlateSpec demoPlate(MainWindow& window)
+{
+    namespace cp = core::plate;
+    const auto sources = PlateActions::sourcesOf(window.document());
+    cp::PlateSpec spec;
+    spec.landscape = true;
+    spec.dpi = 300;
+    const std::string name = window.document().scene().fragments().front().name;
+    spec.caption = "Demo drum (" + name + "): A, développée under the skydome, material and condition in colour; "
+                   "B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; "
+                   "the painted regions are an illustration.";
+    cp::PanelSpec dev;
+    dev.layer = core::annotation::AnnotationLayer::Material;
+    dev.fragment = name;
+    cp::PanelSpec front = dev;
+    front.view = cp::PanelView::Front;
+    front.shading = cp::PanelShading::Headlight;
+    front.hatches = true;
+    for (const double scale : {5.0, 10.0, 20.0, 25.0, 50.0, 100.0}) {
+        dev.scale = front.scale = scale;
+        spec.panels = {dev, front};
+        cp::PlateSpec quick = spec;
+        quick.dpi = 72;
+        if (plate::composePlate(*sources, quick, {})) break;
+    }
+    return spec;
+}
+
+} // namespace
+
+void grabPlateWhenReady(MainWindow& window, const QString& path, const QString& base, int timeoutMs)
+{
+    window.setErrorDialogsEnabled(false);
+    window.resize(1500, 950);
+    whenReady(window, timeoutMs, [&window, path, base, timeoutMs] {
+        const auto& fragments = window.document().scene().fragments();
+        if (fragments.empty()) {
+            std::fprintf(stderr, "stylos: --plate needs a fragment\n");
+            QApplication::exit(1);
+            return;
+        }
+        const auto id = fragments[0].id;
+        widgets::DeveloppeeView& view = *window.developpeePanel().view();
+        auto* shown = new QMetaObject::Connection;
+        *shown = QObject::connect(&view, &widgets::DeveloppeeView::developpeeChanged, &window,
+                                  [&window, &view, id, shown, path, base] {
+            if (view.fragmentId() != id || !view.hasDeveloppee() || !view.canPaint()) return;
+            QObject::disconnect(*shown);
+            delete shown;
+            paintDemoRegions(window, view);
+            const core::plate::PlateSpec spec = demoPlate(window);
+            window.document().setPlate(spec);
+            PlateActions& plates = window.plateActions();
+            auto* step = new int(0);
+            QObject::connect(&plates, &PlateActions::plateFinished, &window, [&window, &plates, spec, step, path, base](bool written) {
+                if (!written) {
+                    std::fprintf(stderr, "stylos: --plate: the plate could not be drawn\n");
+                    QApplication::exit(1);
+                    return;
+                }
+                if (++*step == 1) {
+                    core::plate::PlateSpec png = spec;
+                    png.dpi = 200;
+                    plates.exportPlate(png, base + QStringLiteral(".png"));
+                    return;
+                }
+                // Both files written: the dialog with its preview, grabbed.
+                auto* dialog = new widgets::PlateDialog(PlateActions::sourcesOf(window.document()), spec, &window);
+                dialog->setAttribute(Qt::WA_DeleteOnClose);
+                QObject::connect(dialog, &widgets::PlateDialog::previewUpdated, &window, [dialog, path] {
+                    if (dialog->previewPending()) return;
+                    const bool saved = dialog->grab().toImage().save(path, "PNG");
+                    if (!saved) std::fprintf(stderr, "stylos: %s: could not write the image\n", qPrintable(path));
+                    QApplication::exit(saved ? 0 : 1);
+                });
+                dialog->show();
+            });
+            plates.exportPlate(spec, base + QStringLiteral(".pdf"));
         });
         window.sceneDock().selectFragment(id);
         window.developpeeLink().compute();

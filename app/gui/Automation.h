@@ -52,6 +52,10 @@ void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs = 
  *        areas are measured, grabs. Status 1 as above, or when there is no fragment or it cannot be painted.
  */
 void grabPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+/** @brief As grabPaintWhenReady, then the demo plate (développée and front view of the first fragment, its material
+ *         layer in colour and in hatches) written to BASE.pdf (300 dpi) and BASE.png (200 dpi) and kept in the
+ *         project; the Export plate dialog with its preview grabbed into @p path. */
+void grabPlateWhenReady(MainWindow& window, const QString& path, const QString& base, int timeoutMs = 15 * 60 * 1000);
 
 /**
  * @brief Hides the docks and toolbar, sizes the 3D view to 1280 × 800, and once ready orbits the camera

@@ -59,6 +59,12 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
                                       "annotation regions on it (marble, fractured marble, plaster; a claw-chisel "
                                       "area in the tool-mark layer)."));
     parser.addOption(paint);
+    const QCommandLineOption plate(QStringLiteral("plate"),
+                                   tr("With --grab: paint as --paint, then write the first fragment's plate (its "
+                                      "développée and front view at 1:N) to BASE.pdf and BASE.png, and grab the Export "
+                                      "plate dialog."),
+                                   QStringLiteral("BASE"));
+    parser.addOption(plate);
     parser.addOption(orbit);
     parser.addOption(pose);
     QStringList formats;
@@ -84,6 +90,10 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     if (result.grabPaint && result.grabPath.isEmpty()) usageError(tr("--paint goes with --grab"));
     if (result.grabPaint && (result.grabDock || result.grabGizmo || result.grabAnnotation))
         usageError(tr("--paint does not go with --dock, --gizmo or --annotation"));
+    result.plateBase = parser.value(plate);
+    if (!result.plateBase.isEmpty() && (result.grabPath.isEmpty() || result.grabPaint || result.grabDock ||
+                                        result.grabGizmo || result.grabAnnotation))
+        usageError(tr("--plate goes with --grab alone"));
     if (parser.isSet(orbit)) {
         bool ok = false;
         result.orbitFrames = parser.value(orbit).toInt(&ok);

@@ -17,6 +17,7 @@ struct CommandLine {
     bool grabDock = false;   ///< with grabPath: dock the second fragment to the first's flutes, contact shown
     bool grabPaint = false;  ///< with grabPath: the first fragment's développée painted with a few regions
     bool grabGizmo = false;  ///< with grabPath: dock the second fragment against the first's guides, gizmo shown
+    QString plateBase;       ///< with grabPath: the demo plate written to BASE.pdf and BASE.png, the dialog grabbed
     bool grabAnnotation = false; ///< with grabPath: three regions of the first fragment lassoed, Annotation shading
     int orbitFrames = 0;     ///< > 0: orbit the camera for this many frames, print JSON, exit
     int poseFrames = 0;      ///< > 0: turn the first fragment (a pose change) for this many frames, print JSON, exit

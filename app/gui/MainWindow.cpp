@@ -9,6 +9,7 @@
 #include "DockingActions.h"
 #include "LogDock.h"
 #include "MainActions.h"
+#include "PlateActions.h"
 #include "ProjectActions.h"
 #include "PropertiesDock.h"
 #include "SceneDock.h"
@@ -178,6 +179,9 @@ void MainWindow::createMenus()
     connect(m_developpeeLink, &DeveloppeeLink::fragmentPicked, this,
             [this](quint64 id) { m_sceneDock->selectFragment(core::scene::FragmentId(id)); });
     m_propertiesDock->addContactReadout(m_docking->contact());
+    m_plates = new PlateActions(*m_document, *m_developpeeDock->panel().view(), *this);
+    m_plates->populate(*m_fileMenu, m_projectActions->quitAction());
+    connect(m_plates, &PlateActions::reported, this, &MainWindow::report);
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
@@ -374,6 +378,7 @@ void MainWindow::changeEvent(QEvent* event)
         m_annotation->retranslateUi();
         m_assemblies->retranslateUi();
         m_projectActions->retranslateUi();
+        m_plates->retranslateUi();
         updateTitle();
     }
     QMainWindow::changeEvent(event);

@@ -34,6 +34,7 @@ class DeveloppeeLink;
 class LegendDock;
 class LogDock;
 class MainActions;
+class PlateActions;
 class ProjectActions;
 class PropertiesDock;
 class SceneDock;
@@ -68,6 +69,7 @@ public:
     LegendDock& legendDock() const { return *m_legendDock; }
     widgets::DeveloppeeAnnotator& annotator() const { return *m_annotator; }
     ProjectActions& projectActions() const { return *m_projectActions; }
+    PlateActions& plateActions() const { return *m_plates; }
     MainActions& actions() const { return *m_actions; }
     DockingActions& docking() const { return *m_docking; }
     AssemblyActions& assemblies() const { return *m_assemblies; }
@@ -123,6 +125,7 @@ private:
     widgets::ClassMeasures* m_measures = nullptr;
     widgets::DeveloppeeAnnotator* m_annotator = nullptr;
     ProjectActions* m_projectActions = nullptr;
+    PlateActions* m_plates = nullptr;
     MainActions* m_actions = nullptr;
     AssemblyActions* m_assemblies = nullptr;
     DockingActions* m_docking = nullptr;

@@ -20,7 +20,9 @@ int main(int argc, char* argv[])
     const stylos::app::CommandLine options = stylos::app::CommandLine::parse(app);
 
     stylos::app::MainWindow window(translations);
-    if (!options.grabPath.isEmpty() && options.grabGizmo) stylos::app::grabGizmoWhenReady(window, options.grabPath);
+    if (!options.grabPath.isEmpty() && !options.plateBase.isEmpty())
+        stylos::app::grabPlateWhenReady(window, options.grabPath, options.plateBase);
+    else if (!options.grabPath.isEmpty() && options.grabGizmo) stylos::app::grabGizmoWhenReady(window, options.grabPath);
     else if (!options.grabPath.isEmpty() && options.grabAnnotation)
         stylos::app::grabAnnotationWhenReady(window, options.grabPath);
     else if (!options.grabPath.isEmpty() && options.grabPaint) stylos::app::grabPaintWhenReady(window, options.grabPath);

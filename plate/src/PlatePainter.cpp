@@ -32,6 +32,8 @@ constexpr double kLegendColumnMm = 60.0;
 void text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bold = false, bool serif = false,
           Qt::Alignment align = Qt::AlignLeft)
 {
+    // Draw in device-sized units (the current transform less its scale, so a rotation stays), with a font sized in
+    // device pixels: glyphs are laid out at the device's resolution whatever the page's scale.
     const QTransform t = p.transform();
     const double scale = std::sqrt(std::abs(t.determinant()));
     QFont font(serif ? QStringLiteral("DejaVu Serif") : QStringLiteral("DejaVu Sans"));
@@ -39,15 +41,14 @@ void text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bold
     font.setBold(bold);
     font.setHintingPreference(QFont::PreferNoHinting);
     p.save();
-    p.resetTransform();
+    p.setTransform(QTransform::fromScale(1.0 / scale, 1.0 / scale) * t);
     p.setFont(font);
     p.setPen(Qt::black);
-    const QPointF d = t.map(at);
     const QFontMetricsF m(font);
-    double x = d.x();
+    double x = at.x() * scale;
     if (align & Qt::AlignHCenter) x -= 0.5 * m.horizontalAdvance(s);
     else if (align & Qt::AlignRight) x -= m.horizontalAdvance(s);
-    p.drawText(QPointF(x, d.y()), s);
+    p.drawText(QPointF(x, at.y() * scale), s);
     p.restore();
 }
 
@@ -145,11 +146,12 @@ QString axisName(const Eigen::Vector3d& v)
 void drawTriad(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box)
 {
     const Eigen::Matrix3d m = core::view::Camera::standardOrientation(cp::standardViewOf(panel.view)).toRotationMatrix();
-    const QPointF o(box.image.right() - 9.0, box.barRect.bottom());
-    arrow(p, o, o + QPointF(6.0, 0));
-    arrow(p, o, o + QPointF(0, -6.0));
-    text(p, o + QPointF(6.8, 0.9), axisName(m.col(0)), 6.5);
-    text(p, o + QPointF(-0.9, -7.0), axisName(m.col(1)), 6.5);
+    // In the letter band, at the image's top right: the scene axes that point right and up on the page.
+    const QPointF o(box.image.right() - 10.0, box.image.y - 1.0);
+    arrow(p, o, o + QPointF(5.0, 0));
+    arrow(p, o, o + QPointF(0, -5.0));
+    text(p, o + QPointF(5.6, 0.9), axisName(m.col(0)), 6.5);
+    text(p, o + QPointF(0.8, -3.4), axisName(m.col(1)), 6.5);
 }
 
 void drawHatches(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box, const cp::PanelImage& image,
@@ -174,7 +176,8 @@ void drawHatches(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& bo
 struct LegendEntry {
     QString title;                       // a layer's title row
     const ann::LegendClass* cls = nullptr;
-    bool hatched = false;
+    bool coloured = false;               // some panel shows the layer in colour
+    bool hatched = false;                // some panel shows it in hatches
 };
 
 std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& panels,
@@ -184,21 +187,22 @@ std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vec
     if (!spec.legend) return out;
     for (const ann::AnnotationLayer layer : ann::AllAnnotationLayers) {
         std::array<bool, 256> present{};
-        bool used = false, hatched = false;
+        bool used = false, hatched = false, coloured = false;
         for (std::size_t i = 0; i < spec.panels.size() && i < panels.size(); ++i) {
             if (spec.panels[i].layer != layer) continue;
             used = true;
             hatched = hatched || spec.panels[i].hatches;
+            coloured = coloured || !spec.panels[i].hatches;
             for (const std::uint8_t id : panels[i].image.classes) present[id] = true;
         }
         if (!used) continue;
         std::vector<LegendEntry> rows;
         for (const ann::LegendClass& c : legend.classes(layer))
-            if (present[c.id]) rows.push_back({{}, &c, hatched});
+            if (present[c.id]) rows.push_back({{}, &c, coloured, hatched});
         if (rows.empty()) continue;
         out.push_back({layer == ann::AnnotationLayer::Material ? QStringLiteral("Material / condition")
                                                                : QStringLiteral("Tool marks"),
-                       nullptr, false});
+                       nullptr, false, false});
         out.insert(out.end(), rows.begin(), rows.end());
     }
     return out;
@@ -303,8 +307,10 @@ void paintPlate(QPainter& p, const PlateContent& plate)
                 text(p, QPointF(x, y + 3.8), e.title, 8, true);
                 continue;
             }
-            drawSwatch(p, QRectF(x, y + 0.8, 8.0, 4.0), *e.cls, e.hatched);
-            text(p, QPointF(x + 10.0, y + 3.8), QString::fromStdString(e.cls->name), 8);
+            double sx = x;
+            if (e.coloured) drawSwatch(p, QRectF(sx, y + 0.8, 8.0, 4.0), *e.cls, false), sx += 9.0;
+            if (e.hatched) drawSwatch(p, QRectF(sx, y + 0.8, 8.0, 4.0), *e.cls, true), sx += 9.0;
+            text(p, QPointF(sx + 1.0, y + 3.8), QString::fromStdString(e.cls->name), 8);
         }
     }
     if (layout.caption.h > 0) {

@@ -71,6 +71,20 @@ Result<fs::path> octreeOf(const PlateFragment& f, const PanelRenderOptions& opti
 }
 
 
+/** The fragment's labels of @p layer: those held in memory, else the octree's layer (zeros when absent). */
+Result<std::vector<std::uint8_t>> labelsOf(const PlateFragment& f, const oct::PackedOctree& octree,
+                                           annotation::AnnotationLayer layer)
+{
+    const auto& held = f.labels[layer == annotation::AnnotationLayer::Material ? 0 : 1];
+    if (held) {
+        if (held->size() != octree.cellCount(octree.depth()))
+            return Error{ErrorCode::InvalidArgument, f.path.string() + ": the labels held for \"" + f.name +
+                                                         "\" do not match its octree's leaves"};
+        return *held;
+    }
+    return annotation::readLeafLabels(octree, layer);
+}
+
 Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateFragment& f, const PanelSpec& panel,
                                        const PanelRenderOptions& options, ProgressSink* progress)
 {
@@ -94,7 +108,7 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
                                                                        "plate of its octree or of a project"};
         auto octree = oct::PackedOctree::open(f.path);
         if (!octree) return octree.error();
-        auto labels = annotation::readLeafLabels(*octree, *panel.layer);
+        auto labels = labelsOf(f, *octree, *panel.layer);
         if (!labels) return labels.error();
         auto pixels = annotation::leafPixels(*octree, dev.map);
         if (!pixels) return pixels.error();
@@ -141,7 +155,7 @@ Result<RenderedPanel> render3d(const PlateSources& sources, const std::vector<co
         s.octree = &octrees[i];
         s.pose = fragments[i]->pose;
         if (panel.layer) {
-            auto labels = annotation::readLeafLabels(octrees[i], *panel.layer);
+            auto labels = labelsOf(*fragments[i], octrees[i], *panel.layer);
             if (!labels) return labels.error();
             s.labels = std::move(labels).value();
         }

@@ -197,6 +197,11 @@ Result<LoadedProject> SceneReader::read(const json& root)
         if (!read) return read.error();
         project.scene.setLegend(std::move(read).value());
     }
+    if (const json* plate = member(root, "plate")) {
+        auto read = plate::PlateSpec::fromJson(*plate, m_file + ": plate");
+        if (!read) return read.error();
+        project.scene.setPlate(std::move(read).value());
+    }
     return project;
 }
 
@@ -333,6 +338,7 @@ std::string ProjectFile::toJson(const Scene& scene, const std::filesystem::path&
     root["assemblies"] = std::move(assemblies);
     root["fragments"] = std::move(fragments);
     root["legend"] = OrderedJson::parse(scene.legend().toJson().dump());
+    if (scene.plate()) root["plate"] = OrderedJson::parse(scene.plate()->toJson().dump());
     return root.dump(2) + "\n";
 }
 

@@ -6,6 +6,7 @@
 #include "document/commands/AddFragmentCommand.h"
 #include "document/commands/EditLabelsCommand.h"
 #include "document/commands/SetLegendCommand.h"
+#include "document/commands/SetPlateCommand.h"
 #include "stylos/widgets/annotation/LabelStore.h"
 #include "tasks/ErrorText.h"
 #include "document/commands/RemoveFragmentCommand.h"
@@ -428,6 +429,18 @@ bool SceneDocument::removeLegendClass(AnnotationLayer layer, std::uint8_t classI
     m_undo->push(new SetLegendCommand(*this, std::move(next), text));
     endMacro();
     return true;
+}
+
+bool SceneDocument::setPlate(core::plate::PlateSpec plate)
+{
+    if (m_scene.plate() == plate) return false;
+    m_undo->push(new SetPlateCommand(*this, std::move(plate), CommandText([] { return tr("Keep the plate's settings"); })));
+    return true;
+}
+
+void SceneDocument::changePlate(const std::optional<core::plate::PlateSpec>& plate)
+{
+    m_scene.setPlate(plate);
 }
 
 void SceneDocument::changeLegend(const core::annotation::Legend& legend)

@@ -27,6 +27,7 @@
 
 #include <array>
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,9 @@ struct PlateFragment {
     bool missing = false;           ///< a project's octree that was not found
     scene::Pose pose;               ///< fragment → scene
     bool visible = true;
+    /** Labels held in memory (the workbench's unsaved edits), per layer (material, toolmark), used instead of
+     *  the octree's layers when set; one id per leaf. */
+    std::array<std::shared_ptr<const std::vector<std::uint8_t>>, 2> labels;
 };
 
 struct PlateSources {

@@ -25,7 +25,8 @@
  * [#c8c8c8], "visible" [true], "guides" [[]], "annotations" [""], "assembly" [0], an assembly's "drum"
  * [0] and "visible" [true], "legend" [the default vocabulary, annotation::Legend::defaults()]: the
  * project's annotation classes as annotation/Legend.h writes them (a Malformed legend names the project
- * file, "legend" and the legend's key); "id", "name", "octree" and "pose" are required (an assembly's "id", "name", "pose").
+ * file, "legend" and the legend's key), "plate" [none: written only once a plate was exported]: the last
+ * plate's statement as plate/PlateSpec.h writes it (a Malformed one names "plate" and its key); "id", "name", "octree" and "pose" are required (an assembly's "id", "name", "pose").
  *
  * Load failures name the file and the key: NotFound, Unreadable, Empty; Malformed (not JSON: "line L,
  * column C"; a key of the wrong type or out of range: its path, e.g. "fragments[1].pose"; a duplicate

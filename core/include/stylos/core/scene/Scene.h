@@ -9,6 +9,7 @@
  *        Thread-safety: none (a value type; confine to one thread or copy).
  */
 #include "stylos/core/annotation/Legend.h"
+#include "stylos/core/plate/PlateSpec.h"
 #include "stylos/core/scene/Assembly.h"
 #include "stylos/core/scene/Fragment.h"
 
@@ -94,6 +95,11 @@ public:
     const annotation::Legend& legend() const { return m_legend; }
     void setLegend(annotation::Legend legend) { m_legend = std::move(legend); }
 
+    /** @brief The plate last exported (File › Export plate…), kept so the figure can be made again; none
+     *  until one is. clear() keeps it. */
+    const std::optional<plate::PlateSpec>& plate() const { return m_plate; }
+    void setPlate(std::optional<plate::PlateSpec> plate) { m_plate = std::move(plate); }
+
     bool operator==(const Scene&) const = default;
 
 private:
@@ -102,6 +108,7 @@ private:
     FragmentId m_nextId = 1;
     AssemblyId m_nextAssemblyId = 1;
     annotation::Legend m_legend = annotation::Legend::defaults();
+    std::optional<plate::PlateSpec> m_plate;
 };
 
 } // namespace stylos::core::scene

@@ -177,6 +177,8 @@ public:
     /** @brief Replaces the legend (names, colours, hatches, classes added): one undo step, default text
      *         "Change the legend". False when equal. Removing a class that is used: removeLegendClass(). */
     bool setLegend(core::annotation::Legend legend, const CommandText& text = {});
+    /** @brief Keeps @p plate in the project (one undo step); false when it is the one kept already. */
+    bool setPlate(core::plate::PlateSpec plate);
     /**
      * @brief Removes class @p classId from @p layer; every leaf holding it (in every fragment with labels) gets
      *        @p replacement (0: unlabelled, or another class of the layer). One undo step. False when there is
@@ -245,6 +247,7 @@ private:
     friend class SetSceneStructureCommand;
     friend class EditLabelsCommand;
     friend class SetLegendCommand;
+    friend class SetPlateCommand;
 
     /** Sets the assemblies and the touched fragments' assembly and pose to @p structure's, with the signals. */
     void applyStructure(const SceneStructure& structure);
@@ -263,6 +266,7 @@ private:
 
     LabelStore& labelStore() { return *m_labels; }
     void changeLegend(const core::annotation::Legend& legend);
+    void changePlate(const std::optional<core::plate::PlateSpec>& plate);
     /** Writes the changed labels into their octrees' files; false with @p error at the first failure. */
     bool saveLabels(QString* error);
     /** Takes @p id's labels from its opened octree; a failure goes to the load errors. */

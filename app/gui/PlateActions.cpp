@@ -1,0 +1,166 @@
+// File › Export plate… and Export développée image…
+#include "PlateActions.h"
+
+#include "stylos/core/image/ImageWriter.h"
+#include "stylos/plate/PlateComposer.h"
+#include "stylos/plate/PlateWriter.h"
+#include "stylos/widgets/annotation/LabelStore.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/plate/PlateDialog.h"
+#include "stylos/widgets/tasks/TaskManager.h"
+
+#include <QAction>
+#include <QDir>
+#include <QFileDialog>
+#include <QFileInfo>
+#include <QFutureWatcher>
+#include <QMenu>
+
+namespace stylos::app {
+
+namespace cp = core::plate;
+
+PlateActions::PlateActions(widgets::SceneDocument& document, widgets::DeveloppeeView& developpee, QWidget& window)
+    : QObject(&window), m_document(document), m_view(developpee), m_window(window), m_plate(new QAction(this)),
+      m_developpee(new QAction(this))
+{
+    connect(m_plate, &QAction::triggered, this, &PlateActions::choosePlate);
+    connect(m_developpee, &QAction::triggered, this, &PlateActions::chooseDeveloppee);
+    connect(&m_document, &widgets::SceneDocument::fragmentAdded, this, &PlateActions::updateEnabled);
+    connect(&m_document, &widgets::SceneDocument::fragmentRemoved, this, &PlateActions::updateEnabled);
+    connect(&m_document, &widgets::SceneDocument::sceneReset, this, &PlateActions::updateEnabled);
+    retranslateUi();
+    updateEnabled();
+}
+
+void PlateActions::populate(QMenu& menu, QAction* before)
+{
+    menu.insertAction(before, m_plate);
+    menu.insertAction(before, m_developpee);
+    menu.insertSeparator(before);
+}
+
+void PlateActions::retranslateUi()
+{
+    m_plate->setText(tr("Export &plate…"));
+    m_plate->setStatusTip(tr("A publication plate at an exact scale: développées and orthographic views at 1:N with "
+                             "scale bars, legend and caption, as PDF, SVG, TIFF or PNG"));
+    m_developpee->setText(tr("Export &développée image…"));
+    m_developpee->setStatusTip(tr("The développée on show as PNG or TIFF with its pixel size, and its map (.json) beside it"));
+}
+
+void PlateActions::updateEnabled()
+{
+    m_plate->setEnabled(!m_document.scene().empty());
+}
+
+std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::SceneDocument& document)
+{
+    auto sources = std::make_shared<cp::PlateSources>();
+    const core::scene::Scene& scene = document.scene();
+    sources->source = document.projectPath().isEmpty() ? std::string("the project") : document.projectPath().toStdString();
+    sources->isProject = true;
+    sources->legend = scene.legend();
+    for (const core::scene::Fragment& f : scene.fragments()) {
+        cp::PlateFragment p;
+        p.name = f.name;
+        p.path = f.octreePath;
+        p.missing = f.octreeMissing;
+        p.pose = scene.worldPose(f.id);
+        p.visible = f.visible;
+        p.labels[0] = document.labels().labels(f.id, core::annotation::AnnotationLayer::Material);
+        p.labels[1] = document.labels().labels(f.id, core::annotation::AnnotationLayer::Toolmark);
+        sources->fragments.push_back(std::move(p));
+    }
+    return sources;
+}
+
+void PlateActions::choosePlate()
+{
+    const auto sources = sourcesOf(m_document);
+    const cp::PlateSpec start = m_document.scene().plate().value_or(widgets::PlateDialog::defaultSpec(*sources));
+    widgets::PlateDialog dialog(sources, start, &m_window);
+    if (dialog.exec() != QDialog::Accepted) return;
+    const cp::PlateSpec spec = dialog.spec();
+    m_document.setPlate(spec);
+    const QString path = QFileDialog::getSaveFileName(
+        &m_window, tr("Export plate"), QString(),
+        tr("PDF (*.pdf);;SVG (*.svg);;TIFF (*.tif *.tiff);;PNG (*.png)"));
+    if (path.isEmpty()) return;
+    exportPlate(spec, path);
+}
+
+void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
+{
+    const auto sources = sourcesOf(m_document);
+    struct Outcome {
+        QString error;
+    };
+    const QString name = QFileInfo(path).fileName();
+    auto* watcher = m_document.tasks().start<Outcome>(
+        tr("Drawing the plate %1").arg(name),
+        [sources, spec, file = path.toStdString()](QPromise<Outcome>& promise, core::ProgressSink& progress) {
+            Outcome out;
+            auto plate = plate::composePlate(*sources, spec, {}, &progress);
+            if (!plate) out.error = QString::fromStdString(plate.error().message);
+            else if (auto s = plate::writePlate(*plate, file); !s) out.error = QString::fromStdString(s.error().message);
+            promise.addResult(out);
+        });
+    connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher, path] {
+        if (watcher->isCanceled() || watcher->future().resultCount() == 0) {
+            Q_EMIT reported(tr("Drawing the plate was cancelled"), false);
+            Q_EMIT plateFinished(false);
+            return;
+        }
+        const Outcome o = watcher->result();
+        if (o.error.isEmpty()) Q_EMIT reported(tr("Wrote the plate %1").arg(QDir::toNativeSeparators(path)), false);
+        else Q_EMIT reported(tr("Could not draw the plate: %1").arg(o.error), true);
+        Q_EMIT plateFinished(o.error.isEmpty());
+    });
+}
+
+void PlateActions::chooseDeveloppee()
+{
+    if (!m_view.hasDeveloppee()) {
+        Q_EMIT reported(tr("There is no développée to export: compute one first (Tools › Développée)"), true);
+        return;
+    }
+    const QString path = QFileDialog::getSaveFileName(&m_window, tr("Export développée image"), QString(),
+                                                      tr("PNG (*.png);;TIFF (*.tif *.tiff)"));
+    if (!path.isEmpty()) exportDeveloppee(path);
+}
+
+bool PlateActions::exportDeveloppee(const QString& path)
+{
+    if (!m_view.hasDeveloppee()) return false;
+    const QImage image = m_view.image().convertToFormat(QImage::Format_ARGB32);
+    core::shading::ShadedImage shaded;
+    shaded.width = image.width();
+    shaded.height = image.height();
+    shaded.pixelSize = m_view.map()->pixelSize();
+    shaded.values.resize(std::size_t(shaded.width) * std::size_t(shaded.height));
+    shaded.coverage.resize(shaded.values.size());
+    for (int y = 0; y < image.height(); ++y) {
+        const QRgb* line = reinterpret_cast<const QRgb*>(image.constScanLine(y));
+        for (int x = 0; x < image.width(); ++x) {
+            const std::size_t k = std::size_t(y) * std::size_t(shaded.width) + std::size_t(x);
+            shaded.coverage[k] = qAlpha(line[x]) > 0;
+            shaded.values[k] = shaded.coverage[k] ? float(qGray(line[x])) / 255.0f : 0.0f;
+        }
+    }
+    core::image::ImageWriteOptions options;
+    options.metadata = {{"stylos:source", QFileInfo(path).fileName().toStdString()}};
+    if (auto s = core::image::writeShadedImage(shaded, path.toStdString(), options); !s) {
+        Q_EMIT reported(tr("Could not export the développée: %1").arg(QString::fromStdString(s.error().message)), true);
+        return false;
+    }
+    if (auto s = m_view.map()->writeSidecar((path + QStringLiteral(".json")).toStdString()); !s) {
+        Q_EMIT reported(tr("Could not write the développée's map: %1").arg(QString::fromStdString(s.error().message)), true);
+        return false;
+    }
+    Q_EMIT reported(tr("Wrote the développée %1 and its map").arg(QDir::toNativeSeparators(path)), false);
+    return true;
+}
+
+} // namespace stylos::app

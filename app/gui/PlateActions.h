@@ -1,0 +1,67 @@
+#pragma once
+/** @file
+ * @brief File › Export plate… and File › Export développée image…: the actions and their handlers.
+ *        Export plate opens the plate dialog (widgets/plate/PlateDialog) on the project's kept plate (or a
+ *        default), keeps the stated plate in the project (one undo step), asks for the file (PDF, SVG, TIFF, PNG)
+ *        and draws it at full resolution as a background task (the Tasks dock shows it; the plate reads the
+ *        document's labels as they are, saved or not). Export développée image writes the développée on show
+ *        as PNG or TIFF with its pixel size in the file, and its map sidecar (OUT.json) beside it.
+ *        Outcomes go out as messages (reported()). GUI thread only.
+ */
+#include "stylos/core/plate/PlateSources.h"
+
+#include <QObject>
+
+#include <memory>
+
+class QAction;
+class QMenu;
+class QWidget;
+
+namespace stylos::widgets {
+class DeveloppeeView;
+class SceneDocument;
+} // namespace stylos::widgets
+
+namespace stylos::app {
+
+class PlateActions : public QObject {
+    Q_OBJECT
+
+public:
+    PlateActions(widgets::SceneDocument& document, widgets::DeveloppeeView& developpee, QWidget& window);
+
+    /** @brief Adds the actions to @p menu (File) before @p before (Quit), with a separator. */
+    void populate(QMenu& menu, QAction* before);
+    void retranslateUi();
+
+    /** @brief What a plate of the document is made from: every fragment with its world pose, visibility, octree
+     *         and labels as the document holds them, and the project's legend. */
+    static std::shared_ptr<const core::plate::PlateSources> sourcesOf(const widgets::SceneDocument& document);
+
+    /** @brief Draws @p spec into @p path as a background task (no dialog; automation and tests). */
+    void exportPlate(const core::plate::PlateSpec& spec, const QString& path);
+    /** @brief Writes the développée on show to @p path (PNG or TIFF) and its sidecar; false with a report. */
+    bool exportDeveloppee(const QString& path);
+
+    QAction* plateAction() const { return m_plate; }
+    QAction* developpeeAction() const { return m_developpee; }
+
+Q_SIGNALS:
+    void reported(const QString& message, bool failed);
+    /** @brief An export task ended (written, failed or cancelled). */
+    void plateFinished(bool written);
+
+private:
+    void choosePlate();
+    void chooseDeveloppee();
+    void updateEnabled();
+
+    widgets::SceneDocument& m_document;
+    widgets::DeveloppeeView& m_view;
+    QWidget& m_window;
+    QAction* m_plate;
+    QAction* m_developpee;
+};
+
+} // namespace stylos::app

@@ -1,0 +1,154 @@
+// File › Export plate… on a generated drum in a document: the dialog's preview is the real plate (drawn, Export
+// enabled) and a scale that does not fit says which would (Export disabled); the dialog states back what it was
+// given; the plate drawn as a task reads the document's unsaved labels; the plate kept in the project is one undo
+// step and comes back from the saved project file; exporting a développée with none on show is refused.
+#include "SceneTestSupport.h"
+#include "WidgetTestSupport.h"
+
+#include "PlateActions.h"
+#include "stylos/core/annotation/LeafLabels.h"
+#include "stylos/core/scene/ProjectFile.h"
+#include "stylos/plate/PlateComposer.h"
+#include "stylos/widgets/annotation/LabelStore.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/plate/PlateDialog.h"
+#include "stylos/widgets/tasks/TaskManager.h"
+
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QLabel>
+#include <QPushButton>
+#include <QSignalSpy>
+#include <QTableWidget>
+#include <QTemporaryDir>
+#include <QUndoStack>
+#include <QtTest>
+
+using namespace stylos;
+namespace cp = core::plate;
+using core::annotation::AnnotationLayer;
+
+class PlateExportTest : public QObject {
+    Q_OBJECT
+
+private Q_SLOTS:
+    void initTestCase();
+    void previewDrawsAndRefusesWhatDoesNotFit();
+    void exportDrawsUnsavedLabelsAndKeepsThePlate();
+
+private:
+    core::scene::FragmentId addDrum(widgets::SceneDocument& document) const;
+    static cp::PlateSpec spec(double scale)
+    {
+        cp::PlateSpec s;
+        s.landscape = true;
+        s.dpi = 150;
+        s.caption = "Drum, développée";
+        cp::PanelSpec p;
+        p.scale = scale;
+        p.layer = AnnotationLayer::Material;
+        s.panels = {p};
+        return s;
+    }
+
+    QTemporaryDir m_dir;
+    QString m_octree;
+};
+
+void PlateExportTest::initTestCase()
+{
+    QVERIFY(m_dir.isValid());
+    const QString scan = test::generateScanFile(m_dir.path(), QStringLiteral("drum.ply"), core::synth::SyntheticKind::Drum, 0.01, true);
+    m_octree = QDir(m_dir.path()).absoluteFilePath(QStringLiteral("drum.poct"));
+    core::octree::BuildOptions options;
+    options.depth = 8;
+    options.threads = 1;
+    QVERIFY(core::octree::buildOctreeFile(scan.toStdString(), m_octree.toStdString(), options).ok());
+}
+
+core::scene::FragmentId PlateExportTest::addDrum(widgets::SceneDocument& document) const
+{
+    auto opened = core::octree::PackedOctree::open(m_octree.toStdString());
+    if (!opened) return 0;
+    core::scene::Fragment f;
+    f.name = "Drum 2";
+    f.octreePath = m_octree.toStdString();
+    return document.addFragment(f, std::make_shared<const core::octree::PackedOctree>(std::move(opened).value()));
+}
+
+void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
+{
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    QVERIFY(addDrum(document) != 0);
+    widgets::PlateDialog dialog(app::PlateActions::sourcesOf(document), spec(20));
+    QSignalSpy updated(&dialog, &widgets::PlateDialog::previewUpdated);
+    QVERIFY(updated.wait(60000));
+    QVERIFY2(dialog.messageLabel()->text().isEmpty(), qPrintable(dialog.messageLabel()->text()));
+    QVERIFY(!dialog.previewImage().isNull());
+    QVERIFY(dialog.previewImage().width() > dialog.previewImage().height()); // landscape
+    QVERIFY(dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+    QCOMPARE(dialog.spec(), spec(20));
+
+    auto* scale = qobject_cast<QDoubleSpinBox*>(dialog.panelTable()->cellWidget(0, 1));
+    QVERIFY(scale);
+    scale->setValue(2);
+    QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+    QVERIFY(updated.wait(60000));
+    QVERIFY2(dialog.messageLabel()->text().contains(QStringLiteral("use 1:")), qPrintable(dialog.messageLabel()->text()));
+    QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+}
+
+void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()
+{
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    const auto id = addDrum(document);
+    QVERIFY(id != 0);
+    const auto held = document.labels().labels(id, AnnotationLayer::Material);
+    QVERIFY(held);
+    std::vector<std::uint32_t> leaves(held->size());
+    for (std::uint32_t i = 0; i < leaves.size(); ++i) leaves[i] = i;
+    QVERIFY(document.setLabels(id, AnnotationLayer::Material, leaves, 3, QStringLiteral("Paint")));
+
+    // The plate's sources carry the document's labels, not the file's zeros.
+    const auto sources = app::PlateActions::sourcesOf(document);
+    auto plate = plate::composePlate(*sources, spec(20), {});
+    QVERIFY2(plate.ok(), plate.ok() ? "" : plate.error().message.c_str());
+    const auto& classes = plate->panels[0].image.classes;
+    QVERIFY(std::count(classes.begin(), classes.end(), std::uint8_t(3)) > 0);
+    QCOMPARE(plate->panels[0].image.channels, 3); // tinted in the legend's colour
+
+    QWidget window;
+    widgets::DeveloppeeView view;
+    app::PlateActions actions(document, view, window);
+    QVERIFY(actions.plateAction()->isEnabled());
+    QVERIFY(!actions.exportDeveloppee(m_dir.filePath(QStringLiteral("none.png"))));
+    QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
+    const QString pdf = m_dir.filePath(QStringLiteral("plate.pdf"));
+    actions.exportPlate(spec(20), pdf);
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.at(0).at(0).toBool(), true);
+    QFile file(pdf);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QCOMPARE(file.read(5), QByteArray("%PDF-"));
+
+    // Kept in the project: one undo step, saved and read back.
+    const int steps = document.undoStack()->count();
+    QVERIFY(document.setPlate(spec(20)));
+    QVERIFY(!document.setPlate(spec(20)));
+    QCOMPARE(document.undoStack()->count(), steps + 1);
+    const QString project = m_dir.filePath(QStringLiteral("p.stylos"));
+    QString error;
+    QVERIFY2(document.saveAs(project, &error), qPrintable(error));
+    const auto loaded = core::scene::ProjectFile::load(project.toStdString());
+    QVERIFY(loaded.ok());
+    QVERIFY(loaded->scene.plate().has_value());
+    QCOMPARE(*loaded->scene.plate(), spec(20));
+    document.undoStack()->undo();
+    QVERIFY(!document.scene().plate().has_value());
+}
+
+STYLOS_WIDGET_TEST_MAIN(PlateExportTest)
+#include "PlateExportTest.moc"

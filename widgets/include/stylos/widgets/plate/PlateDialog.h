@@ -1,0 +1,88 @@
+#pragma once
+/** @file
+ * @brief File › Export plate…: the plate's statement (page, orientation, margins, dpi, bits, caption, legend,
+ *        panels with their view, 1:N, shading, annotation layer, hatches and fragment; templates that fill the
+ *        panels) beside a live preview of the page. The preview is the real plate (stylos_plate's composer and
+ *        painter) at a screen resolution, recomputed in a worker thread a moment after the last change; what
+ *        does not fit says so ("use 1:18 or smaller") and the Export button waits until it fits.
+ *        GUI thread only; the preview's work runs on Qt's global thread pool.
+ */
+#include "stylos/core/plate/PlateSources.h"
+#include "stylos/core/plate/PlateSpec.h"
+
+#include <QDialog>
+#include <QImage>
+
+#include <memory>
+
+class QCheckBox;
+class QComboBox;
+class QDialogButtonBox;
+class QDoubleSpinBox;
+class QLabel;
+class QPlainTextEdit;
+class QSpinBox;
+class QTableWidget;
+class QTimer;
+
+namespace stylos::widgets {
+
+class PlateDialog : public QDialog {
+    Q_OBJECT
+
+public:
+    /** @p sources: what the plate is made from (the document's fragments, poses, labels and legend). */
+    PlateDialog(std::shared_ptr<const core::plate::PlateSources> sources, const core::plate::PlateSpec& spec,
+                QWidget* parent = nullptr);
+    ~PlateDialog() override;
+
+    /** @brief The plate as stated in the dialog now. */
+    core::plate::PlateSpec spec() const;
+    void setSpec(const core::plate::PlateSpec& spec);
+
+    /** @brief A plate for a project with no stated plate: the développée of the first fragment at a scale that fits
+     *         A4 landscape, with the material layer when it holds labels. */
+    static core::plate::PlateSpec defaultSpec(const core::plate::PlateSources& sources);
+
+    // For tests.
+    QLabel* previewLabel() const { return m_preview; }
+    QLabel* messageLabel() const { return m_message; }
+    QTableWidget* panelTable() const { return m_panels; }
+    QDialogButtonBox* buttons() const { return m_buttons; }
+    QComboBox* templateBox() const { return m_template; }
+    /** @brief Whether a preview is being computed or waits for its turn. */
+    bool previewPending() const;
+    const QImage& previewImage() const { return m_image; }
+
+Q_SIGNALS:
+    /** @brief A preview finished (drawn, or refused with a message). */
+    void previewUpdated();
+
+private:
+    void addPanelRow(const core::plate::PanelSpec& panel);
+    void applyTemplate(int index);
+    void schedulePreview();
+    void startPreview();
+    void retranslateUi();
+
+    std::shared_ptr<const core::plate::PlateSources> m_sources;
+    QComboBox* m_page;
+    QCheckBox* m_landscape;
+    QDoubleSpinBox* m_margin;
+    QSpinBox* m_dpi;
+    QComboBox* m_bits;
+    QCheckBox* m_legend;
+    QPlainTextEdit* m_caption;
+    QComboBox* m_template;
+    QTableWidget* m_panels;
+    QLabel* m_preview;
+    QLabel* m_message;
+    QDialogButtonBox* m_buttons;
+    QTimer* m_timer;
+    QImage m_image;
+    bool m_running = false;
+    bool m_again = false;
+    std::shared_ptr<bool> m_alive;
+};
+
+} // namespace stylos::widgets

@@ -1,0 +1,363 @@
+// File › Export plate…: the plate's statement and a live preview of the page.
+#include "stylos/widgets/plate/PlateDialog.h"
+
+#include "stylos/plate/PlateComposer.h"
+#include "stylos/plate/PlatePainter.h"
+
+#include <QCheckBox>
+#include <QComboBox>
+#include <QDialogButtonBox>
+#include <QDoubleSpinBox>
+#include <QFormLayout>
+#include <QFutureWatcher>
+#include <QGroupBox>
+#include <QHBoxLayout>
+#include <QHeaderView>
+#include <QLabel>
+#include <QPainter>
+#include <QPlainTextEdit>
+#include <QPushButton>
+#include <QSpinBox>
+#include <QTableWidget>
+#include <QTimer>
+#include <QVBoxLayout>
+#include <QtConcurrent/QtConcurrentRun>
+
+#include <cmath>
+#include <numbers>
+
+namespace stylos::widgets {
+
+namespace {
+
+namespace cp = core::plate;
+
+constexpr int kPreviewDpi = 72; // the lowest a plate takes
+constexpr int kPreviewHeight = 520;
+enum Column { ViewColumn, ScaleColumn, ShadingColumn, LayerColumn, HatchColumn, FragmentColumn, ColumnCount };
+const char* const kPages[] = {"A4", "A3", "letter", "170x105", "205x135"};
+
+struct Preview {
+    QImage image;
+    QString error;
+};
+
+QString viewText(cp::PanelView v)
+{
+    switch (v) {
+    case cp::PanelView::Developpee: return PlateDialog::tr("Développée");
+    case cp::PanelView::Front: return PlateDialog::tr("Front");
+    case cp::PanelView::Back: return PlateDialog::tr("Back");
+    case cp::PanelView::Left: return PlateDialog::tr("Left");
+    case cp::PanelView::Right: return PlateDialog::tr("Right");
+    case cp::PanelView::Top: return PlateDialog::tr("Top");
+    case cp::PanelView::Bottom: return PlateDialog::tr("Bottom");
+    }
+    return {};
+}
+
+QString shadingText(cp::PanelShading s)
+{
+    switch (s) {
+    case cp::PanelShading::Skydome: return PlateDialog::tr("Skydome");
+    case cp::PanelShading::Light: return PlateDialog::tr("Light");
+    case cp::PanelShading::Height: return PlateDialog::tr("Height");
+    case cp::PanelShading::Headlight: return PlateDialog::tr("Headlight");
+    }
+    return {};
+}
+
+Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, cp::PlateSpec spec)
+{
+    Preview out;
+    spec.dpi = kPreviewDpi;
+    auto plate = plate::composePlate(*sources, spec, {});
+    if (!plate) {
+        out.error = QString::fromStdString(plate.error().message);
+        return out;
+    }
+    const auto& page = plate->layout.page;
+    const double pxPerMm = kPreviewHeight / std::max(page.widthMm, page.heightMm); // the longer side fits
+    out.image = QImage(int(std::lround(page.widthMm * pxPerMm)), int(std::lround(page.heightMm * pxPerMm)), QImage::Format_RGB32);
+    out.image.fill(Qt::white);
+    QPainter painter(&out.image);
+    painter.scale(pxPerMm, pxPerMm);
+    plate::paintPlate(painter, *plate);
+    return out;
+}
+
+} // namespace
+
+PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const cp::PlateSpec& spec, QWidget* parent)
+    : QDialog(parent), m_sources(std::move(sources)), m_page(new QComboBox(this)), m_landscape(new QCheckBox(this)),
+      m_margin(new QDoubleSpinBox(this)), m_dpi(new QSpinBox(this)), m_bits(new QComboBox(this)),
+      m_legend(new QCheckBox(this)), m_caption(new QPlainTextEdit(this)), m_template(new QComboBox(this)),
+      m_panels(new QTableWidget(0, ColumnCount, this)), m_preview(new QLabel(this)), m_message(new QLabel(this)),
+      m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)), m_timer(new QTimer(this))
+{
+    for (const char* p : kPages) m_page->addItem(QString::fromLatin1(p), QString::fromLatin1(p));
+    m_margin->setRange(0, 60);
+    m_margin->setDecimals(1);
+    m_margin->setSuffix(QStringLiteral(" mm"));
+    m_dpi->setRange(72, 2400);
+    m_dpi->setSingleStep(100);
+    m_bits->addItem(QStringLiteral("8"), 8);
+    m_bits->addItem(QStringLiteral("16"), 16);
+    m_caption->setMaximumHeight(70);
+    m_panels->verticalHeader()->setVisible(false);
+    m_panels->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    m_panels->setSelectionBehavior(QAbstractItemView::SelectRows);
+    m_preview->setAlignment(Qt::AlignCenter);
+    m_preview->setMinimumSize(kPreviewHeight + 20, kPreviewHeight + 20);
+    m_message->setWordWrap(true);
+
+    auto* pageForm = new QFormLayout;
+    pageForm->addRow(tr("Page"), m_page);
+    pageForm->addRow(QString(), m_landscape);
+    pageForm->addRow(tr("Margins"), m_margin);
+    pageForm->addRow(tr("Resolution (dpi)"), m_dpi);
+    pageForm->addRow(tr("Bits per sample (TIFF, PNG)"), m_bits);
+    pageForm->addRow(QString(), m_legend);
+    pageForm->addRow(tr("Template"), m_template);
+    pageForm->addRow(tr("Caption"), m_caption);
+
+    auto* add = new QPushButton(tr("Add panel"), this);
+    auto* remove = new QPushButton(tr("Remove panel"), this);
+    auto* rowButtons = new QHBoxLayout;
+    rowButtons->addWidget(add);
+    rowButtons->addWidget(remove);
+    rowButtons->addStretch();
+
+    auto* left = new QVBoxLayout;
+    left->addLayout(pageForm);
+    left->addWidget(new QLabel(tr("Panels"), this));
+    left->addWidget(m_panels, 1);
+    left->addLayout(rowButtons);
+    left->addWidget(m_message);
+    auto* columns = new QHBoxLayout;
+    columns->addLayout(left, 1);
+    columns->addWidget(m_preview);
+    auto* layout = new QVBoxLayout(this);
+    layout->addLayout(columns, 1);
+    layout->addWidget(m_buttons);
+
+    m_timer->setSingleShot(true);
+    m_timer->setInterval(350);
+    connect(m_timer, &QTimer::timeout, this, &PlateDialog::startPreview);
+    connect(m_buttons, &QDialogButtonBox::accepted, this, &QDialog::accept);
+    connect(m_buttons, &QDialogButtonBox::rejected, this, &QDialog::reject);
+    connect(add, &QPushButton::clicked, this, [this] {
+        cp::PanelSpec panel;
+        panel.view = cp::PanelView::Front;
+        panel.scale = m_panels->rowCount() > 0 ? qobject_cast<QDoubleSpinBox*>(m_panels->cellWidget(0, ScaleColumn))->value() : 10;
+        panel.shading = cp::PanelShading::Headlight;
+        addPanelRow(panel);
+        schedulePreview();
+    });
+    connect(remove, &QPushButton::clicked, this, [this] {
+        const int row = m_panels->currentRow();
+        if (row >= 0 && m_panels->rowCount() > 1) m_panels->removeRow(row);
+        schedulePreview();
+    });
+    connect(m_template, &QComboBox::activated, this, &PlateDialog::applyTemplate);
+    connect(m_page, &QComboBox::currentIndexChanged, this, &PlateDialog::schedulePreview);
+    connect(m_landscape, &QCheckBox::toggled, this, &PlateDialog::schedulePreview);
+    connect(m_margin, &QDoubleSpinBox::valueChanged, this, &PlateDialog::schedulePreview);
+    connect(m_legend, &QCheckBox::toggled, this, &PlateDialog::schedulePreview);
+    connect(m_caption, &QPlainTextEdit::textChanged, this, &PlateDialog::schedulePreview);
+
+    retranslateUi();
+    setSpec(spec);
+    resize(1400, 720);
+}
+
+PlateDialog::~PlateDialog() = default;
+
+void PlateDialog::retranslateUi()
+{
+    setWindowTitle(tr("Export plate"));
+    m_landscape->setText(tr("Landscape"));
+    m_legend->setText(tr("Legend of the annotation classes"));
+    m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Export…"));
+    m_panels->setHorizontalHeaderLabels({tr("View"), tr("Scale 1:"), tr("Shading"), tr("Annotation"), tr("Hatches"), tr("Fragment")});
+    m_template->clear();
+    m_template->addItem(tr("Choose a template…"));
+    m_template->addItem(tr("Développée"));
+    m_template->addItem(tr("Développée and front view"));
+    m_template->addItem(tr("Front, right and top views"));
+}
+
+void PlateDialog::addPanelRow(const cp::PanelSpec& panel)
+{
+    const int row = m_panels->rowCount();
+    m_panels->insertRow(row);
+    auto* view = new QComboBox;
+    for (int v = 0; v <= int(cp::PanelView::Bottom); ++v) view->addItem(viewText(cp::PanelView(v)), v);
+    view->setCurrentIndex(int(panel.view));
+    auto* scale = new QDoubleSpinBox;
+    scale->setRange(1, 1e6);
+    scale->setDecimals(1);
+    scale->setValue(panel.scale);
+    auto* shading = new QComboBox;
+    auto fillShading = [shading](cp::PanelView v, cp::PanelShading current) {
+        const QSignalBlocker block(shading);
+        shading->clear();
+        const bool dev = v == cp::PanelView::Developpee;
+        for (const auto s : dev ? std::vector{cp::PanelShading::Skydome, cp::PanelShading::Light, cp::PanelShading::Height}
+                                : std::vector{cp::PanelShading::Skydome, cp::PanelShading::Headlight})
+            shading->addItem(shadingText(s), int(s));
+        const int at = shading->findData(int(current));
+        shading->setCurrentIndex(at >= 0 ? at : 0);
+    };
+    fillShading(panel.view, panel.shading);
+    auto* layer = new QComboBox;
+    layer->addItem(tr("None"), -1);
+    layer->addItem(tr("Material / condition"), int(core::annotation::AnnotationLayer::Material));
+    layer->addItem(tr("Tool marks"), int(core::annotation::AnnotationLayer::Toolmark));
+    layer->setCurrentIndex(panel.layer ? (*panel.layer == core::annotation::AnnotationLayer::Material ? 1 : 2) : 0);
+    auto* hatches = new QCheckBox;
+    hatches->setChecked(panel.hatches);
+    auto* fragment = new QComboBox;
+    fragment->addItem(tr("(all visible; the first for a développée)"), QString());
+    for (const cp::PlateFragment& f : m_sources->fragments)
+        fragment->addItem(QString::fromStdString(f.name), QString::fromStdString(f.name));
+    const int at = fragment->findData(QString::fromStdString(panel.fragment));
+    fragment->setCurrentIndex(at >= 0 ? at : 0);
+    m_panels->setCellWidget(row, ViewColumn, view);
+    m_panels->setCellWidget(row, ScaleColumn, scale);
+    m_panels->setCellWidget(row, ShadingColumn, shading);
+    m_panels->setCellWidget(row, LayerColumn, layer);
+    m_panels->setCellWidget(row, HatchColumn, hatches);
+    m_panels->setCellWidget(row, FragmentColumn, fragment);
+    connect(view, &QComboBox::currentIndexChanged, this, [this, view, shading, fillShading] {
+        fillShading(cp::PanelView(view->currentData().toInt()), cp::PanelShading(shading->currentData().toInt()));
+        schedulePreview();
+    });
+    connect(scale, &QDoubleSpinBox::valueChanged, this, &PlateDialog::schedulePreview);
+    connect(shading, &QComboBox::currentIndexChanged, this, &PlateDialog::schedulePreview);
+    connect(layer, &QComboBox::currentIndexChanged, this, &PlateDialog::schedulePreview);
+    connect(hatches, &QCheckBox::toggled, this, &PlateDialog::schedulePreview);
+    connect(fragment, &QComboBox::currentIndexChanged, this, &PlateDialog::schedulePreview);
+}
+
+cp::PlateSpec PlateDialog::spec() const
+{
+    cp::PlateSpec s;
+    s.pageName = m_page->currentData().toString().toStdString();
+    s.page = cp::pageFromName(s.pageName).value_or(cp::PageSize{});
+    s.landscape = m_landscape->isChecked();
+    s.marginMm = m_margin->value();
+    s.dpi = m_dpi->value();
+    s.bits = m_bits->currentData().toInt();
+    s.legend = m_legend->isChecked();
+    s.caption = m_caption->toPlainText().toStdString();
+    for (int row = 0; row < m_panels->rowCount(); ++row) {
+        cp::PanelSpec p;
+        p.view = cp::PanelView(qobject_cast<QComboBox*>(m_panels->cellWidget(row, ViewColumn))->currentData().toInt());
+        p.scale = qobject_cast<QDoubleSpinBox*>(m_panels->cellWidget(row, ScaleColumn))->value();
+        p.shading = cp::PanelShading(qobject_cast<QComboBox*>(m_panels->cellWidget(row, ShadingColumn))->currentData().toInt());
+        const int layer = qobject_cast<QComboBox*>(m_panels->cellWidget(row, LayerColumn))->currentData().toInt();
+        if (layer >= 0) p.layer = core::annotation::AnnotationLayer(layer);
+        p.hatches = qobject_cast<QCheckBox*>(m_panels->cellWidget(row, HatchColumn))->isChecked();
+        p.fragment = qobject_cast<QComboBox*>(m_panels->cellWidget(row, FragmentColumn))->currentData().toString().toStdString();
+        s.panels.push_back(p);
+    }
+    return s;
+}
+
+void PlateDialog::setSpec(const cp::PlateSpec& spec)
+{
+    {
+        const QSignalBlocker a(m_page), b(m_landscape), c(m_margin), d(m_legend), e(m_caption);
+        int page = m_page->findData(QString::fromStdString(spec.pageName));
+        if (page < 0) {
+            m_page->addItem(QString::fromStdString(spec.pageName), QString::fromStdString(spec.pageName));
+            page = m_page->count() - 1;
+        }
+        m_page->setCurrentIndex(page);
+        m_landscape->setChecked(spec.landscape);
+        m_margin->setValue(spec.marginMm);
+        m_dpi->setValue(spec.dpi);
+        m_bits->setCurrentIndex(spec.bits == 16 ? 1 : 0);
+        m_legend->setChecked(spec.legend);
+        m_caption->setPlainText(QString::fromStdString(spec.caption));
+        m_panels->setRowCount(0);
+        for (const cp::PanelSpec& p : spec.panels) addPanelRow(p);
+    }
+    schedulePreview();
+}
+
+cp::PlateSpec PlateDialog::defaultSpec(const cp::PlateSources& sources)
+{
+    cp::PlateSpec spec;
+    spec.landscape = true;
+    cp::PanelSpec panel;
+    panel.scale = 10;
+    spec.panels = {panel};
+    (void)sources;
+    return spec;
+}
+
+void PlateDialog::applyTemplate(int index)
+{
+    if (index <= 0) return;
+    const double scale = m_panels->rowCount() > 0 ? qobject_cast<QDoubleSpinBox*>(m_panels->cellWidget(0, ScaleColumn))->value() : 10;
+    cp::PlateSpec s = spec();
+    cp::PanelSpec dev;
+    dev.scale = scale;
+    cp::PanelSpec front;
+    front.view = cp::PanelView::Front;
+    front.scale = scale;
+    front.shading = cp::PanelShading::Headlight;
+    if (index == 1) s.panels = {dev};
+    else if (index == 2) s.panels = {dev, front};
+    else {
+        cp::PanelSpec right = front, top = front;
+        right.view = cp::PanelView::Right;
+        top.view = cp::PanelView::Top;
+        s.panels = {front, right, top};
+    }
+    m_template->setCurrentIndex(0);
+    setSpec(s);
+}
+
+bool PlateDialog::previewPending() const { return m_running || m_again || m_timer->isActive(); }
+
+void PlateDialog::schedulePreview()
+{
+    m_buttons->button(QDialogButtonBox::Ok)->setEnabled(false);
+    m_message->setText(tr("Drawing the preview…"));
+    m_timer->start();
+}
+
+void PlateDialog::startPreview()
+{
+    if (m_running) {
+        m_again = true;
+        return;
+    }
+    m_running = true;
+    auto* watcher = new QFutureWatcher<Preview>(this);
+    connect(watcher, &QFutureWatcher<Preview>::finished, this, [this, watcher] {
+        const Preview p = watcher->result();
+        watcher->deleteLater();
+        m_running = false;
+        if (m_again) {
+            m_again = false;
+            startPreview();
+            return;
+        }
+        if (p.error.isEmpty()) {
+            m_image = p.image;
+            m_preview->setPixmap(QPixmap::fromImage(p.image));
+            m_message->clear();
+        } else {
+            m_message->setText(p.error);
+        }
+        m_buttons->button(QDialogButtonBox::Ok)->setEnabled(p.error.isEmpty());
+        Q_EMIT previewUpdated();
+    });
+    watcher->setFuture(QtConcurrent::run([sources = m_sources, spec = spec()] { return computePreview(sources, spec); }));
+}
+
+} // namespace stylos::widgets
