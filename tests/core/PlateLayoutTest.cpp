@@ -3,6 +3,7 @@
 // with the scale that would fit, nothing placed then).
 #include "stylos/core/plate/PlateLayout.h"
 #include "stylos/core/plate/ScaleBar.h"
+#include "stylos/core/scene/ProjectFile.h"
 
 #include <nlohmann/json.hpp>
 
@@ -191,4 +192,33 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     const auto crowded = layoutPlate(s, std::span(&tall, 1), 0, 40);
     ASSERT_FALSE(crowded.ok());
     EXPECT_NE(crowded.error().message.find("of height"), std::string::npos) << crowded.error().message;
+}
+
+TEST(PlateSpec, TheProjectKeepsItsPlate)
+{
+    using stylos::core::scene::ProjectFile;
+    stylos::core::scene::Scene scene;
+    const auto none = ProjectFile::fromJson(ProjectFile::toJson(scene, "/p/a.stylos"), "/p/a.stylos");
+    ASSERT_TRUE(none.ok());
+    EXPECT_FALSE(none->scene.plate().has_value());
+    EXPECT_EQ(ProjectFile::toJson(scene, "/p/a.stylos").find("\"plate\""), std::string::npos);
+
+    PlateSpec plate;
+    PanelSpec p;
+    p.scale = 25;
+    p.layer = stylos::core::annotation::AnnotationLayer::Toolmark;
+    plate.panels = {p};
+    plate.caption = "Drum 2";
+    scene.setPlate(plate);
+    const auto back = ProjectFile::fromJson(ProjectFile::toJson(scene, "/p/a.stylos"), "/p/a.stylos");
+    ASSERT_TRUE(back.ok()) << back.error().message;
+    ASSERT_TRUE(back->scene.plate().has_value());
+    EXPECT_EQ(*back->scene.plate(), plate);
+
+    auto json = nlohmann::json::parse(ProjectFile::toJson(scene, "/p/a.stylos"));
+    json["plate"]["panels"][0]["layer"] = "paint";
+    const auto bad = ProjectFile::fromJson(json.dump(), "/p/a.stylos");
+    ASSERT_FALSE(bad.ok());
+    EXPECT_NE(bad.error().message.find("plate"), std::string::npos) << bad.error().message;
+    EXPECT_NE(bad.error().message.find("panels[0].layer"), std::string::npos) << bad.error().message;
 }
