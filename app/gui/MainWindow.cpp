@@ -182,6 +182,11 @@ void MainWindow::createMenus()
     m_plates = new PlateActions(*m_document, *m_developpeeDock->panel().view(), *this);
     m_plates->populate(*m_fileMenu, m_projectActions->quitAction());
     connect(m_plates, &PlateActions::reported, this, &MainWindow::report);
+    m_plates->setCameraSource([this]() -> std::optional<std::array<double, 4>> {
+        if (!m_viewport) return std::nullopt;
+        const Eigen::Quaterniond q = m_viewport->camera().orientation();
+        return std::array<double, 4>{q.w(), q.x(), q.y(), q.z()};
+    });
 
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));

@@ -80,7 +80,9 @@ void PlateActions::choosePlate()
 {
     const auto sources = sourcesOf(m_document);
     const cp::PlateSpec start = m_document.scene().plate().value_or(widgets::PlateDialog::defaultSpec(*sources));
-    widgets::PlateDialog dialog(sources, start, &m_window);
+    widgets::PlateDialog dialog(sources, cp::PlateSpec{}, &m_window);
+    if (m_camera) dialog.setCurrentCamera(m_camera());
+    dialog.setSpec(start);
     if (dialog.exec() != QDialog::Accepted) return;
     const cp::PlateSpec spec = dialog.spec();
     m_document.setPlate(spec);

@@ -12,7 +12,10 @@
 
 #include <QObject>
 
+#include <array>
+#include <functional>
 #include <memory>
+#include <optional>
 
 class QAction;
 class QMenu;
@@ -39,6 +42,9 @@ public:
      *         and labels as the document holds them, and the project's legend. */
     static std::shared_ptr<const core::plate::PlateSources> sourcesOf(const widgets::SceneDocument& document);
 
+    /** @brief Where the dialog reads the 3D view's camera from (offered as "Current view"); none by default. */
+    void setCameraSource(std::function<std::optional<std::array<double, 4>>()> camera) { m_camera = std::move(camera); }
+
     /** @brief Draws @p spec into @p path as a background task (no dialog; automation and tests). */
     void exportPlate(const core::plate::PlateSpec& spec, const QString& path);
     /** @brief Writes the développée on show to @p path (PNG or TIFF) and its sidecar; false with a report. */
@@ -62,6 +68,7 @@ private:
     QWidget& m_window;
     QAction* m_plate;
     QAction* m_developpee;
+    std::function<std::optional<std::array<double, 4>>()> m_camera;
 };
 
 } // namespace stylos::app

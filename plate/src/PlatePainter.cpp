@@ -80,6 +80,7 @@ QString viewTitle(const cp::PanelSpec& panel)
 {
     const QString shading = QString::fromLatin1(cp::panelShadingName(panel.shading));
     if (panel.view == cp::PanelView::Developpee) return QStringLiteral("développée, %1").arg(shading);
+    if (panel.view == cp::PanelView::Camera) return QStringLiteral("orthographic view, %1").arg(shading);
     return QStringLiteral("%1 view, %2").arg(QString::fromLatin1(cp::panelViewName(panel.view)), shading);
 }
 
@@ -134,24 +135,20 @@ void drawRuler(QPainter& p, const cp::PanelBox& box)
     p.restore();
 }
 
-/** The scene axis ("+X", "−Z", …) that a camera axis (a column of the standard orientation) shows. */
-QString axisName(const Eigen::Vector3d& v)
-{
-    int k = 0;
-    for (int i = 1; i < 3; ++i)
-        if (std::abs(v[i]) > std::abs(v[k])) k = i;
-    return QString(v[k] < 0 ? QStringLiteral("−") : QStringLiteral("")) + QChar("XYZ"[k]);
-}
-
 void drawTriad(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box)
 {
-    const Eigen::Matrix3d m = core::view::Camera::standardOrientation(cp::standardViewOf(panel.view)).toRotationMatrix();
-    // In the letter band, at the image's top right: the scene axes that point right and up on the page.
-    const QPointF o(box.image.right() - 10.0, box.image.y - 1.0);
-    arrow(p, o, o + QPointF(5.0, 0));
-    arrow(p, o, o + QPointF(0, -5.0));
-    text(p, o + QPointF(5.6, 0.9), axisName(m.col(0)), 6.5);
-    text(p, o + QPointF(0.8, -3.4), axisName(m.col(1)), 6.5);
+    // In the letter band, at the image's top right: the scene's X, Y and Z projected on the page (an axis seen
+    // end-on is left out), so an oblique camera shows its true directions.
+    const Eigen::Matrix3d m = cp::panelOrientation(panel).toRotationMatrix(); // camera → scene
+    const QPointF o(box.image.right() - 10.0, box.image.y - 1.2);
+    for (int k = 0; k < 3; ++k) {
+        const Eigen::Vector3d v = m.transpose().col(k); // scene axis k in camera axes
+        const QPointF d(v.x(), -v.y());                  // page: x right, y down
+        if (std::hypot(d.x(), d.y()) < 0.15) continue;
+        arrow(p, o, o + 4.5 * d);
+        const QPointF at = o + 5.6 * d + QPointF(-0.8, 1.0);
+        text(p, at, QString(QChar("XYZ"[k])), 6.5);
+    }
 }
 
 void drawHatches(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box, const cp::PanelImage& image,

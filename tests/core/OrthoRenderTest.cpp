@@ -156,3 +156,39 @@ TEST(OrthoRender, RefusesTooLargeFramesAndAMissingSkydome)
     o.shading = plate::PanelShading::Headlight;
     EXPECT_EQ(plate::renderOrtho(std::span(&wrong, 1), o).error().code, ErrorCode::InvalidArgument);
 }
+
+TEST(OrthoRender, ACameraOrientationIsItsStandardSideAndTurnsTheFrame)
+{
+    const Drum& d = drum();
+    ASSERT_TRUE(d.octree);
+    OrthoSource s{d.octree.get(), d.toDrum, {}};
+    OrthoOptions o;
+    o.pixelSizeM = 0.003;
+    o.view = view::StandardView::Right;
+    const auto side = plate::renderOrtho(std::span(&s, 1), o);
+    o.orientation = view::Camera::standardOrientation(view::StandardView::Right);
+    const auto camera = plate::renderOrtho(std::span(&s, 1), o);
+    ASSERT_TRUE(side.ok() && camera.ok());
+    EXPECT_EQ(side->image.samples, camera->image.samples);
+    // Rolled 90° about the viewing direction: width and height swap.
+    o.orientation = *o.orientation * Eigen::Quaterniond(Eigen::AngleAxisd(std::numbers::pi / 2, Eigen::Vector3d::UnitZ()));
+    const auto rolled = plate::renderOrtho(std::span(&s, 1), o);
+    ASSERT_TRUE(rolled.ok());
+    EXPECT_NEAR(rolled->image.width, side->image.height, 2);
+    EXPECT_NEAR(rolled->image.height, side->image.width, 2);
+
+    plate::PanelSpec panel;
+    panel.view = plate::PanelView::Camera;
+    panel.scale = 10;
+    panel.shading = plate::PanelShading::Headlight;
+    plate::PlateSpec spec;
+    spec.panels = {panel};
+    EXPECT_FALSE(spec.validate("p.json").ok()); // no orientation
+    spec.panels[0].camera = std::array<double, 4>{2, 0, 0, 0};
+    EXPECT_FALSE(spec.validate("p.json").ok()); // not unit
+    spec.panels[0].camera = std::array<double, 4>{1, 0, 0, 0};
+    EXPECT_TRUE(spec.validate("p.json").ok());
+    const auto back = plate::PlateSpec::fromJson(spec.toJson(), "p.json");
+    ASSERT_TRUE(back.ok());
+    EXPECT_EQ(back.value(), spec);
+}

@@ -25,9 +25,11 @@ struct ViewTransform {
     }
 };
 
-ViewTransform viewTransform(const OrthoSource& source, view::StandardView side)
+ViewTransform viewTransform(const OrthoSource& source, const OrthoOptions& options)
 {
-    const Eigen::Matrix3d camera = view::Camera::standardOrientation(side).toRotationMatrix(); // camera → scene
+    const Eigen::Matrix3d camera = (options.orientation ? options.orientation->normalized()
+                                                        : view::Camera::standardOrientation(options.view))
+                                       .toRotationMatrix(); // camera → scene
     Eigen::Matrix3d r;
     Eigen::Vector3d t;
     for (int i = 0; i < 3; ++i) {
@@ -78,7 +80,7 @@ Bounds boundsOf(std::span<const OrthoSource> sources, const OrthoOptions& option
 {
     Bounds b;
     for (const OrthoSource& s : sources) {
-        const ViewTransform t = viewTransform(s, options.view);
+        const ViewTransform t = viewTransform(s, options);
         s.octree->forEachCell(s.octree->depth(), [&](const oct::CellView& c) {
             const Eigen::Vector3d v = t.apply(c.centre);
             const double r = double(s.octree->leafSpacing(c.index)) * options.splatScale;
@@ -124,10 +126,20 @@ view::StandardView standardViewOf(PanelView view)
     case PanelView::Right: return view::StandardView::Right;
     case PanelView::Top: return view::StandardView::Top;
     case PanelView::Bottom: return view::StandardView::Bottom;
-    case PanelView::Developpee: break;
+    case PanelView::Developpee:
+    case PanelView::Camera: break;
     }
-    assert(false && "standardViewOf: a développée has no camera side");
+    assert(false && "standardViewOf: a développée or a camera view has no standard side");
     return view::StandardView::Front;
+}
+
+Eigen::Quaterniond panelOrientation(const PanelSpec& panel)
+{
+    if (panel.view == PanelView::Camera && panel.camera) {
+        const auto& q = *panel.camera;
+        return Eigen::Quaterniond(q[0], q[1], q[2], q[3]).normalized();
+    }
+    return view::Camera::standardOrientation(standardViewOf(panel.view));
 }
 
 Result<OrthoRender> measureOrtho(std::span<const OrthoSource> sources, const OrthoOptions& options)
@@ -158,7 +170,7 @@ Result<OrthoRender> renderOrtho(std::span<const OrthoSource> sources, const Orth
     std::uint64_t done = 0;
     bool cancelled = false;
     for (const OrthoSource& s : sources) {
-        const ViewTransform t = viewTransform(s, options.view);
+        const ViewTransform t = viewTransform(s, options);
         const std::span<const float> ambient = options.shading == PanelShading::Skydome ? ambientOf(*s.octree) : std::span<const float>{};
         const bool labelled = options.keepClasses && !s.labels.empty();
         s.octree->forEachCell(s.octree->depth(), [&](const oct::CellView& c) {

@@ -162,7 +162,7 @@ Result<RenderedPanel> render3d(const PlateSources& sources, const std::vector<co
         list.push_back(std::move(s));
     }
     OrthoOptions o;
-    o.view = standardViewOf(panel.view);
+    o.orientation = panelOrientation(panel);
     o.pixelSizeM = printPixelSize(panel.scale, options.dpi);
     o.shading = panel.shading;
     o.keepClasses = panel.layer.has_value();

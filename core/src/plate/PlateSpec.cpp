@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -16,7 +17,7 @@ namespace stylos::core::plate {
 
 namespace {
 
-constexpr std::array<const char*, 7> ViewNames{"developpee", "front", "back", "left", "right", "top", "bottom"};
+constexpr std::array<const char*, 8> ViewNames{"developpee", "front", "back", "left", "right", "top", "bottom", "camera"};
 constexpr std::array<const char*, 4> ShadingNames{"skydome", "light", "height", "headlight"};
 
 std::string lower(std::string_view text)
@@ -105,6 +106,13 @@ Status PlateSpec::validate(const std::string& source) const
             return invalid(source, at + ".shading", "headlight is for 3D views; a développée takes skydome, light or height");
         if (!dev && (p.shading == PanelShading::Light || p.shading == PanelShading::Height))
             return invalid(source, at + ".shading", "a 3D view takes skydome or headlight");
+        if (p.view == PanelView::Camera) {
+            if (!p.camera) return invalid(source, at + ".camera", "the camera view needs its orientation [w, x, y, z]");
+            const auto& q = *p.camera;
+            const double norm = std::sqrt(q[0] * q[0] + q[1] * q[1] + q[2] * q[2] + q[3] * q[3]);
+            if (!std::isfinite(norm) || std::abs(norm - 1.0) > 1e-6)
+                return invalid(source, at + ".camera", "must be a unit quaternion [w, x, y, z]");
+        }
     }
     return {};
 }
@@ -120,6 +128,7 @@ nlohmann::json PlateSpec::toJson() const
         if (p.layer) j["layer"] = annotation::layerName(*p.layer);
         if (!p.fragment.empty()) j["fragment"] = p.fragment;
         if (p.atMm) j["at_mm"] = {(*p.atMm)[0], (*p.atMm)[1]};
+        if (p.camera && p.view == PanelView::Camera) j["camera"] = {(*p.camera)[0], (*p.camera)[1], (*p.camera)[2], (*p.camera)[3]};
         list.push_back(std::move(j));
     }
     return {{"format", kFormat}, {"version", kVersion}, {"page", pageName}, {"landscape", landscape},
@@ -188,7 +197,7 @@ Result<PlateSpec> PlateSpec::fromJson(const nlohmann::json& json, const std::str
         PanelSpec panel;
         const auto view = p.find("view");
         const auto v = view != p.end() && view->is_string() ? panelViewFromName(view->get<std::string>()) : std::nullopt;
-        if (!v) return malformed(source, at + "view", "missing or not one of developpee, front, back, left, right, top, bottom");
+        if (!v) return malformed(source, at + "view", "missing or not one of developpee, front, back, left, right, top, bottom, camera");
         panel.view = *v;
         if (p.find("scale") == p.end()) return malformed(source, at + "scale", "missing");
         if (auto st = number(p, at, "scale", panel.scale); !st) return st.error();
@@ -216,6 +225,13 @@ Result<PlateSpec> PlateSpec::fromJson(const nlohmann::json& json, const std::str
             if (!a->is_array() || a->size() != 2 || !(*a)[0].is_number() || !(*a)[1].is_number())
                 return malformed(source, at + "at_mm", "must be [x, y] in mm from the page's top-left corner");
             panel.atMm = std::array<double, 2>{(*a)[0].get<double>(), (*a)[1].get<double>()};
+        }
+        if (const auto c = p.find("camera"); c != p.end()) {
+            if (!c->is_array() || c->size() != 4 || !(*c)[0].is_number() || !(*c)[1].is_number() || !(*c)[2].is_number() ||
+                !(*c)[3].is_number())
+                return malformed(source, at + "camera", "must be [w, x, y, z]");
+            panel.camera = std::array<double, 4>{(*c)[0].get<double>(), (*c)[1].get<double>(), (*c)[2].get<double>(),
+                                                 (*c)[3].get<double>()};
         }
         s.panels.push_back(std::move(panel));
     }

@@ -52,6 +52,7 @@ QString viewText(cp::PanelView v)
     case cp::PanelView::Right: return PlateDialog::tr("Right");
     case cp::PanelView::Top: return PlateDialog::tr("Top");
     case cp::PanelView::Bottom: return PlateDialog::tr("Bottom");
+    case cp::PanelView::Camera: return PlateDialog::tr("Current view");
     }
     return {};
 }
@@ -193,7 +194,13 @@ void PlateDialog::addPanelRow(const cp::PanelSpec& panel)
     m_panels->insertRow(row);
     auto* view = new QComboBox;
     for (int v = 0; v <= int(cp::PanelView::Bottom); ++v) view->addItem(viewText(cp::PanelView(v)), v);
-    view->setCurrentIndex(int(panel.view));
+    // The camera view: the row's own orientation when it has one, else the 3D view's current camera.
+    const auto camera = panel.view == cp::PanelView::Camera && panel.camera ? panel.camera : m_camera;
+    if (camera) {
+        view->addItem(viewText(cp::PanelView::Camera), int(cp::PanelView::Camera));
+        view->setProperty("camera", QVariantList{(*camera)[0], (*camera)[1], (*camera)[2], (*camera)[3]});
+    }
+    view->setCurrentIndex(std::max(0, view->findData(int(panel.view))));
     auto* scale = new QDoubleSpinBox;
     scale->setRange(1, 1e6);
     scale->setDecimals(1);
@@ -253,7 +260,12 @@ cp::PlateSpec PlateDialog::spec() const
     s.caption = m_caption->toPlainText().toStdString();
     for (int row = 0; row < m_panels->rowCount(); ++row) {
         cp::PanelSpec p;
-        p.view = cp::PanelView(qobject_cast<QComboBox*>(m_panels->cellWidget(row, ViewColumn))->currentData().toInt());
+        auto* view = qobject_cast<QComboBox*>(m_panels->cellWidget(row, ViewColumn));
+        p.view = cp::PanelView(view->currentData().toInt());
+        if (p.view == cp::PanelView::Camera) {
+            const QVariantList q = view->property("camera").toList();
+            if (q.size() == 4) p.camera = std::array<double, 4>{q[0].toDouble(), q[1].toDouble(), q[2].toDouble(), q[3].toDouble()};
+        }
         p.scale = qobject_cast<QDoubleSpinBox*>(m_panels->cellWidget(row, ScaleColumn))->value();
         p.shading = cp::PanelShading(qobject_cast<QComboBox*>(m_panels->cellWidget(row, ShadingColumn))->currentData().toInt());
         const int layer = qobject_cast<QComboBox*>(m_panels->cellWidget(row, LayerColumn))->currentData().toInt();
@@ -319,6 +331,11 @@ void PlateDialog::applyTemplate(int index)
     }
     m_template->setCurrentIndex(0);
     setSpec(s);
+}
+
+void PlateDialog::setCurrentCamera(const std::optional<std::array<double, 4>>& camera)
+{
+    m_camera = camera;
 }
 
 bool PlateDialog::previewPending() const { return m_running || m_again || m_timer->isActive(); }

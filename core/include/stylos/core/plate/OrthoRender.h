@@ -30,7 +30,10 @@
 #include "stylos/core/util/Result.h"
 #include "stylos/core/view/Camera.h"
 
+#include <Eigen/Geometry>
+
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -44,6 +47,7 @@ struct OrthoSource {
 
 struct OrthoOptions {
     view::StandardView view = view::StandardView::Front;
+    std::optional<Eigen::Quaterniond> orientation; ///< when set, the camera's orientation instead of @p view
     double pixelSizeM = 0.001;              ///< metres on the object per pixel
     PanelShading shading = PanelShading::Headlight;  ///< Headlight or Skydome
     double splatScale = 1.0;
@@ -64,7 +68,10 @@ Result<OrthoRender> measureOrtho(std::span<const OrthoSource> sources, const Ort
 Result<OrthoRender> renderOrtho(std::span<const OrthoSource> sources, const OrthoOptions& options,
                                 ProgressSink* progress = nullptr);
 
-/** @brief The camera side of a 3D panel view (Developpee has none: asserted). */
+/** @brief The camera side of a 3D panel view (Developpee and Camera have none: asserted). */
 view::StandardView standardViewOf(PanelView view);
+
+/** @brief The camera orientation (camera → scene) of a 3D panel: its stated camera or its standard side. */
+Eigen::Quaterniond panelOrientation(const PanelSpec& panel);
 
 } // namespace stylos::core::plate

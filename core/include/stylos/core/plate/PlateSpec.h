@@ -10,7 +10,8 @@
  *     {"format": "stylos-plate", "version": 1, "page": "A4" | [W, H], "landscape": false, "margin_mm": 15,
  *      "dpi": 600, "bits": 8, "caption": "…", "legend": true,
  *      "panels": [{"view": "developpee", "scale": 10, "shading": "skydome", "layer": "material",
- *                  "hatches": false, "fragment": "Drum 2", "at_mm": [x, y]}, …]}
+ *                  "hatches": false, "fragment": "Drum 2", "at_mm": [x, y]},
+ *                 {"view": "camera", "camera": [w, x, y, z], "scale": 10, "shading": "headlight"}, …]}
  * Every key but "panels" is optional (defaults above; "layer" absent = no annotation; "fragment" absent = the
  * first fragment for a développée, every visible fragment for a 3D view; "at_mm" absent = stacked by
  * layoutPlate). Reading names the first wrong key ("PLATE.json: panels[1].scale: must be a number ≥ 1").
@@ -29,9 +30,10 @@
 
 namespace stylos::core::plate {
 
-/** @brief What a panel shows: the développée, or the scene seen orthographically from one side. */
-enum class PanelView { Developpee, Front, Back, Left, Right, Top, Bottom };
-/** "developpee", "front", "back", "left", "right", "top", "bottom". */
+/** @brief What a panel shows: the développée, the scene seen orthographically from one side, or orthographically
+ *         along a stated camera orientation (the workbench's current view). */
+enum class PanelView { Developpee, Front, Back, Left, Right, Top, Bottom, Camera };
+/** "developpee", "front", "back", "left", "right", "top", "bottom", "camera". */
 const char* panelViewName(PanelView view);
 std::optional<PanelView> panelViewFromName(std::string_view name);
 
@@ -61,6 +63,9 @@ struct PanelSpec {
     bool hatches = false;                               ///< classes as black-and-white hatches, not colours
     std::string fragment;                               ///< a project's fragment by name (see the file comment)
     std::optional<std::array<double, 2>> atMm;          ///< top-left of the image on the page
+    /** View "camera": the camera's orientation (unit quaternion w, x, y, z; camera axes → scene axes, as
+     *  core/view/Camera.h: the camera looks along its −Z with +Y up). Required for that view, ignored otherwise. */
+    std::optional<std::array<double, 4>> camera;
     bool operator==(const PanelSpec&) const = default;
 };
 

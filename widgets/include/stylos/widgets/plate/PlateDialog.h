@@ -13,7 +13,9 @@
 #include <QDialog>
 #include <QImage>
 
+#include <array>
 #include <memory>
+#include <optional>
 
 class QCheckBox;
 class QComboBox;
@@ -35,6 +37,10 @@ public:
     PlateDialog(std::shared_ptr<const core::plate::PlateSources> sources, const core::plate::PlateSpec& spec,
                 QWidget* parent = nullptr);
     ~PlateDialog() override;
+
+    /** @brief The 3D view's camera (unit quaternion w, x, y, z, camera → scene): offers "Current view" as a panel
+     *         view, drawn orthographically along it. Call before setSpec() for the rows to offer it. */
+    void setCurrentCamera(const std::optional<std::array<double, 4>>& camera);
 
     /** @brief The plate as stated in the dialog now. */
     core::plate::PlateSpec spec() const;
@@ -66,6 +72,7 @@ private:
     void retranslateUi();
 
     std::shared_ptr<const core::plate::PlateSources> m_sources;
+    std::optional<std::array<double, 4>> m_camera;
     QComboBox* m_page;
     QCheckBox* m_landscape;
     QDoubleSpinBox* m_margin;
