@@ -230,7 +230,7 @@ void ScanImporterTest::cancelLeavesNothing()
 void ScanImporterTest::dialogsAndDropsUseTheCoreListOfExtensions()
 {
     QCOMPARE(ScanImporter::fileFilter(),
-             QStringLiteral("Scans and octrees (*.ply *.las *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.poct);;"
+             QStringLiteral("Scans and octrees (*.ply *.las *.e57 *.ptx *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.poct);;"
                             "Packed octrees (*.poct);;All files (*)"));
     QVERIFY(ScanImporter::canImport(QStringLiteral("/data/Drum.PLY")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("scan.neu")));
