@@ -9,6 +9,8 @@ find_package(PkgConfig REQUIRED)
 pkg_check_modules(OIIO REQUIRED IMPORTED_TARGET OpenImageIO)
 # XXH64, the .poct section checksum: Debian's libxxhash (libxxhash-dev ships libxxhash.pc).
 pkg_check_modules(XXHASH REQUIRED IMPORTED_TARGET libxxhash)
+# The E57 reader's XML section: Debian's libpugixml-dev (CMake config, target pugixml::pugixml).
+find_package(pugixml 1.11 CONFIG REQUIRED)
 find_path(NANOFLANN_INCLUDE_DIR nanoflann.hpp REQUIRED)
 add_library(stylos_nanoflann INTERFACE)
 target_include_directories(stylos_nanoflann SYSTEM INTERFACE ${NANOFLANN_INCLUDE_DIR})

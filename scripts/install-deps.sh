@@ -9,6 +9,6 @@ DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends 
   qt6-base-dev qt6-base-dev-tools qt6-tools-dev qt6-tools-dev-tools qt6-l10n-tools \
   libqt6opengl6-dev libgl-dev qt6-svg-dev fonts-dejavu-core poppler-utils \
   libeigen3-dev libglm-dev libopenimageio-dev libnanoflann-dev nlohmann-json3-dev \
-  libxxhash-dev libcli11-dev \
+  libxxhash-dev libcli11-dev libpugixml-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
   xvfb xauth libgl1-mesa-dri

@@ -1,10 +1,11 @@
 // stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
-//               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--json]
+//               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--scan N] [--json]
 #include "CommandLine.h"
 
 #include "stylos/core/util/Stopwatch.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "ReadArguments.h"
 
 #include "stylos/core/ao/AmbientOcclusion.h"
 #include "stylos/core/ao/AoCells.h"
@@ -90,14 +91,14 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
     r.options.cosineWeighted = cl.flag("cosine");
 
     r.poctInput = core::cloud::isPoctPath(r.input) || lowerExtension(r.input) == ".poct";
-    if (r.poctInput && (cl.value("depth") || cl.value("columns")))
-        return problem = "--depth and --columns apply to a point-file input only, not to the octree " + r.input, false;
+    if (r.poctInput && (cl.value("depth") || cl.value("columns") || cl.value("scan")))
+        return problem = "--depth, --columns and --scan apply to a point-file input only, not to the octree " + r.input, false;
     if (depth < oct::MinOctreeDepth || depth > oct::MaxOctreeDepth)
         return problem = "--depth must be between " + std::to_string(oct::MinOctreeDepth) + " and " +
                          std::to_string(oct::MaxOctreeDepth), false;
     r.build.depth = int(depth);
     r.build.threads = threads > 0 ? unsigned(threads) : std::max(1u, std::thread::hardware_concurrency());
-    r.read.columns = cl.value("columns").value_or("");
+    if (!parseReadOptions(cl, r.read, problem)) return false;
     if (cl.value("level")) {
         const int deepest = r.poctInput ? oct::MaxOctreeDepth : r.build.depth;
         if (level < 0 || level > deepest)
@@ -131,6 +132,7 @@ int runAo(const std::vector<std::string>& args)
                     {"bias", "B", "cell edges above a cell's tangent plane before a cell occludes it (default 1)"},
                     {"depth", "N", "point-file input: leaf level of the octree built first, 1..21 (default 12)"},
                     {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
+                    scanOption(),
                     {"threads", "N", "worker threads (default: all cores)"},
                     {"json", "", "print one JSON object on stdout"}});
     if (!cl.parse(args)) return usageError(cl, cl.error());

@@ -1,9 +1,10 @@
 // stylos-cli build IN -o OUT.poct [--depth L] [--method optimal|streaming] [--memory-limit MiB]
-//                   [--normal-code octahedral16|paper15] [--threads N] [--columns LAYOUT] [--json]
+//                   [--normal-code octahedral16|paper15] [--threads N] [--columns LAYOUT] [--scan N] [--json]
 // stylos-cli build --synthetic-drum POINTS [--seed N] [--ordered] -o OUT.poct [same options]
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "ReadArguments.h"
 #include "PoctInfo.h"
 
 #include "stylos/core/io/PointFileFormat.h"
@@ -122,6 +123,7 @@ int runBuild(const std::vector<std::string>& args)
                     {"normal-code", "NAME", "octahedral16 (default) or paper15"},
                     {"threads", "N", "worker threads (default 2)"},
                     {"columns", "LAYOUT", "column layout of a text input, e.g. x,y,z,nx,ny,nz"},
+                    scanOption(),
                     {"synthetic-drum", "POINTS", "input: a procedural fluted drum of POINTS points, never stored"},
                     {"seed", "N", "seed of --synthetic-drum (default 1)"},
                     {"ordered", "", "--synthetic-drum in scan-like order (default: random order)"},
@@ -137,6 +139,12 @@ int runBuild(const std::vector<std::string>& args)
     if (synthetic && !cl.positionals().empty())
         return usageError(cl, "build takes either an input file or --synthetic-drum, not both");
     if (!synthetic && cl.positionals().size() != 1) return usageError(cl, "build takes exactly one input file");
+    core::io::ReadOptions read;
+    {
+        std::string problem;
+        if (!parseReadOptions(cl, read, problem)) return usageError(cl, problem);
+    }
+    if (synthetic && read.scan) return usageError(cl, "--scan applies to an input file only");
     if (!synthetic && (cl.value("seed") || cl.flag("ordered")))
         return usageError(cl, "--seed and --ordered apply to --synthetic-drum only");
     const auto output = cl.value("output");
@@ -156,8 +164,6 @@ int runBuild(const std::vector<std::string>& args)
             const oct::PointSourceFactory open = [stream] { return core::synth::openSyntheticStream(stream); };
             return oct::buildOctree(open, *output, options, &progress);
         }
-        core::io::ReadOptions read;
-        read.columns = cl.value("columns").value_or("");
         return oct::buildOctreeFile(input, *output, options, &progress, read);
     };
     const auto report = build();

@@ -1,8 +1,9 @@
-// stylos-cli info FILE [--json] [--columns LAYOUT]; a .poct file gets the octree summary (PoctInfo).
+// stylos-cli info FILE [--json] [--columns LAYOUT] [--scan N]; a .poct file gets the octree summary (PoctInfo).
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
 #include "PoctInfo.h"
+#include "ReadArguments.h"
 
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/io/PointFileSummary.h"
@@ -16,6 +17,20 @@ namespace stylos::cli {
 
 namespace {
 
+nlohmann::json toJson(const core::io::ScanInfo& scan, std::size_t index)
+{
+    const auto& m = scan.pose;
+    nlohmann::json j;
+    j["index"] = index;
+    j["name"] = scan.name;
+    if (!scan.guid.empty()) j["guid"] = scan.guid;
+    j["points"] = scan.points;
+    j["rotation"] = {m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10]};
+    j["translation"] = {m[3], m[7], m[11]};
+    if (scan.quaternion) j["quaternion"] = *scan.quaternion;
+    return j;
+}
+
 nlohmann::json toJson(const std::string& file, const core::io::PointFileSummary& s)
 {
     nlohmann::json j;
@@ -24,6 +39,11 @@ nlohmann::json toJson(const std::string& file, const core::io::PointFileSummary&
     j["points"] = s.points;
     j["declared_points"] = s.declaredPoints ? nlohmann::json(*s.declaredPoints) : nlohmann::json(nullptr);
     j["skipped_non_finite"] = s.skipped;
+    j["skipped_missing"] = s.missing;
+    if (!s.scans.empty()) {
+        j["scans"] = nlohmann::json::array();
+        for (std::size_t i = 0; i < s.scans.size(); ++i) j["scans"].push_back(toJson(s.scans[i], i));
+    }
     if (s.min) j["bounds"] = {{"min", *s.min}, {"max", *s.max}};
     else j["bounds"] = nullptr;
     j["attributes"] = s.attributes;
@@ -37,6 +57,9 @@ void printText(const std::string& file, const core::io::PointFileSummary& s)
                 static_cast<unsigned long long>(s.points));
     if (s.skipped > 0)
         std::printf("skipped:    %llu (NaN or infinite coordinates)\n", static_cast<unsigned long long>(s.skipped));
+    if (s.missing > 0)
+        std::printf("missing:    %llu (marked invalid or without a return by the scanner, skipped)\n",
+                    static_cast<unsigned long long>(s.missing));
     if (s.min)
         std::printf("bounds:     min (%.6f, %.6f, %.6f)\n            max (%.6f, %.6f, %.6f)\n"
                     "size:       %.6f x %.6f x %.6f\n",
@@ -47,6 +70,21 @@ void printText(const std::string& file, const core::io::PointFileSummary& s)
     std::string attrs;
     for (const auto& a : s.attributes) attrs += (attrs.empty() ? "" : ", ") + a;
     std::printf("attributes: %s\n", attrs.empty() ? "(none)" : attrs.c_str());
+    if (!s.scans.empty()) std::printf("scans:      %zu\n", s.scans.size());
+    for (std::size_t i = 0; i < s.scans.size(); ++i) {
+        const auto& scan = s.scans[i];
+        const auto& m = scan.pose;
+        std::printf("  scan %zu:   \"%s\", %llu points\n", i, scan.name.c_str(),
+                    static_cast<unsigned long long>(scan.points));
+        if (scan.quaternion)
+            std::printf("            rotation (w x y z) %.9g %.9g %.9g %.9g, translation %.6f %.6f %.6f\n",
+                        (*scan.quaternion)[0], (*scan.quaternion)[1], (*scan.quaternion)[2], (*scan.quaternion)[3],
+                        m[3], m[7], m[11]);
+        else
+            std::printf("            rotation rows (%.9g %.9g %.9g) (%.9g %.9g %.9g) (%.9g %.9g %.9g), "
+                        "translation %.6f %.6f %.6f\n",
+                        m[0], m[1], m[2], m[4], m[5], m[6], m[8], m[9], m[10], m[3], m[7], m[11]);
+    }
 }
 
 /** " .ply .las ..." : the extensions the readers open (@p readable) or recognise and refuse. */
@@ -64,11 +102,13 @@ int runInfo(const std::vector<std::string>& args)
 {
     CommandLine cl("info", "FILE [--json]",
                    {{"json", "", "print one JSON object on stdout"},
-                    {"columns", "LAYOUT", "column layout of a text file, e.g. x,y,z,i,r,g,b (_ skips a column)"}});
+                    {"columns", "LAYOUT", "column layout of a text file, e.g. x,y,z,i,r,g,b (_ skips a column)"},
+                    scanOption()});
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
-        std::cout << "Format, point count, bounds and attributes of a point file; for a .poct octree: depth,\n"
-                     "normal code, root box, cells per level, bytes per cell and attribute layers.\n"
+        std::cout << "Format, point count, bounds and attributes of a point file, and the scans of an E57 or PTX\n"
+                     "file (name, points, pose); for a .poct octree: depth, normal code, root box, cells per level,\n"
+                     "bytes per cell and attribute layers.\n"
                   << "Point files:" << extensionList(true) << " (recognised and refused:" << extensionList(false)
                   << ").\n"
                   << cl.usage();
@@ -79,7 +119,7 @@ int runInfo(const std::vector<std::string>& args)
     const std::string file = cl.positionals()[0];
     if (isPoctFile(file)) return runPoctInfo(file, cl.flag("json"));
     core::io::ReadOptions options;
-    options.columns = cl.value("columns").value_or("");
+    if (std::string problem; !parseReadOptions(cl, options, problem)) return usageError(cl, problem);
     ConsoleProgress progress("reading " + file);
     auto summary = core::io::summarizePointFile(file, options, &progress);
     if (!summary) {

@@ -2,6 +2,7 @@
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "ReadArguments.h"
 
 #include "stylos/core/normals/NormalFileEstimation.h"
 
@@ -43,6 +44,7 @@ int runNormals(const std::vector<std::string>& args)
                     {"threads", "N", "worker threads (default: all cores)"},
                     {"quality", "", "also write the surface variation as a scalar \"surface_variation\""},
                     {"columns", "LAYOUT", "column layout of a text input, e.g. x,y,z,i,r,g,b"},
+                    scanOption(),
                     {"json", "", "print one JSON object on stdout"}});
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
@@ -64,7 +66,7 @@ int runNormals(const std::vector<std::string>& args)
     options.normals.threads = static_cast<unsigned>(threads);
     options.memoryBudget = static_cast<std::size_t>(mib) << 20;
     options.writeQuality = cl.flag("quality");
-    options.read.columns = cl.value("columns").value_or("");
+    if (std::string problem; !parseReadOptions(cl, options.read, problem)) return usageError(cl, problem);
     if (const auto vp = cl.value("viewpoint")) {
         if (!parseTriple(*vp, options.normals.viewpoint)) return usageError(cl, "--viewpoint expects X,Y,Z");
         options.normals.orientation = core::normals::NormalOrientation::TowardViewpoint;

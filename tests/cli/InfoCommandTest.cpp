@@ -103,6 +103,41 @@ TEST(CliInfo, EverySharedFixtureWithItsHeaderCount)
     }
 }
 
+TEST(CliInfo, E57AndPtxScansWithTheirPoses)
+{
+    SKIP_WITHOUT_SHARED_DATA();
+    const auto formats = stylos::test::sharedData() / "formats";
+    const auto ab = runCli({"info", (formats / "e57" / "A_B.e57").string(), "--json"});
+    ASSERT_EQ(ab.exitCode, 0) << ab.err;
+    const auto j = nlohmann::json::parse(ab.out);
+    EXPECT_EQ(j["format"], "e57-1.0");
+    EXPECT_EQ(j["points"], 6);
+    EXPECT_EQ(j["declared_points"], 6);
+    ASSERT_EQ(j["scans"].size(), 2u);
+    EXPECT_EQ(j["scans"][0]["name"], "B2 - Cloud");
+    EXPECT_EQ(j["scans"][0]["points"], 2);
+    EXPECT_EQ(j["scans"][1]["name"], "A4 - Cloud");
+    EXPECT_EQ(j["scans"][1]["rotation"], (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 1}));
+    const auto one = runCli({"info", (formats / "e57" / "A_B.e57").string(), "--scan", "1", "--json"});
+    ASSERT_EQ(one.exitCode, 0) << one.err;
+    EXPECT_EQ(nlohmann::json::parse(one.out)["points"], 4);
+    const auto none = runCli({"info", (formats / "e57" / "A_B.e57").string(), "--scan", "2"});
+    EXPECT_EQ(none.exitCode, 1);
+    EXPECT_NE(none.err.find("scan 2 does not exist"), std::string::npos) << none.err;
+    EXPECT_EQ(runCli({"info", (formats / "e57" / "A_B.e57").string(), "--scan", "-1"}).exitCode, 2);
+
+    const auto ptx = runCli({"info", (formats / "ptx" / "multiple-and-transform.ptx").string(), "--json"});
+    ASSERT_EQ(ptx.exitCode, 0) << ptx.err;
+    const auto p = nlohmann::json::parse(ptx.out);
+    EXPECT_EQ(p["points"], 8);
+    EXPECT_EQ(p["declared_points"], 8);
+    ASSERT_EQ(p["scans"].size(), 2u);
+    EXPECT_EQ(p["scans"][0]["rotation"], (std::vector<double>{1, 0, 0, 0, 1, 0, 0, 0, 2}));
+    EXPECT_EQ(p["scans"][0]["translation"], (std::vector<double>{600000, 800000, 400}));
+    const auto text = runCli({"info", (formats / "ptx" / "multiple-and-transform.ptx").string()});
+    EXPECT_NE(text.out.find("scans:      2"), std::string::npos) << text.out;
+}
+
 TEST(CliInfo, CompressedAndInvalidFixturesAreRefusedClearly)
 {
     SKIP_WITHOUT_SHARED_DATA();
@@ -111,9 +146,14 @@ TEST(CliInfo, CompressedAndInvalidFixturesAreRefusedClearly)
     EXPECT_EQ(laz.exitCode, 1);
     EXPECT_NE(laz.err.find("LAZ"), std::string::npos) << laz.err;
     EXPECT_NE(laz.err.find("laszip"), std::string::npos) << laz.err;
-    const auto e57 = runCli({"info", (formats / "bunnyDouble.e57").string()});
-    EXPECT_EQ(e57.exitCode, 1);
-    EXPECT_NE(e57.err.find("E57"), std::string::npos) << e57.err;
+    for (const char* name : {"bad-crc.e57", "empty.e57", "InvalidCVHeader.e57"}) {
+        const auto path = formats / "e57" / "invalid" / name;
+        const auto run = runCli({"info", path.string()});
+        EXPECT_EQ(run.exitCode, 1) << name;
+        EXPECT_EQ(run.err.rfind("stylos-cli: " + path.string() + ": ", 0), 0u) << run.err;
+        EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
+        EXPECT_TRUE(run.out.empty()) << run.out;
+    }
     for (const auto& entry : std::filesystem::directory_iterator(formats / "invalid")) {
         const auto run = runCli({"info", entry.path().string()});
         EXPECT_EQ(run.exitCode, 1) << entry.path();

@@ -77,7 +77,7 @@ std::vector<std::size_t> offsetsFor(std::size_t size)
 bool sizeFixedByHeader(const fs::path& original)
 {
     const auto format = detectPointFormat(original);
-    if (format == PointFormat::Las) return true;
+    if (format == PointFormat::Las || format == PointFormat::E57) return true;
     if (format != PointFormat::Ply) return false;
     auto reader = openPointReader(original);
     return reader && (*reader)->header().format != "ply-ascii";
@@ -160,11 +160,11 @@ TEST(BadInput, GeneratedFixturesSurviveTruncationAndCorruption)
 TEST(BadInput, SharedFixturesSurviveTruncationAndCorruption)
 {
     SKIP_WITHOUT_SHARED_DATA();
-    for (const char* folder : {"formats", "scans"})
+    for (const char* folder : {"formats", "formats/e57", "formats/ptx", "scans"})
         for (const auto& entry : fs::directory_iterator(stylos::test::sharedData() / folder)) {
             if (!entry.is_regular_file()) continue;
             const auto format = detectPointFormat(entry.path());
-            if (format == PointFormat::Laz || format == PointFormat::E57) continue; // refused whole, see CliInfo
+            if (format == PointFormat::Laz) continue; // refused whole, see CliInfo
             tortureFile(entry.path());
         }
 }

@@ -1,6 +1,6 @@
 // The one list of point-file extensions: its exact content and order, the importable ones (readable
 // formats and .poct), case-insensitive matching, and that every readable extension really opens a
-// reader while laz/e57 are refused and other names are unknown.
+// reader while laz is refused and other names are unknown.
 #include "stylos/core/io/PointFileFormat.h"
 
 #include "TestSupport.h"
@@ -14,10 +14,10 @@ TEST(PointFileFormat, TheListOfExtensions)
 {
     std::vector<std::string> names;
     for (const auto& e : pointFileExtensions()) names.emplace_back(e.extension);
-    EXPECT_EQ(names, (std::vector<std::string>{"ply", "las", "xyz", "xyzn", "asc", "csv", "pts", "txt", "neu", "obj",
-                                               "laz", "e57"}));
-    EXPECT_EQ(importableExtensions(), (std::vector<std::string>{"ply", "las", "xyz", "xyzn", "asc", "csv", "pts", "txt",
-                                                                "neu", "obj", "poct"}));
+    EXPECT_EQ(names, (std::vector<std::string>{"ply", "las", "e57", "ptx", "xyz", "xyzn", "asc", "csv", "pts", "txt",
+                                               "neu", "obj", "laz"}));
+    EXPECT_EQ(importableExtensions(), (std::vector<std::string>{"ply", "las", "e57", "ptx", "xyz", "xyzn", "asc", "csv",
+                                                                "pts", "txt", "neu", "obj", "poct"}));
     EXPECT_EQ(PoctExtension, "poct");
 }
 
@@ -28,6 +28,7 @@ TEST(PointFileFormat, FormatFromExtensionIgnoresCase)
     EXPECT_EQ(formatFromExtension("a.Las"), PointFormat::Las);
     EXPECT_EQ(formatFromExtension("a.LAZ"), PointFormat::Laz);
     EXPECT_EQ(formatFromExtension("a.e57"), PointFormat::E57);
+    EXPECT_EQ(formatFromExtension("a.PTX"), PointFormat::Ptx);
     EXPECT_EQ(formatFromExtension("a.obj"), PointFormat::Obj);
     for (const char* text : {"a.xyz", "a.xyzn", "a.asc", "a.CSV", "a.pts", "a.txt", "a.neu"})
         EXPECT_EQ(formatFromExtension(text), PointFormat::Text) << text;
@@ -37,9 +38,9 @@ TEST(PointFileFormat, FormatFromExtensionIgnoresCase)
 
 TEST(PointFileFormat, ImportableExtensions)
 {
-    for (const char* yes : {"a.ply", "b.LAS", "c.xyz", "d.neu", "e.obj", "f.poct", "g.POCT", "/x/y.txt"})
+    for (const char* yes : {"a.ply", "b.LAS", "c.xyz", "d.neu", "e.obj", "f.poct", "g.POCT", "/x/y.txt", "h.e57", "i.Ptx"})
         EXPECT_TRUE(hasImportableExtension(yes)) << yes;
-    for (const char* no : {"a.laz", "b.e57", "c.stylos", "d.png", "e", "f.poct.tmp", ".poct"})
+    for (const char* no : {"a.laz", "c.stylos", "d.png", "e", "f.poct.tmp", ".poct"})
         EXPECT_FALSE(hasImportableExtension(no)) << no;
     EXPECT_TRUE(hasPoctExtension("drum.Poct"));
     EXPECT_FALSE(hasPoctExtension("drum.ply"));
@@ -47,7 +48,8 @@ TEST(PointFileFormat, ImportableExtensions)
     EXPECT_TRUE(isReadable(PointFormat::Ply));
     EXPECT_TRUE(isReadable(PointFormat::Text));
     EXPECT_FALSE(isReadable(PointFormat::Laz));
-    EXPECT_FALSE(isReadable(PointFormat::E57));
+    EXPECT_TRUE(isReadable(PointFormat::E57));
+    EXPECT_TRUE(isReadable(PointFormat::Ptx));
     EXPECT_FALSE(isReadable(PointFormat::Unknown));
 }
 
@@ -62,6 +64,10 @@ TEST(PointFileFormat, EveryListedExtensionReachesItsReader)
         case PointFormat::Ply: stylos::test::writeText(path, ply); break;
         case PointFormat::Obj: stylos::test::writeText(path, "v 1 2 3\n"); break;
         case PointFormat::Las: continue; // binary: LasReaderTest
+        case PointFormat::E57: continue; // binary: E57ReaderTest
+        case PointFormat::Ptx:
+            stylos::test::writeText(path, "1\n1\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n1 2 3 0.5\n");
+            break;
         default: stylos::test::writeText(path, "1 2 3\n"); break;
         }
         auto reader = openPointReader(path);
@@ -79,7 +85,7 @@ TEST(PointFileFormat, EveryListedExtensionReachesItsReader)
     auto unknown = openPointReader(dir / "p.dat");
     ASSERT_FALSE(unknown.ok());
     EXPECT_EQ(unknown.error().code, ErrorCode::UnknownFormat);
-    EXPECT_NE(unknown.error().message.find(".ply, .las, .xyz, .xyzn, .asc, .csv, .pts, .txt, .neu or .obj"),
+    EXPECT_NE(unknown.error().message.find(".ply, .las, .e57, .ptx, .xyz, .xyzn, .asc, .csv, .pts, .txt, .neu or .obj"),
               std::string::npos)
         << unknown.error().message;
 }

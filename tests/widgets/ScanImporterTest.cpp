@@ -230,19 +230,22 @@ void ScanImporterTest::cancelLeavesNothing()
 void ScanImporterTest::dialogsAndDropsUseTheCoreListOfExtensions()
 {
     QCOMPARE(ScanImporter::fileFilter(),
-             QStringLiteral("Scans and octrees (*.ply *.las *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.poct);;"
+             QStringLiteral("Scans and octrees (*.ply *.las *.e57 *.ptx *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.poct);;"
                             "Packed octrees (*.poct);;All files (*)"));
     QVERIFY(ScanImporter::canImport(QStringLiteral("/data/Drum.PLY")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("scan.neu")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("drum.poct")));
+    QVERIFY(ScanImporter::canImport(QStringLiteral("site.E57")));
+    QVERIFY(ScanImporter::canImport(QStringLiteral("site.ptx")));
     QVERIFY(!ScanImporter::canImport(QStringLiteral("scan.laz")));
     QVERIFY(!ScanImporter::canImport(QStringLiteral("notes.pdf")));
     // A drop takes projects and importable files, local ones only, in their order.
     auto local = [](const char* path) { return QUrl::fromLocalFile(QString::fromLatin1(path)); };
     const QList<QUrl> urls{local("/d/a.las"), local("/d/b.pdf"), QUrl(QStringLiteral("https://example.org/c.ply")),
-                           local("/d/p.stylos"), local("/d/e.e57"), local("/d/f.Poct")};
+                           local("/d/p.stylos"), local("/d/e.e57"), local("/d/f.Poct"), local("/d/g.laz")};
     QCOMPARE(stylos::app::ProjectActions::openableFiles(urls),
-             (QStringList{QStringLiteral("/d/a.las"), QStringLiteral("/d/p.stylos"), QStringLiteral("/d/f.Poct")}));
+             (QStringList{QStringLiteral("/d/a.las"), QStringLiteral("/d/p.stylos"), QStringLiteral("/d/e.e57"),
+                          QStringLiteral("/d/f.Poct")}));
     QVERIFY(stylos::app::ProjectActions::openableFiles({local("/d/b.pdf")}).isEmpty());
 }
 

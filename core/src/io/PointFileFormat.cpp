@@ -1,9 +1,11 @@
 #include "stylos/core/io/PointFileFormat.h"
 
 #include "stylos/core/io/BufferedFile.h"
+#include "stylos/core/io/E57Reader.h"
 #include "stylos/core/io/LasReader.h"
 #include "stylos/core/io/ObjReader.h"
 #include "stylos/core/io/PlyReader.h"
+#include "stylos/core/io/PtxReader.h"
 #include "stylos/core/io/TextReader.h"
 
 #include <algorithm>
@@ -17,9 +19,10 @@ namespace fs = std::filesystem;
 namespace {
 
 constexpr PointFileExtension Extensions[] = {
-    {"ply", PointFormat::Ply}, {"las", PointFormat::Las},   {"xyz", PointFormat::Text}, {"xyzn", PointFormat::Text},
-    {"asc", PointFormat::Text}, {"csv", PointFormat::Text}, {"pts", PointFormat::Text}, {"txt", PointFormat::Text},
-    {"neu", PointFormat::Text}, {"obj", PointFormat::Obj},  {"laz", PointFormat::Laz},  {"e57", PointFormat::E57},
+    {"ply", PointFormat::Ply},  {"las", PointFormat::Las},  {"e57", PointFormat::E57},  {"ptx", PointFormat::Ptx},
+    {"xyz", PointFormat::Text}, {"xyzn", PointFormat::Text}, {"asc", PointFormat::Text}, {"csv", PointFormat::Text},
+    {"pts", PointFormat::Text}, {"txt", PointFormat::Text}, {"neu", PointFormat::Text}, {"obj", PointFormat::Obj},
+    {"laz", PointFormat::Laz},
 };
 
 /** ".PLY" → ".ply" (with the dot, as the magic-byte checks compare it). */
@@ -68,8 +71,8 @@ std::span<const PointFileExtension> pointFileExtensions()
 
 bool isReadable(PointFormat format)
 {
-    return format == PointFormat::Ply || format == PointFormat::Las || format == PointFormat::Text ||
-           format == PointFormat::Obj;
+    return format == PointFormat::Ply || format == PointFormat::Las || format == PointFormat::E57 ||
+           format == PointFormat::Ptx || format == PointFormat::Text || format == PointFormat::Obj;
 }
 
 std::vector<std::string> importableExtensions()
@@ -130,6 +133,9 @@ Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const
         if (format == PointFormat::Las)
             return Error::at(ErrorCode::Malformed, path.string(), "byte 0",
                              "not a LAS file: it does not start with the signature \"LASF\"");
+        if (format == PointFormat::E57)
+            return Error::at(ErrorCode::Malformed, path.string(), "byte 0",
+                             "not an E57 file: it does not start with the signature \"ASTM-E57\"");
     }
 
     switch (format) {
@@ -141,15 +147,12 @@ Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const
         return Error::at(ErrorCode::Unsupported, path.string(), "",
                          "LAZ (compressed LAS) is not read by Stylos; decompress it first, e.g. "
                          "`laszip -i IN.laz -o OUT.las` or `pdal translate IN.laz OUT.las`");
-    case PointFormat::E57:
-        return Error::at(ErrorCode::Unsupported, path.string(), "",
-                         "E57 (ASTM scanner exchange format) is not read by Stylos; export the scans as PLY or "
-                         "LAS, e.g. with CloudCompare (`CloudCompare -SILENT -O IN.e57 -C_EXPORT_FMT PLY "
-                         "-SAVE_CLOUDS`) or `pdal translate IN.e57 OUT.las`");
+    case PointFormat::E57: return E57Reader::open(path, options);
+    case PointFormat::Ptx: return PtxReader::open(path, options);
     case PointFormat::Unknown: break;
     }
     return Error::at(ErrorCode::UnknownFormat, path.string(), "",
-                     "unknown point file format (Stylos reads PLY, LAS, text and OBJ files: " +
+                     "unknown point file format (Stylos reads PLY, LAS, E57, PTX, text and OBJ files: " +
                          readableExtensionsText() + ")");
 }
 

@@ -40,6 +40,9 @@ Result<PointFileSummary> summarizePointFile(const std::filesystem::path& path, c
             progress->update(static_cast<double>(reader.bytesConsumed()) / static_cast<double>(reader.fileBytes()));
     }
     summary.skipped = reader.pointsSkipped();
+    summary.missing = reader.pointsMissing();
+    summary.declaredPoints = reader.header().declaredPoints; // PTX knows it only now
+    summary.scans = reader.scans();
     if (summary.points > 0) {
         summary.min = lo;
         summary.max = hi;

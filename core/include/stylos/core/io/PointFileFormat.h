@@ -8,6 +8,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <span>
 #include <string>
 #include <string_view>
@@ -15,7 +16,7 @@
 
 namespace stylos::core::io {
 
-enum class PointFormat { Ply, Las, Laz, E57, Text, Obj, Unknown };
+enum class PointFormat { Ply, Las, Laz, E57, Ptx, Text, Obj, Unknown };
 
 /** @brief A file name extension of point files (lower case, no dot) and the format it names. */
 struct PointFileExtension {
@@ -25,12 +26,12 @@ struct PointFileExtension {
 
 /**
  * @brief Every point-file extension Stylos knows, in the order the file dialogs list them: first those
- *        the readers open (ply las xyz xyzn asc csv pts txt neu obj), then laz and e57, recognised so
- *        that openPointReader() can say how to convert them.
+ *        the readers open (ply las e57 ptx xyz xyzn asc csv pts txt neu obj), then laz, recognised so
+ *        that openPointReader() can say how to convert it.
  */
 std::span<const PointFileExtension> pointFileExtensions();
 
-/** @brief Whether the readers open @p format (PLY, LAS, text, OBJ). */
+/** @brief Whether the readers open @p format (PLY, LAS, E57, PTX, text, OBJ). */
 bool isReadable(PointFormat format);
 
 /** @brief The extension of packed octree files (`.poct`), lower case, no dot. */
@@ -59,14 +60,20 @@ struct ReadOptions {
      * and "_" to skip a column. Example: "x,y,z,i,r,g,b". Empty: detected.
      */
     std::string columns;
+    /**
+     * Multi-scan files (E57, PTX): read only this scan (0-based, in file order, as `stylos-cli info`
+     * numbers them). Absent: every scan, each with its pose applied, merged in the file's frame. A scan
+     * number beyond the file's scans is ErrorCode::InvalidArgument (E57: at open; PTX: at the end of the file).
+     */
+    std::optional<std::size_t> scan;
 };
 
 /** Format from the magic bytes, then the extension. Does not validate the file. */
 PointFormat detectPointFormat(const std::filesystem::path& path);
 
 /**
- * @brief Opens a reader for @p path in whatever format it is. LAZ and E57 files are recognised and
- *        refused (ErrorCode::Unsupported) with a message saying what they are and how to convert them;
+ * @brief Opens a reader for @p path in whatever format it is. LAZ files are recognised and refused
+ *        (ErrorCode::Unsupported) with a message saying what they are and how to convert them;
  *        an unrecognised file gives ErrorCode::UnknownFormat; an empty file ErrorCode::Empty.
  */
 Result<std::unique_ptr<PointReader>> openPointReader(const std::filesystem::path& path,

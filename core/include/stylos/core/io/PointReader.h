@@ -13,13 +13,29 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace stylos::core::io {
 
+/**
+ * @brief One scan of a file that holds several (an E57 `data3D` child, a PTX scan): its name and the pose
+ *        the reader applies to its points (p' = R p + t, in the file's frame and units).
+ */
+struct ScanInfo {
+    std::string name;                 ///< E57: the scan's name (may be empty); PTX: "scan N"
+    std::string guid;                 ///< E57 only
+    std::uint64_t points = 0;         ///< records the file declares for the scan, missing ones included
+    /** Row-major 3×4 [R | t]. */
+    std::array<double, 12> pose{1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0};
+    /** E57: the rotation as the file states it (w, x, y, z); absent for PTX (a general 4×4). */
+    std::optional<std::array<double, 4>> quaternion;
+};
+
 /** @brief What a reader knows about its file once the header is parsed. */
 struct PointFileHeader {
-    std::string format;                       ///< e.g. "ply-binary-le", "las-1.2", "xyz", "pts", "obj"
-    std::optional<std::uint64_t> declaredPoints; ///< count the file announces (none for plain text)
+    std::string format;                       ///< e.g. "ply-binary-le", "las-1.2", "e57-1.0", "ptx", "xyz", "pts", "obj"
+    /** Count the file announces (none for plain text); a PTX reader knows it only at the end of the file. */
+    std::optional<std::uint64_t> declaredPoints;
     PointSchema schema;
     /** Bounds stated in the header (LAS), already in world units; absent otherwise. */
     std::optional<std::array<double, 6>> declaredBounds;
@@ -44,6 +60,16 @@ public:
     std::uint64_t pointsRead() const { return m_pointsRead; }
     /** Points skipped so far because a coordinate was NaN or infinite. */
     std::uint64_t pointsSkipped() const { return m_pointsSkipped; }
+    /**
+     * Points the file itself marks as missing, skipped and counted: E57 points whose
+     * cartesianInvalidState / sphericalInvalidState is 1 (direction only) or 2 (invalid), PTX (0, 0, 0) points.
+     */
+    std::uint64_t pointsMissing() const { return m_pointsMissing; }
+    /**
+     * The scans of a multi-scan format, in file order (empty for single-cloud formats). An E57 reader
+     * knows them all once open; a PTX reader adds each as it reaches its header (all of them at the end).
+     */
+    const std::vector<ScanInfo>& scans() const { return m_scans; }
     /** Bytes consumed so far, for progress (compare with the file size). */
     virtual std::uint64_t bytesConsumed() const = 0;
     std::uint64_t fileBytes() const { return m_fileBytes; }
@@ -63,6 +89,8 @@ protected:
     std::uint64_t m_fileBytes = 0;
     std::uint64_t m_pointsRead = 0;
     std::uint64_t m_pointsSkipped = 0;
+    std::uint64_t m_pointsMissing = 0;
+    std::vector<ScanInfo> m_scans;
 };
 
 } // namespace stylos::core::io
