@@ -200,6 +200,14 @@
         <source>--paint does not go with --dock, --gizmo or --annotation</source>
         <translation>το --paint δεν συνδυάζεται με --dock, --gizmo ή --annotation</translation>
     </message>
+    <message>
+        <source>With --grab: paint as --paint, then write the first fragment&apos;s plate (its développée and front view at 1:N) to BASE.pdf and BASE.png, and grab the Export plate dialog.</source>
+        <translation>Με --grab: ζωγραφίζει όπως το --paint, μετά γράφει τον πίνακα του πρώτου θραύσματος (το ανάπτυγμα και την πρόσοψή του σε 1:N) στα BASE.pdf και BASE.png και καταγράφει το παράθυρο Εξαγωγή πίνακα.</translation>
+    </message>
+    <message>
+        <source>--plate goes with --grab alone</source>
+        <translation>Το --plate πάει μόνο με το --grab</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -661,6 +669,73 @@
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
         <translation>Θόλος ουρανού του %1: %2 κελιά στο επίπεδο %3, %4 κατευθύνσεις ουρανού, %5 s</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::PlateActions</name>
+    <message>
+        <source>Export &amp;plate…</source>
+        <translation>Εξαγωγή &amp;πίνακα…</translation>
+    </message>
+    <message>
+        <source>A publication plate at an exact scale: développées and orthographic views at 1:N with scale bars, legend and caption, as PDF, SVG, TIFF or PNG</source>
+        <translation>Πίνακας δημοσίευσης σε ακριβή κλίμακα: αναπτύγματα και ορθογραφικές όψεις σε 1:N με γραφικές κλίμακες, υπόμνημα και λεζάντα, ως PDF, SVG, TIFF ή PNG</translation>
+    </message>
+    <message>
+        <source>Export &amp;développée image…</source>
+        <translation>Εξαγωγή εικόνας &amp;αναπτύγματος…</translation>
+    </message>
+    <message>
+        <source>The développée on show as PNG or TIFF with its pixel size, and its map (.json) beside it</source>
+        <translation>Το εμφανιζόμενο ανάπτυγμα ως PNG ή TIFF με το μέγεθος εικονοστοιχείου του, και η αντιστοιχία του (.json) δίπλα</translation>
+    </message>
+    <message>
+        <source>Export plate</source>
+        <translation>Εξαγωγή πίνακα</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;SVG (*.svg);;TIFF (*.tif *.tiff);;PNG (*.png)</source>
+        <translation>PDF (*.pdf);;SVG (*.svg);;TIFF (*.tif *.tiff);;PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Drawing the plate %1</source>
+        <translation>Σχεδίαση του πίνακα %1</translation>
+    </message>
+    <message>
+        <source>Drawing the plate was cancelled</source>
+        <translation>Η σχεδίαση του πίνακα ακυρώθηκε</translation>
+    </message>
+    <message>
+        <source>Wrote the plate %1</source>
+        <translation>Γράφτηκε ο πίνακας %1</translation>
+    </message>
+    <message>
+        <source>Could not draw the plate: %1</source>
+        <translation>Δεν ήταν δυνατή η σχεδίαση του πίνακα: %1</translation>
+    </message>
+    <message>
+        <source>There is no développée to export: compute one first (Tools › Développée)</source>
+        <translation>Δεν υπάρχει ανάπτυγμα για εξαγωγή: υπολογίστε πρώτα ένα (Εργαλεία › Ανάπτυγμα)</translation>
+    </message>
+    <message>
+        <source>Export développée image</source>
+        <translation>Εξαγωγή εικόνας αναπτύγματος</translation>
+    </message>
+    <message>
+        <source>PNG (*.png);;TIFF (*.tif *.tiff)</source>
+        <translation>PNG (*.png);;TIFF (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Could not export the développée: %1</source>
+        <translation>Δεν ήταν δυνατή η εξαγωγή του αναπτύγματος: %1</translation>
+    </message>
+    <message>
+        <source>Could not write the développée&apos;s map: %1</source>
+        <translation>Δεν ήταν δυνατή η εγγραφή της αντιστοιχίας του αναπτύγματος: %1</translation>
+    </message>
+    <message>
+        <source>Wrote the développée %1 and its map</source>
+        <translation>Γράφτηκε το ανάπτυγμα %1 και η αντιστοιχία του</translation>
     </message>
 </context>
 <context>
@@ -1755,6 +1830,165 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::PlateDialog</name>
+    <message>
+        <source>Développée</source>
+        <translation>Ανάπτυγμα</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Πρόσοψη</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Πίσω</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Αριστερά</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Δεξιά</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Κάτοψη</translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation>Από κάτω</translation>
+    </message>
+    <message>
+        <source>Current view</source>
+        <translation>Τρέχουσα όψη</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation>Θόλος ουρανού</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Φως</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Ύψος</translation>
+    </message>
+    <message>
+        <source>Headlight</source>
+        <translation>Μετωπικός φωτισμός</translation>
+    </message>
+    <message>
+        <source>Page</source>
+        <translation>Σελίδα</translation>
+    </message>
+    <message>
+        <source>Margins</source>
+        <translation>Περιθώρια</translation>
+    </message>
+    <message>
+        <source>Resolution (dpi)</source>
+        <translation>Ανάλυση (dpi)</translation>
+    </message>
+    <message>
+        <source>Bits per sample (TIFF, PNG)</source>
+        <translation>Bit ανά δείγμα (TIFF, PNG)</translation>
+    </message>
+    <message>
+        <source>Template</source>
+        <translation>Πρότυπο</translation>
+    </message>
+    <message>
+        <source>Caption</source>
+        <translation>Λεζάντα</translation>
+    </message>
+    <message>
+        <source>Add panel</source>
+        <translation>Προσθήκη πλαισίου</translation>
+    </message>
+    <message>
+        <source>Remove panel</source>
+        <translation>Αφαίρεση πλαισίου</translation>
+    </message>
+    <message>
+        <source>Panels</source>
+        <translation>Πλαίσια</translation>
+    </message>
+    <message>
+        <source>Export plate</source>
+        <translation>Εξαγωγή πίνακα</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Οριζόντια</translation>
+    </message>
+    <message>
+        <source>Legend of the annotation classes</source>
+        <translation>Υπόμνημα των κλάσεων σχολιασμού</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Εξαγωγή…</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Όψη</translation>
+    </message>
+    <message>
+        <source>Scale 1:</source>
+        <translation>Κλίμακα 1:</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Σκίαση</translation>
+    </message>
+    <message>
+        <source>Annotation</source>
+        <translation>Σχολιασμός</translation>
+    </message>
+    <message>
+        <source>Hatches</source>
+        <translation>Διαγραμμίσεις</translation>
+    </message>
+    <message>
+        <source>Fragment</source>
+        <translation>Θραύσμα</translation>
+    </message>
+    <message>
+        <source>Choose a template…</source>
+        <translation>Επιλέξτε πρότυπο…</translation>
+    </message>
+    <message>
+        <source>Développée and front view</source>
+        <translation>Ανάπτυγμα και πρόσοψη</translation>
+    </message>
+    <message>
+        <source>Front, right and top views</source>
+        <translation>Πρόσοψη, δεξιά όψη και κάτοψη</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Κανένα</translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation>Υλικό / κατάσταση</translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation>Ίχνη εργαλείων</translation>
+    </message>
+    <message>
+        <source>(all visible; the first for a développée)</source>
+        <translation>(όλα τα ορατά· το πρώτο για ανάπτυγμα)</translation>
+    </message>
+    <message>
+        <source>Drawing the preview…</source>
+        <translation>Σχεδίαση της προεπισκόπησης…</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>
@@ -1868,6 +2102,10 @@
     <message>
         <source></source>
         <translation>Αφαίρεση της κλάσης %1</translation>
+    </message>
+    <message>
+        <source>Keep the plate&apos;s settings</source>
+        <translation>Διατήρηση των ρυθμίσεων του πίνακα</translation>
     </message>
 </context>
 <context>

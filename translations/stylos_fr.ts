@@ -200,6 +200,14 @@
         <source>--paint does not go with --dock, --gizmo or --annotation</source>
         <translation>--paint ne va ni avec --dock, ni avec --gizmo, ni avec --annotation</translation>
     </message>
+    <message>
+        <source>With --grab: paint as --paint, then write the first fragment&apos;s plate (its développée and front view at 1:N) to BASE.pdf and BASE.png, and grab the Export plate dialog.</source>
+        <translation>Avec --grab : peindre comme --paint, puis écrire la planche du premier fragment (sa développée et sa vue de face au 1:N) dans BASE.pdf et BASE.png, et capturer la boîte de dialogue Exporter une planche.</translation>
+    </message>
+    <message>
+        <source>--plate goes with --grab alone</source>
+        <translation>--plate va avec --grab seul</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DeveloppeeDock</name>
@@ -661,6 +669,73 @@
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
         <translation>Skydome de %1 : %2 cellules au niveau %3, %4 directions du ciel, %5 s</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::PlateActions</name>
+    <message>
+        <source>Export &amp;plate…</source>
+        <translation>Exporter une &amp;planche…</translation>
+    </message>
+    <message>
+        <source>A publication plate at an exact scale: développées and orthographic views at 1:N with scale bars, legend and caption, as PDF, SVG, TIFF or PNG</source>
+        <translation>Une planche de publication à échelle exacte : développées et vues orthographiques au 1:N avec échelles graphiques, légende et légende de figure, en PDF, SVG, TIFF ou PNG</translation>
+    </message>
+    <message>
+        <source>Export &amp;développée image…</source>
+        <translation>Exporter l’image de la &amp;développée…</translation>
+    </message>
+    <message>
+        <source>The développée on show as PNG or TIFF with its pixel size, and its map (.json) beside it</source>
+        <translation>La développée affichée en PNG ou TIFF avec sa taille de pixel, et sa correspondance (.json) à côté</translation>
+    </message>
+    <message>
+        <source>Export plate</source>
+        <translation>Exporter une planche</translation>
+    </message>
+    <message>
+        <source>PDF (*.pdf);;SVG (*.svg);;TIFF (*.tif *.tiff);;PNG (*.png)</source>
+        <translation>PDF (*.pdf);;SVG (*.svg);;TIFF (*.tif *.tiff);;PNG (*.png)</translation>
+    </message>
+    <message>
+        <source>Drawing the plate %1</source>
+        <translation>Dessin de la planche %1</translation>
+    </message>
+    <message>
+        <source>Drawing the plate was cancelled</source>
+        <translation>Le dessin de la planche a été annulé</translation>
+    </message>
+    <message>
+        <source>Wrote the plate %1</source>
+        <translation>Planche %1 écrite</translation>
+    </message>
+    <message>
+        <source>Could not draw the plate: %1</source>
+        <translation>Impossible de dessiner la planche : %1</translation>
+    </message>
+    <message>
+        <source>There is no développée to export: compute one first (Tools › Développée)</source>
+        <translation>Aucune développée à exporter : calculez-en une d’abord (Outils › Développée)</translation>
+    </message>
+    <message>
+        <source>Export développée image</source>
+        <translation>Exporter l’image de la développée</translation>
+    </message>
+    <message>
+        <source>PNG (*.png);;TIFF (*.tif *.tiff)</source>
+        <translation>PNG (*.png);;TIFF (*.tif *.tiff)</translation>
+    </message>
+    <message>
+        <source>Could not export the développée: %1</source>
+        <translation>Impossible d’exporter la développée : %1</translation>
+    </message>
+    <message>
+        <source>Could not write the développée&apos;s map: %1</source>
+        <translation>Impossible d’écrire la correspondance de la développée : %1</translation>
+    </message>
+    <message>
+        <source>Wrote the développée %1 and its map</source>
+        <translation>Développée %1 et sa correspondance écrites</translation>
     </message>
 </context>
 <context>
@@ -1755,6 +1830,165 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::PlateDialog</name>
+    <message>
+        <source>Développée</source>
+        <translation>Développée</translation>
+    </message>
+    <message>
+        <source>Front</source>
+        <translation>Face</translation>
+    </message>
+    <message>
+        <source>Back</source>
+        <translation>Arrière</translation>
+    </message>
+    <message>
+        <source>Left</source>
+        <translation>Gauche</translation>
+    </message>
+    <message>
+        <source>Right</source>
+        <translation>Droite</translation>
+    </message>
+    <message>
+        <source>Top</source>
+        <translation>Dessus</translation>
+    </message>
+    <message>
+        <source>Bottom</source>
+        <translation>Dessous</translation>
+    </message>
+    <message>
+        <source>Current view</source>
+        <translation>Vue actuelle</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <translation>Voûte céleste</translation>
+    </message>
+    <message>
+        <source>Light</source>
+        <translation>Lumière</translation>
+    </message>
+    <message>
+        <source>Height</source>
+        <translation>Hauteur</translation>
+    </message>
+    <message>
+        <source>Headlight</source>
+        <translation>Éclairage frontal</translation>
+    </message>
+    <message>
+        <source>Page</source>
+        <translation>Page</translation>
+    </message>
+    <message>
+        <source>Margins</source>
+        <translation>Marges</translation>
+    </message>
+    <message>
+        <source>Resolution (dpi)</source>
+        <translation>Résolution (ppp)</translation>
+    </message>
+    <message>
+        <source>Bits per sample (TIFF, PNG)</source>
+        <translation>Bits par échantillon (TIFF, PNG)</translation>
+    </message>
+    <message>
+        <source>Template</source>
+        <translation>Modèle</translation>
+    </message>
+    <message>
+        <source>Caption</source>
+        <translation>Légende de figure</translation>
+    </message>
+    <message>
+        <source>Add panel</source>
+        <translation>Ajouter un panneau</translation>
+    </message>
+    <message>
+        <source>Remove panel</source>
+        <translation>Retirer le panneau</translation>
+    </message>
+    <message>
+        <source>Panels</source>
+        <translation>Panneaux</translation>
+    </message>
+    <message>
+        <source>Export plate</source>
+        <translation>Exporter une planche</translation>
+    </message>
+    <message>
+        <source>Landscape</source>
+        <translation>Paysage</translation>
+    </message>
+    <message>
+        <source>Legend of the annotation classes</source>
+        <translation>Légende des classes d’annotation</translation>
+    </message>
+    <message>
+        <source>Export…</source>
+        <translation>Exporter…</translation>
+    </message>
+    <message>
+        <source>View</source>
+        <translation>Vue</translation>
+    </message>
+    <message>
+        <source>Scale 1:</source>
+        <translation>Échelle 1:</translation>
+    </message>
+    <message>
+        <source>Shading</source>
+        <translation>Ombrage</translation>
+    </message>
+    <message>
+        <source>Annotation</source>
+        <translation>Annotation</translation>
+    </message>
+    <message>
+        <source>Hatches</source>
+        <translation>Hachures</translation>
+    </message>
+    <message>
+        <source>Fragment</source>
+        <translation>Fragment</translation>
+    </message>
+    <message>
+        <source>Choose a template…</source>
+        <translation>Choisir un modèle…</translation>
+    </message>
+    <message>
+        <source>Développée and front view</source>
+        <translation>Développée et vue de face</translation>
+    </message>
+    <message>
+        <source>Front, right and top views</source>
+        <translation>Vues de face, de droite et de dessus</translation>
+    </message>
+    <message>
+        <source>None</source>
+        <translation>Aucune</translation>
+    </message>
+    <message>
+        <source>Material / condition</source>
+        <translation>Matériau / état</translation>
+    </message>
+    <message>
+        <source>Tool marks</source>
+        <translation>Traces d’outil</translation>
+    </message>
+    <message>
+        <source>(all visible; the first for a développée)</source>
+        <translation>(tous les visibles ; le premier pour une développée)</translation>
+    </message>
+    <message>
+        <source>Drawing the preview…</source>
+        <translation>Dessin de l’aperçu…</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>
@@ -1864,6 +2098,10 @@
     <message>
         <source>Could not save the annotations of %1 into %2: %3.</source>
         <translation>Impossible d’enregistrer les annotations de %1 dans %2 : %3.</translation>
+    </message>
+    <message>
+        <source>Keep the plate&apos;s settings</source>
+        <translation>Conserver les réglages de la planche</translation>
     </message>
 </context>
 <context>
