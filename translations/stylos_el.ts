@@ -737,6 +737,42 @@
         <source>Wrote the développée %1 and its map</source>
         <translation>Γράφτηκε το ανάπτυγμα %1 και η αντιστοιχία του</translation>
     </message>
+    <message>
+        <source>Export &amp;view image…</source>
+        <translation>Εξαγωγή εικόνας &amp;όψης…</translation>
+    </message>
+    <message>
+        <source>The visible fragments seen along the 3D view&apos;s direction, orthographic, every cell drawn, at a width you choose, as PNG or TIFF</source>
+        <translation>Τα ορατά θραύσματα κατά την κατεύθυνση της τρισδιάστατης όψης, ορθογραφικά, κάθε κελί σχεδιασμένο, στο πλάτος που επιλέγετε, ως PNG ή TIFF</translation>
+    </message>
+    <message>
+        <source>Export view image</source>
+        <translation>Εξαγωγή εικόνας όψης</translation>
+    </message>
+    <message>
+        <source>Width in pixels</source>
+        <translation>Πλάτος σε εικονοστοιχεία</translation>
+    </message>
+    <message>
+        <source>There is no 3D view to export</source>
+        <translation>Δεν υπάρχει τρισδιάστατη όψη για εξαγωγή</translation>
+    </message>
+    <message>
+        <source>Rendering the view %1</source>
+        <translation>Απόδοση της όψης %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>ακυρώθηκε</translation>
+    </message>
+    <message>
+        <source>Wrote the view image %1</source>
+        <translation>Γράφτηκε η εικόνα όψης %1</translation>
+    </message>
+    <message>
+        <source>Could not render the view: %1</source>
+        <translation>Δεν ήταν δυνατή η απόδοση της όψης: %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::ProjectActions</name>

@@ -737,6 +737,42 @@
         <source>Wrote the développée %1 and its map</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Export &amp;view image…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The visible fragments seen along the 3D view&apos;s direction, orthographic, every cell drawn, at a width you choose, as PNG or TIFF</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Export view image</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width in pixels</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>There is no 3D view to export</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rendering the view %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Wrote the view image %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not render the view: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::ProjectActions</name>

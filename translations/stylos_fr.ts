@@ -737,6 +737,42 @@
         <source>Wrote the développée %1 and its map</source>
         <translation>Développée %1 et sa correspondance écrites</translation>
     </message>
+    <message>
+        <source>Export &amp;view image…</source>
+        <translation>Exporter l’image de la &amp;vue…</translation>
+    </message>
+    <message>
+        <source>The visible fragments seen along the 3D view&apos;s direction, orthographic, every cell drawn, at a width you choose, as PNG or TIFF</source>
+        <translation>Les fragments visibles vus selon la direction de la vue 3D, en orthographique, chaque cellule dessinée, à la largeur choisie, en PNG ou TIFF</translation>
+    </message>
+    <message>
+        <source>Export view image</source>
+        <translation>Exporter l’image de la vue</translation>
+    </message>
+    <message>
+        <source>Width in pixels</source>
+        <translation>Largeur en pixels</translation>
+    </message>
+    <message>
+        <source>There is no 3D view to export</source>
+        <translation>Il n’y a pas de vue 3D à exporter</translation>
+    </message>
+    <message>
+        <source>Rendering the view %1</source>
+        <translation>Rendu de la vue %1</translation>
+    </message>
+    <message>
+        <source>cancelled</source>
+        <translation>annulé</translation>
+    </message>
+    <message>
+        <source>Wrote the view image %1</source>
+        <translation>Image de la vue %1 écrite</translation>
+    </message>
+    <message>
+        <source>Could not render the view: %1</source>
+        <translation>Impossible de rendre la vue : %1</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::ProjectActions</name>

@@ -15,6 +15,7 @@
 #include <QFileDialog>
 #include <QFileInfo>
 #include <QFutureWatcher>
+#include <QInputDialog>
 #include <QMenu>
 
 namespace stylos::app {
@@ -23,8 +24,9 @@ namespace cp = core::plate;
 
 PlateActions::PlateActions(widgets::SceneDocument& document, widgets::DeveloppeeView& developpee, QWidget& window)
     : QObject(&window), m_document(document), m_view(developpee), m_window(window), m_plate(new QAction(this)),
-      m_developpee(new QAction(this))
+      m_developpee(new QAction(this)), m_viewImage(new QAction(this))
 {
+    connect(m_viewImage, &QAction::triggered, this, &PlateActions::chooseViewImage);
     connect(m_plate, &QAction::triggered, this, &PlateActions::choosePlate);
     connect(m_developpee, &QAction::triggered, this, &PlateActions::chooseDeveloppee);
     connect(&m_document, &widgets::SceneDocument::fragmentAdded, this, &PlateActions::updateEnabled);
@@ -38,6 +40,7 @@ void PlateActions::populate(QMenu& menu, QAction* before)
 {
     menu.insertAction(before, m_plate);
     menu.insertAction(before, m_developpee);
+    menu.insertAction(before, m_viewImage);
     menu.insertSeparator(before);
 }
 
@@ -48,11 +51,15 @@ void PlateActions::retranslateUi()
                              "scale bars, legend and caption, as PDF, SVG, TIFF or PNG"));
     m_developpee->setText(tr("Export &développée image…"));
     m_developpee->setStatusTip(tr("The développée on show as PNG or TIFF with its pixel size, and its map (.json) beside it"));
+    m_viewImage->setText(tr("Export &view image…"));
+    m_viewImage->setStatusTip(tr("The visible fragments seen along the 3D view's direction, orthographic, every cell drawn, "
+                                 "at a width you choose, as PNG or TIFF"));
 }
 
 void PlateActions::updateEnabled()
 {
     m_plate->setEnabled(!m_document.scene().empty());
+    m_viewImage->setEnabled(!m_document.scene().empty());
 }
 
 std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::SceneDocument& document)
@@ -118,6 +125,55 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
         const Outcome o = watcher->result();
         if (o.error.isEmpty()) Q_EMIT reported(tr("Wrote the plate %1").arg(QDir::toNativeSeparators(path)), false);
         else Q_EMIT reported(tr("Could not draw the plate: %1").arg(o.error), true);
+        Q_EMIT plateFinished(o.error.isEmpty());
+    });
+}
+
+void PlateActions::chooseViewImage()
+{
+    bool ok = false;
+    const int width = QInputDialog::getInt(&m_window, tr("Export view image"), tr("Width in pixels"), 4000, 16, 100000,
+                                           100, &ok);
+    if (!ok) return;
+    const QString path = QFileDialog::getSaveFileName(&m_window, tr("Export view image"), QString(),
+                                                      tr("PNG (*.png);;TIFF (*.tif *.tiff)"));
+    if (!path.isEmpty()) exportViewImage(width, path);
+}
+
+void PlateActions::exportViewImage(int widthPx, const QString& path)
+{
+    const auto camera = m_camera ? m_camera() : std::nullopt;
+    if (!camera) {
+        Q_EMIT reported(tr("There is no 3D view to export"), true);
+        Q_EMIT plateFinished(false);
+        return;
+    }
+    cp::PanelSpec panel;
+    panel.view = cp::PanelView::Camera;
+    panel.camera = camera;
+    panel.shading = cp::PanelShading::Skydome;
+    const auto sources = sourcesOf(m_document);
+    struct Outcome {
+        QString error;
+    };
+    auto* watcher = m_document.tasks().start<Outcome>(
+        tr("Rendering the view %1").arg(QFileInfo(path).fileName()),
+        [sources, panel, widthPx, file = path.toStdString()](QPromise<Outcome>& promise, core::ProgressSink& progress) mutable {
+            Outcome out;
+            auto image = cp::renderViewImage(*sources, panel, widthPx, {}, &progress);
+            if (!image && image.error().message.find("\"ambient\"") != std::string::npos) {
+                panel.shading = cp::PanelShading::Headlight; // not every octree has its skydome
+                image = cp::renderViewImage(*sources, panel, widthPx, {}, &progress);
+            }
+            if (!image) out.error = QString::fromStdString(image.error().message);
+            else if (auto s = plate::writePanelImage(image->image, file, 8); !s) out.error = QString::fromStdString(s.error().message);
+            promise.addResult(out);
+        });
+    connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher, path] {
+        const bool done = !watcher->isCanceled() && watcher->future().resultCount() > 0;
+        const Outcome o = done ? watcher->result() : Outcome{tr("cancelled")};
+        if (o.error.isEmpty()) Q_EMIT reported(tr("Wrote the view image %1").arg(QDir::toNativeSeparators(path)), false);
+        else Q_EMIT reported(tr("Could not render the view: %1").arg(o.error), true);
         Q_EMIT plateFinished(o.error.isEmpty());
     });
 }

@@ -1,12 +1,14 @@
 #pragma once
 /** @file
- * @brief File › Export plate… and File › Export développée image…: the actions and their handlers.
+ * @brief File › Export plate…, Export développée image… and Export view image…: the actions and their handlers.
  *        Export plate opens the plate dialog (widgets/plate/PlateDialog) on the project's kept plate (or a
  *        default), keeps the stated plate in the project (one undo step), asks for the file (PDF, SVG, TIFF, PNG)
  *        and draws it at full resolution as a background task (the Tasks dock shows it; the plate reads the
  *        document's labels as they are, saved or not). Export développée image writes the développée on show
  *        as PNG or TIFF with its pixel size in the file, and its map sidecar (OUT.json) beside it.
- *        Outcomes go out as messages (reported()). GUI thread only.
+ *        Export view image renders the visible fragments orthographically along the 3D view's camera at a chosen
+ *        width in pixels (every leaf, skydome shading when every octree has it, else headlight) as PNG or TIFF, as
+ *        a background task. Outcomes go out as messages (reported()). GUI thread only.
  */
 #include "stylos/core/plate/PlateSources.h"
 
@@ -47,11 +49,14 @@ public:
 
     /** @brief Draws @p spec into @p path as a background task (no dialog; automation and tests). */
     void exportPlate(const core::plate::PlateSpec& spec, const QString& path);
+    /** @brief Renders the view along the current camera @p widthPx wide into @p path as a task (plateFinished()). */
+    void exportViewImage(int widthPx, const QString& path);
     /** @brief Writes the développée on show to @p path (PNG or TIFF) and its sidecar; false with a report. */
     bool exportDeveloppee(const QString& path);
 
     QAction* plateAction() const { return m_plate; }
     QAction* developpeeAction() const { return m_developpee; }
+    QAction* viewImageAction() const { return m_viewImage; }
 
 Q_SIGNALS:
     void reported(const QString& message, bool failed);
@@ -61,6 +66,7 @@ Q_SIGNALS:
 private:
     void choosePlate();
     void chooseDeveloppee();
+    void chooseViewImage();
     void updateEnabled();
 
     widgets::SceneDocument& m_document;
@@ -68,6 +74,7 @@ private:
     QWidget& m_window;
     QAction* m_plate;
     QAction* m_developpee;
+    QAction* m_viewImage;
     std::function<std::optional<std::array<double, 4>>()> m_camera;
 };
 

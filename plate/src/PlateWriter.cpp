@@ -209,6 +209,31 @@ QSize rasterPageSize(const PlateContent& plate)
     return {int(std::lround(plate.layout.page.widthMm / 25.4 * dpi)), int(std::lround(plate.layout.page.heightMm / 25.4 * dpi))};
 }
 
+Status writePanelImage(const core::plate::PanelImage& image, const fs::path& output, int bits)
+{
+    const auto format = plateFormatOf(output);
+    if (!format || (*format != PlateFormat::Png && *format != PlateFormat::Tiff))
+        return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "a view image is written as .png or .tif");
+    const bool sixteen = bits == 16;
+    OIIO::ImageSpec spec(image.width, image.height, image.channels, sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
+    spec.attribute("Software", "Stylos");
+    spec.attribute("stylos:pixel_size_m", float(image.pixelSizeM));
+    if (*format == PlateFormat::Tiff) spec.attribute("compression", "zip");
+    std::vector<std::uint8_t> bytes;
+    if (!sixteen) {
+        bytes.resize(image.samples.size());
+        for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t((image.samples[i] + 128) / 257);
+    }
+    const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
+    auto out = OIIO::ImageOutput::create(partial.string());
+    if (!out || !out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + OIIO::geterror());
+    const bool ok = sixteen ? out->write_image(OIIO::TypeDesc::UINT16, image.samples.data())
+                            : out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
+    const bool closed = out->close();
+    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->geterror());
+    return finish(partial, output);
+}
+
 Status writePlate(const PlateContent& plate, const fs::path& output)
 {
     const auto format = plateFormatOf(output);

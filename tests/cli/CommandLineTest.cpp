@@ -60,7 +60,7 @@ TEST(CliCommandLine, HelpOnEveryCommandPrintsTheUsageAndExitsZero)
 
 TEST(CliCommandLine, NoCommandOrAnUnknownOneIsOneLine)
 {
-    const std::string commands = " (commands: info, generate, normals, build, unroll, ao, guides, dock, annotate, export; stylos-cli --help for details)";
+    const std::string commands = " (commands: info, generate, normals, build, unroll, ao, guides, dock, annotate, export, plate; stylos-cli --help for details)";
     expectUsageLine(runCli({}), "stylos-cli: no command given" + commands);
     expectUsageLine(runCli({"frobnicate"}), "stylos-cli: unknown command \"frobnicate\"" + commands);
 }

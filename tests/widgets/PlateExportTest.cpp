@@ -1,13 +1,15 @@
 // File › Export plate… on a generated drum in a document: the dialog's preview is the real plate (drawn, Export
 // enabled) and a scale that does not fit says which would (Export disabled); the dialog states back what it was
 // given; the plate drawn as a task reads the document's unsaved labels; the plate kept in the project is one undo
-// step and comes back from the saved project file; exporting a développée with none on show is refused.
+// step and comes back from the saved project file; exporting a développée with none on show is refused; a view
+// image is the chosen width along the 3D view's camera (none: refused).
 #include "SceneTestSupport.h"
 #include "WidgetTestSupport.h"
 
 #include "PlateActions.h"
 #include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/scene/ProjectFile.h"
+#include "stylos/core/view/Camera.h"
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/widgets/annotation/LabelStore.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
@@ -36,6 +38,7 @@ private Q_SLOTS:
     void initTestCase();
     void previewDrawsAndRefusesWhatDoesNotFit();
     void exportDrawsUnsavedLabelsAndKeepsThePlate();
+    void viewImageIsTheChosenWidthAlongTheCamera();
 
 private:
     core::scene::FragmentId addDrum(widgets::SceneDocument& document) const;
@@ -148,6 +151,34 @@ void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()
     QCOMPARE(*loaded->scene.plate(), spec(20));
     document.undoStack()->undo();
     QVERIFY(!document.scene().plate().has_value());
+}
+
+void PlateExportTest::viewImageIsTheChosenWidthAlongTheCamera()
+{
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    QVERIFY(addDrum(document) != 0);
+    QWidget window;
+    widgets::DeveloppeeView view;
+    app::PlateActions actions(document, view, window);
+    QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
+    const QString png = m_dir.filePath(QStringLiteral("view.png"));
+    actions.exportViewImage(800, png); // no camera source: refused at once
+    QCOMPARE(finished.count(), 1);
+    QCOMPARE(finished.at(0).at(0).toBool(), false);
+    QVERIFY(!QFile::exists(png));
+
+    const Eigen::Quaterniond top = core::view::Camera::standardOrientation(core::view::StandardView::Top);
+    actions.setCameraSource([top] { return std::optional<std::array<double, 4>>({top.w(), top.x(), top.y(), top.z()}); });
+    actions.exportViewImage(800, png);
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.at(1).at(0).toBool(), true);
+    const QImage image(png);
+    QCOMPARE(image.width(), 800);
+    // From the top, a drum (tilted a few degrees by the generator) is nearly a disc, and its centre is drawn.
+    QVERIFY2(std::abs(image.height() - 800) <= 80, qPrintable(QString::number(image.height())));
+    QVERIFY(qGray(image.pixel(400, image.height() / 2)) < 255);
+    QCOMPARE(qGray(image.pixel(2, 2)), 255); // paper in the corner
 }
 
 STYLOS_WIDGET_TEST_MAIN(PlateExportTest)

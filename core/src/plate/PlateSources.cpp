@@ -137,8 +137,10 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
     return out;
 }
 
+/** @p widthPx > 0: the pixel size that makes the frame that many pixels wide; else the plate's (1:N at D dpi). */
 Result<RenderedPanel> render3d(const PlateSources& sources, const std::vector<const PlateFragment*>& fragments,
-                               const PanelSpec& panel, const PanelRenderOptions& options, ProgressSink* progress)
+                               const PanelSpec& panel, const PanelRenderOptions& options, int widthPx,
+                               ProgressSink* progress)
 {
     std::vector<oct::PackedOctree> octrees;
     std::vector<OrthoSource> list;
@@ -164,6 +166,12 @@ Result<RenderedPanel> render3d(const PlateSources& sources, const std::vector<co
     OrthoOptions o;
     o.orientation = panelOrientation(panel);
     o.pixelSizeM = printPixelSize(panel.scale, options.dpi);
+    if (widthPx > 0) {
+        o.pixelSizeM = 0.001;
+        auto frame = measureOrtho(list, o);
+        if (!frame) return frame.error();
+        o.pixelSizeM = frame->extentM[0] / double(widthPx);
+    }
     o.shading = panel.shading;
     o.keepClasses = panel.layer.has_value();
     o.maxPixels = options.maxPixels;
@@ -213,7 +221,18 @@ Result<RenderedPanel> renderPanel(const PlateSources& sources, const PanelSpec& 
     auto fragments = pick(sources, panel);
     if (!fragments) return fragments.error();
     if (panel.view == PanelView::Developpee) return renderDeveloppee(sources, *fragments->front(), panel, options, progress);
-    return render3d(sources, *fragments, panel, options, progress);
+    return render3d(sources, *fragments, panel, options, 0, progress);
+}
+
+Result<RenderedPanel> renderViewImage(const PlateSources& sources, const PanelSpec& panel, int widthPx,
+                                      const PanelRenderOptions& options, ProgressSink* progress)
+{
+    if (panel.view == PanelView::Developpee)
+        return Error{ErrorCode::InvalidArgument, "a view image is a 3D view, not a développée"};
+    if (widthPx < 16 || widthPx > 100000) return Error{ErrorCode::InvalidArgument, "a view image is 16..100000 pixels wide"};
+    auto fragments = pick(sources, panel);
+    if (!fragments) return fragments.error();
+    return render3d(sources, *fragments, panel, options, widthPx, progress);
 }
 
 } // namespace stylos::core::plate

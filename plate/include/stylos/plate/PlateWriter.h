@@ -29,4 +29,11 @@ QSize rasterPageSize(const PlateContent& plate);
 
 core::Status writePlate(const PlateContent& plate, const std::filesystem::path& output);
 
+/**
+ * @brief Writes one panel's picture alone (Export view image): PNG or TIFF (ZIP) by extension, 8 or 16 bits,
+ *        grey or RGB as the picture is, with "stylos:pixel_size_m" (metres on the object per pixel) in the file;
+ *        atomically. InvalidArgument for another extension, WriteFailed naming the file.
+ */
+core::Status writePanelImage(const core::plate::PanelImage& image, const std::filesystem::path& output, int bits);
+
 } // namespace stylos::plate

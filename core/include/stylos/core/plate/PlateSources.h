@@ -76,4 +76,11 @@ inline double printPixelSize(double scale, int dpi) { return scale * 0.0254 / do
 Result<RenderedPanel> renderPanel(const PlateSources& sources, const PanelSpec& panel, const PanelRenderOptions& options,
                                   ProgressSink* progress = nullptr);
 
+/**
+ * @brief A 3D view (of @p panel: its side or camera, shading, layer, fragments) rendered @p widthPx pixels wide
+ *        (16..100000), whatever its scale: Export view image. The frame's height follows the scene's extent.
+ */
+Result<RenderedPanel> renderViewImage(const PlateSources& sources, const PanelSpec& panel, int widthPx,
+                                      const PanelRenderOptions& options = {}, ProgressSink* progress = nullptr);
+
 } // namespace stylos::core::plate
