@@ -103,6 +103,19 @@ TEST(PlateCommand, UsageErrorsAndBadInput)
     EXPECT_EQ(big.exitCode, 1);
     EXPECT_NE(big.err.find("use 1:"), std::string::npos) << big.err;
     EXPECT_FALSE(fs::exists(out));
+    // A project whose fragment's octree is missing: named, with its path; no file.
+    const auto project = (dir / "p.stylos").string();
+    std::ofstream(project) << R"({"format": "stylos-project", "version": 2, "fragments": [{"id": 1, "name": "Drum 2",
+        "octree": "gone.poct", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}]})";
+    const auto gone = runCli({"plate", project, "-o", out, "--view", "front", "--scale", "10", "--shading", "headlight"});
+    EXPECT_EQ(gone.exitCode, 1);
+    EXPECT_NE(gone.err.find("Drum 2"), std::string::npos) << gone.err;
+    EXPECT_NE(gone.err.find("gone.poct"), std::string::npos) << gone.err;
+    EXPECT_FALSE(fs::exists(out));
+    const auto other = runCli({"plate", project, "-o", out, "--scale", "10", "--fragment", "Drum 9"});
+    EXPECT_EQ(other.exitCode, 1);
+    EXPECT_NE(other.err.find("Drum 9"), std::string::npos) << other.err;
+
     const auto layout = (dir / "bad.json").string();
     std::ofstream(layout) << R"({"panels": [{"view": "front"}]})";
     const auto bad = runCli({"plate", in, "--layout", layout, "-o", out});
