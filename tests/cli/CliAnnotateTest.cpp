@@ -11,6 +11,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
+
 using stylos::test::runCli;
 using stylos::test::TempDir;
 namespace ann = stylos::core::annotation;
@@ -160,7 +162,32 @@ TEST(CliExport, BadInputAndUsage)
     EXPECT_NE(noAmbient.err.find("drum.poct"), std::string::npos) << noAmbient.err;
     EXPECT_EQ(runCli({"export", (dir / "none.poct").string(), "-o", (dir / "x.ply").string()}).exitCode, 1);
     EXPECT_EQ(runCli({"export", d.poct.string(), "-o", (dir / "x.ply").string(), "--layers", "colour"}).exitCode, 2);
-    EXPECT_EQ(runCli({"export", d.poct.string(), "-o", (dir / "x.las").string()}).exitCode, 2);
+    EXPECT_EQ(runCli({"export", d.poct.string(), "-o", (dir / "x.ply").string(), "--legend", "l.json"}).exitCode, 2);
     EXPECT_EQ(runCli({"export", d.poct.string(), "-o", (dir / "x.txt").string()}).exitCode, 2);
+    const auto noLegend = runCli({"export", d.poct.string(), "-o", (dir / "x.las").string(), "--legend", (dir / "none.json").string()});
+    EXPECT_EQ(noLegend.exitCode, 1);
+    EXPECT_NE(noLegend.err.find("none.json"), std::string::npos) << noLegend.err;
     EXPECT_TRUE(fs::is_empty(dir.path()));
+}
+
+TEST(CliExport, LasWithTheLegendsNames)
+{
+    const auto& d = stylos::test::annotatedDrum();
+    TempDir dir;
+    const auto legend = (dir / "legend.json").string();
+    auto custom = stylos::core::annotation::Legend::defaults();
+    custom.material[0].name = "marbre conservé";
+    std::ofstream(legend) << custom.toJson().dump();
+    const auto las = (dir / "x.las").string();
+    const auto run = runCli({"export", d.poct.string(), "-o", las, "--legend", legend, "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    const auto bytes = stylos::test::readBytes(las);
+    EXPECT_EQ(std::string(bytes.data(), 4), "LASF");
+    EXPECT_EQ(std::uint8_t(bytes[104]), 6);
+    const std::string text(bytes.begin(), bytes.end());
+    EXPECT_NE(text.find("marbre conserv"), std::string::npos);
+    const auto info = runCli({"info", las, "--json"});
+    ASSERT_EQ(info.exitCode, 0) << info.err;
+    EXPECT_EQ(nlohmann::json::parse(info.out)["points"], j["points"]);
 }

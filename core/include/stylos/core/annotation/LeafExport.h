@@ -6,7 +6,7 @@
  *        layer yet), "ambient" as float (the 3D skydome's layer, which must be present).
  *
  * Written atomically (PlyWriter: temporary file beside the target, renamed by finish()): on any error or
- * cancel nothing is left and an existing file is untouched. LAS 1.4 is not written yet (docs/annotation.md).
+ * cancel nothing is left and an existing file is untouched. LAS 1.4: annotation/LeafLas.h.
  * Thread-safety: reentrant. Failure modes: InvalidArgument (an unknown or repeated layer name, or "ambient"
  * absent from the file — naming the octree's file), Malformed (a layer of the wrong type or size),
  * WriteFailed naming the output, Cancelled.
