@@ -7,6 +7,7 @@
 #include "stylos/core/shading/SkydomeShading.h"
 #include "stylos/core/util/SubProgress.h"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <numbers>
@@ -22,8 +23,8 @@ struct Split {
     double fit, unroll, shade;
 };
 
-/** The surface about the given axis at the given unrolling radius: a cylinder as it is (its RMS over every point),
- *  a cone or a revolution fitted, then measured at @p radius. */
+/** The surface about the given axis at the given unrolling radius: a cylinder as it is (its RMS over the robust
+ *  band of the lateral surface, as the fitter reports it), a cone or a revolution fitted, then measured at @p radius. */
 Result<unroll::FitReport> givenSurface(const cloud::PointCloud& cloud, const unroll::FitOptions& fitOptions,
                                        double radius, ProgressSink* progress)
 {
@@ -42,16 +43,37 @@ Result<unroll::FitReport> givenSurface(const cloud::PointCloud& cloud, const unr
     if (!surface) return surface.error();
     unroll::FitReport report{.surface = std::move(surface).value()};
     const unroll::Axis& axis = *fitOptions.axis;
-    double sum = 0.0;
-    std::size_t n = 0;
+    // Residuals h = ρ − R, then the fitter's robust band (SurfaceFit.h): the fixed point of
+    // τ = 3 × 1.4826 × median{|h| ≤ τ}, from the unroller's band 0.15 R. The RMS is over that band, so the bed
+    // faces and the fracture surfaces (far from the cylinder) do not count as misfit of the lateral surface.
+    std::vector<double> h(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i) {
         const Eigen::Vector3d d = cloud.world(i) - axis.point;
-        const double rho = (d - d.dot(axis.direction) * axis.direction).norm();
-        sum += (rho - radius) * (rho - radius);
-        ++n;
+        h[i] = std::abs((d - d.dot(axis.direction) * axis.direction).norm() - radius);
     }
-    report.rmsResidual = n > 0 ? std::sqrt(sum / double(n)) : 0.0;
-    report.inlierFraction = 1.0;
+    double tau = 0.15 * radius;
+    std::vector<double> within;
+    for (int round = 0; round < 30; ++round) {
+        within.clear();
+        for (const double v : h)
+            if (v <= tau) within.push_back(v);
+        if (within.empty()) break;
+        const auto mid = within.begin() + std::ptrdiff_t(within.size() / 2);
+        std::nth_element(within.begin(), mid, within.end());
+        const double next = 3.0 * 1.4826 * *mid;
+        if (!(next > 0.0) || std::abs(next - tau) <= 1e-3 * tau) {
+            tau = next > 0.0 ? next : tau;
+            break;
+        }
+        tau = next;
+    }
+    double sum = 0.0;
+    std::size_t kept = 0;
+    for (const double v : h)
+        if (v <= tau) sum += v * v, ++kept;
+    const std::size_t n = cloud.size();
+    report.rmsResidual = kept > 0 ? std::sqrt(sum / double(kept)) : 0.0;
+    report.inlierFraction = n > 0 ? double(kept) / double(n) : 0.0;
     report.points = n;
     report.seconds = secondsSince(start);
     if (progress) progress->update(1.0);

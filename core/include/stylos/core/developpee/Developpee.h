@@ -47,7 +47,7 @@ struct DeveloppeeOptions {
     std::optional<unroll::Axis> axis;
     /** With a given axis: the unrolling radius (metres, > 0), e.g. the leading radius of the drum's guides, so a
      *  fragment and its drum unroll at the same scale. A cylinder is then that cylinder about the axis (nothing
-     *  fitted; the fit report's RMS is that of the distances from it, over every point); a cone or a surface of
+     *  fitted; the fit report's RMS is that of the distances from it over the robust band of the lateral surface, τ = 3 × 1.4826 × median, as the fitter reports it; inlierFraction the share in the band); a cone or a surface of
      *  revolution is fitted and measures arc length at this radius (its referenceRadius). Ignored without an axis. */
     std::optional<double> radius;
     Shading shading = Shading::Skydome;
