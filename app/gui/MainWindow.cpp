@@ -34,6 +34,8 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
+#include <algorithm>
+
 #include <QCloseEvent>
 #include <QDir>
 #include <QLabel>
@@ -254,6 +256,13 @@ void MainWindow::connectDocument()
         *once = connect(m_document, &SceneDocument::loadingFinished, this, [this, once](const QStringList& errors) {
             disconnect(*once);
             if (!errors.isEmpty() || m_document->scene().empty()) return;
+            // The demo comes with its skydome: show it (whether just generated or reopened from the cache).
+            const auto& fragments = m_document->scene().fragments();
+            if (std::all_of(fragments.begin(), fragments.end(), [this](const core::scene::Fragment& f) {
+                    const auto octree = m_document->octree(f.id);
+                    return octree && octree->attribute("ambient").has_value();
+                }))
+                showSkydomeShading();
             m_sceneDock->selectFragment(m_document->scene().fragments().front().id);
             m_developpeeLink->compute();
         });
@@ -304,7 +313,11 @@ void MainWindow::computeSkydome()
     const auto ids = m_sceneDock->selectedFragments();
     if (m_skydome->start(ids) == 0 && !ids.isEmpty())
         report(tr("The skydome of the selection is being computed already, or its octrees are not open yet"), false);
-    // Show the result as soon as it comes: switch the view to skydome shading.
+    showSkydomeShading(); // the result shows as soon as it comes
+}
+
+void MainWindow::showSkydomeShading()
+{
     if (m_viewport && m_viewport->shading() != widgets::PointRenderer::Shading::Ambient) {
         m_viewport->setShading(widgets::PointRenderer::Shading::Ambient);
         m_actions->syncShading();

@@ -82,6 +82,8 @@ public:
     void openDemo();
     /** @brief Starts "Compute skydome" on the selected fragments. */
     void computeSkydome();
+    /** Switches the 3D view (and the menus and Properties) to skydome shading. */
+    void showSkydomeShading();
     /** @brief True while anything runs or loads: tasks, imports, octrees being opened, the demo. */
     bool isBusy() const;
 
