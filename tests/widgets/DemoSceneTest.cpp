@@ -5,6 +5,7 @@
 
 #include "stylos/core/ao/AoExport.h"
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/scene/ProjectFile.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/tasks/TaskManager.h"
@@ -194,6 +195,26 @@ void DemoSceneTest::generatesTheProject()
         QVERIFY2(std::abs(r - (0.55 - 0.008)) < 1e-12, qPrintable(QString::number(r))); // a flute's bottom
     }
     QCOMPARE(drum.guides[1].name, std::string("Flute 1"));
+    // The drum comes annotated: fractured marble over its broken region, a plaster patch, the rest preserved;
+    // the claw band in the tool-mark layer. The other objects carry no labels.
+    {
+        auto octree = core::octree::PackedOctree::open(drum.octreePath);
+        QVERIFY(octree.ok());
+        auto material = core::annotation::readLeafLabels(*octree, core::annotation::AnnotationLayer::Material);
+        auto toolmark = core::annotation::readLeafLabels(*octree, core::annotation::AnnotationLayer::Toolmark);
+        QVERIFY(material.ok() && toolmark.ok());
+        std::array<std::uint64_t, 5> m{}, t{};
+        for (const auto id : *material) ++m[std::min<std::size_t>(id, 4)];
+        for (const auto id : *toolmark) ++t[std::min<std::size_t>(id, 4)];
+        QCOMPARE(m[0], 0u);
+        QVERIFY(m[1] > m[2] && m[2] > 0 && m[3] > 0);
+        QCOMPARE(m[4], 0u);
+        QVERIFY(t[3] > 0 && t[0] > t[3]);
+        QCOMPARE(t[1] + t[2] + t[4], 0u);
+        auto omphalos = core::octree::PackedOctree::open(fragments[3].octreePath);
+        QVERIFY(omphalos.ok());
+        QVERIFY(!omphalos->attribute("material").has_value());
+    }
     QCOMPARE(bounds[0].hi[2] - bounds[0].lo[2] > 0.45, true); // half a metre high
     // Fragment A is of the drum's design, in "Drum 1 reconstruction" docking against the drum, where the layout put it.
     QCOMPARE(project->scene.assemblies().size(), 1u);

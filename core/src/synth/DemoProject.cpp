@@ -1,5 +1,6 @@
 #include "stylos/core/synth/DemoProject.h"
 
+#include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/ao/SkydomeLayer.h"
 #include "stylos/core/io/PlyWriter.h"
 #include "stylos/core/octree/OctreeBuild.h"
@@ -126,6 +127,39 @@ void removeFiles(const std::vector<fs::path>& files)
     for (const fs::path& file : files) fs::remove(file, ignored);
 }
 
+/**
+ * The demo drum's annotation, drawn from its design so the workbench opens on a recorded drum: material —
+ * fractured marble (2) over the broken region and a margin of 2°, 1 cm; plaster / restoration (3) on a patch
+ * opposite it (±12°, 3–15 cm up); preserved marble (1) everywhere else — and tool marks — claw chisel (3) on the
+ * claw band. Leaf centres are in the drum's own frame (axis +Z, bed at z = 0).
+ */
+Status annotateDemoDrum(const DrumParameters& p, const fs::path& octreePath)
+{
+    auto opened = octree::PackedOctree::open(octreePath);
+    if (!opened) return opened.error();
+    const std::uint64_t leaves = annotation::leafCount(*opened);
+    std::vector<std::uint8_t> material(leaves, 1), toolmark(leaves, 0);
+    auto angleFrom = [](double a, double centre) { return std::remainder(a - centre, 2.0 * kPi); };
+    opened->forEachCell(opened->depth(), [&](const octree::CellView& c) {
+        const double x = c.centre[0], y = c.centre[1], z = c.centre[2];
+        const double r = std::hypot(x, y), theta = std::atan2(y, x);
+        const bool lateral = r > p.radius - p.brokenDepth - 0.02 && z > 0.002 && z < p.height - 0.002;
+        if (!lateral) return true;
+        if (p.broken && std::abs(angleFrom(theta, p.brokenCentre)) < p.brokenHalfAngle + 2.0 * kDegree &&
+            z > p.brokenZMin - 0.01 && z < p.brokenZMax + 0.01)
+            material[c.index] = 2;
+        else if (std::abs(angleFrom(theta, p.brokenCentre + kPi)) < 12.0 * kDegree && z > 0.03 && z < 0.15)
+            material[c.index] = 3;
+        if (p.clawBand && z >= p.clawMin && z <= p.clawMax) toolmark[c.index] = 3;
+        return true;
+    });
+    std::vector<octree::AttributeLayer> layers{annotation::labelAttribute(annotation::AnnotationLayer::Material, material),
+                                               annotation::labelAttribute(annotation::AnnotationLayer::Toolmark, toolmark)};
+    if (auto written = annotation::writeAttributesPoct(*opened, std::move(layers), octreePath); !written)
+        return written.error();
+    return {};
+}
+
 } // namespace
 
 int demoOctreeDepth(const SyntheticObject& object, double spacing)
@@ -212,6 +246,10 @@ std::optional<DemoFailure> generateDemoProject(const DemoRequest& request, Progr
             if (auto stored = ao::computeSkydomeLayer(*opened, output, sky, &sink); !stored)
                 return fail(stored.error(), item.fileName);
         }
+
+        if (item.kind == SyntheticKind::Drum)
+            if (auto s = annotateDemoDrum(static_cast<const DrumShape&>(*made.object).parameters(), output); !s)
+                return fail(s.error(), item.fileName);
 
         scene::Fragment fragment;
         fragment.name = item.name;
