@@ -2025,6 +2025,61 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::PlateTexts</name>
+    <message>
+        <source>développée</source>
+        <translation>ανάπτυγμα</translation>
+    </message>
+    <message>
+        <source>front view</source>
+        <translation>πρόσοψη</translation>
+    </message>
+    <message>
+        <source>back view</source>
+        <translation>πίσω όψη</translation>
+    </message>
+    <message>
+        <source>left view</source>
+        <translation>αριστερή όψη</translation>
+    </message>
+    <message>
+        <source>right view</source>
+        <translation>δεξιά όψη</translation>
+    </message>
+    <message>
+        <source>top view</source>
+        <translation>κάτοψη</translation>
+    </message>
+    <message>
+        <source>bottom view</source>
+        <translation>όψη από κάτω</translation>
+    </message>
+    <message>
+        <source>orthographic view</source>
+        <translation>ορθογραφική όψη</translation>
+    </message>
+    <message>
+        <source>skydome</source>
+        <translation>θόλος ουρανού</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>φως</translation>
+    </message>
+    <message>
+        <source>height</source>
+        <translation>ύψος</translation>
+    </message>
+    <message>
+        <source>headlight</source>
+        <translation>μετωπικός φωτισμός</translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation>άξονας</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>

@@ -2025,6 +2025,61 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::PlateTexts</name>
+    <message>
+        <source>développée</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>front view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>back view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>left view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>right view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>top view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>bottom view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>orthographic view</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>skydome</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>height</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>headlight</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>

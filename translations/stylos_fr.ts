@@ -2025,6 +2025,61 @@
     </message>
 </context>
 <context>
+    <name>stylos::widgets::PlateTexts</name>
+    <message>
+        <source>développée</source>
+        <translation>développée</translation>
+    </message>
+    <message>
+        <source>front view</source>
+        <translation>vue de face</translation>
+    </message>
+    <message>
+        <source>back view</source>
+        <translation>vue arrière</translation>
+    </message>
+    <message>
+        <source>left view</source>
+        <translation>vue de gauche</translation>
+    </message>
+    <message>
+        <source>right view</source>
+        <translation>vue de droite</translation>
+    </message>
+    <message>
+        <source>top view</source>
+        <translation>vue de dessus</translation>
+    </message>
+    <message>
+        <source>bottom view</source>
+        <translation>vue de dessous</translation>
+    </message>
+    <message>
+        <source>orthographic view</source>
+        <translation>vue orthographique</translation>
+    </message>
+    <message>
+        <source>skydome</source>
+        <translation>voûte céleste</translation>
+    </message>
+    <message>
+        <source>light</source>
+        <translation>lumière</translation>
+    </message>
+    <message>
+        <source>height</source>
+        <translation>hauteur</translation>
+    </message>
+    <message>
+        <source>headlight</source>
+        <translation>éclairage frontal</translation>
+    </message>
+    <message>
+        <source>axis</source>
+        <translation>axe</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::RemoveFragmentCommand</name>
     <message>
         <source>Remove %1</source>

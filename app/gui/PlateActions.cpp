@@ -8,6 +8,7 @@
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/plate/PlateDialog.h"
+#include "stylos/widgets/plate/PlateTexts.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QAction>
@@ -109,9 +110,11 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
     const QString name = QFileInfo(path).fileName();
     auto* watcher = m_document.tasks().start<Outcome>(
         tr("Drawing the plate %1").arg(name),
-        [sources, spec, file = path.toStdString()](QPromise<Outcome>& promise, core::ProgressSink& progress) {
+        [sources, spec, file = path.toStdString(), texts = widgets::PlateTexts::translated(sources->legend)](
+            QPromise<Outcome>& promise, core::ProgressSink& progress) {
             Outcome out;
             auto plate = plate::composePlate(*sources, spec, {}, &progress);
+            if (plate) plate->texts = texts;
             if (!plate) out.error = QString::fromStdString(plate.error().message);
             else if (auto s = plate::writePlate(*plate, file); !s) out.error = QString::fromStdString(s.error().message);
             promise.addResult(out);

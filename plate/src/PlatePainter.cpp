@@ -76,12 +76,9 @@ void arrow(QPainter& p, const QPointF& from, const QPointF& to)
     p.fillPath(head, Qt::black);
 }
 
-QString viewTitle(const cp::PanelSpec& panel)
+QString viewTitle(const cp::PanelSpec& panel, const PlateTexts& texts)
 {
-    const QString shading = QString::fromLatin1(cp::panelShadingName(panel.shading));
-    if (panel.view == cp::PanelView::Developpee) return QStringLiteral("développée, %1").arg(shading);
-    if (panel.view == cp::PanelView::Camera) return QStringLiteral("orthographic view, %1").arg(shading);
-    return QStringLiteral("%1 view, %2").arg(QString::fromLatin1(cp::panelViewName(panel.view)), shading);
+    return texts.views[std::size_t(panel.view)] + QStringLiteral(", ") + texts.shadings[std::size_t(panel.shading)];
 }
 
 void drawBar(QPainter& p, const cp::PanelBox& box)
@@ -108,7 +105,7 @@ void drawBar(QPainter& p, const cp::PanelBox& box)
     text(p, QPointF(r.right() + 9.0, r.bottom()), QString::fromStdString(box.scaleText), 8);
 }
 
-void drawRuler(QPainter& p, const cp::PanelBox& box)
+void drawRuler(QPainter& p, const cp::PanelBox& box, const QString& axis)
 {
     const QRectF r(box.rulerRect.x, box.rulerRect.y, box.rulerRect.w, box.rulerRect.h);
     const double top = r.y() + 0.8;
@@ -131,7 +128,7 @@ void drawRuler(QPainter& p, const cp::PanelBox& box)
     const QPointF at(img.x() - 3.4, img.bottom() - 0.5);
     p.translate(at);
     p.rotate(-90);
-    text(p, QPointF(0, 0), QStringLiteral("axis"), 6);
+    text(p, QPointF(0, 0), axis, 6);
     p.restore();
 }
 
@@ -175,10 +172,11 @@ struct LegendEntry {
     const ann::LegendClass* cls = nullptr;
     bool coloured = false;               // some panel shows the layer in colour
     bool hatched = false;                // some panel shows it in hatches
+    ann::AnnotationLayer layer = ann::AnnotationLayer::Material;
 };
 
 std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& panels,
-                                       const ann::Legend& legend)
+                                       const ann::Legend& legend, const PlateTexts& texts)
 {
     std::vector<LegendEntry> out;
     if (!spec.legend) return out;
@@ -195,11 +193,9 @@ std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vec
         if (!used) continue;
         std::vector<LegendEntry> rows;
         for (const ann::LegendClass& c : legend.classes(layer))
-            if (present[c.id]) rows.push_back({{}, &c, coloured, hatched});
+            if (present[c.id]) rows.push_back({{}, &c, coloured, hatched, layer});
         if (rows.empty()) continue;
-        out.push_back({layer == ann::AnnotationLayer::Material ? QStringLiteral("Material / condition")
-                                                               : QStringLiteral("Tool marks"),
-                       nullptr, false, false});
+        out.push_back({texts.layerTitles[layer == ann::AnnotationLayer::Material ? 0 : 1], nullptr, false, false, layer});
         out.insert(out.end(), rows.begin(), rows.end());
     }
     return out;
@@ -229,9 +225,20 @@ void drawSwatch(QPainter& p, const QRectF& r, const ann::LegendClass& c, bool ha
 
 } // namespace
 
+PlateTexts PlateTexts::english()
+{
+    PlateTexts t;
+    t.views = {QStringLiteral("développée"), QStringLiteral("front view"), QStringLiteral("back view"),
+               QStringLiteral("left view"),  QStringLiteral("right view"), QStringLiteral("top view"),
+               QStringLiteral("bottom view"), QStringLiteral("orthographic view")};
+    t.shadings = {QStringLiteral("skydome"), QStringLiteral("light"), QStringLiteral("height"), QStringLiteral("headlight")};
+    t.layerTitles = {QStringLiteral("Material / condition"), QStringLiteral("Tool marks")};
+    return t;
+}
+
 int legendRows(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& panels, const ann::Legend& legend)
 {
-    const auto entries = legendEntries(spec, panels, legend);
+    const auto entries = legendEntries(spec, panels, legend, PlateTexts::english());
     if (entries.empty()) return 0;
     const double width = spec.orientedPage().widthMm - 2 * spec.marginMm;
     const int columns = legendColumns(width);
@@ -287,12 +294,12 @@ void paintPlate(QPainter& p, const PlateContent& plate)
         drawHatches(p, panel, box, image, plate.legend);
         const double titleX = box.image.x + (box.letter.empty() ? 0.0 : 6.0);
         if (!box.letter.empty()) text(p, QPointF(box.image.x, box.image.y - 2.0), QString::fromStdString(box.letter), 12, true);
-        text(p, QPointF(titleX, box.image.y - 2.0), viewTitle(panel), 7.5);
-        if (box.ruler) drawRuler(p, box);
+        text(p, QPointF(titleX, box.image.y - 2.0), viewTitle(panel, plate.texts), 7.5);
+        if (box.ruler) drawRuler(p, box, plate.texts.axis);
         else drawTriad(p, panel, box);
         drawBar(p, box);
     }
-    const auto entries = legendEntries(plate.spec, plate.panels, plate.legend);
+    const auto entries = legendEntries(plate.spec, plate.panels, plate.legend, plate.texts);
     if (!entries.empty() && layout.legend.h > 0) {
         const int columns = legendColumns(layout.legend.w);
         const int rows = int((entries.size() + std::size_t(columns) - 1) / std::size_t(columns));
@@ -307,7 +314,8 @@ void paintPlate(QPainter& p, const PlateContent& plate)
             double sx = x;
             if (e.coloured) drawSwatch(p, QRectF(sx, y + 0.8, 8.0, 4.0), *e.cls, false), sx += 9.0;
             if (e.hatched) drawSwatch(p, QRectF(sx, y + 0.8, 8.0, 4.0), *e.cls, true), sx += 9.0;
-            text(p, QPointF(sx + 1.0, y + 3.8), QString::fromStdString(e.cls->name), 8);
+            const QString name = plate.texts.className ? plate.texts.className(e.layer, *e.cls) : QString::fromStdString(e.cls->name);
+            text(p, QPointF(sx + 1.0, y + 3.8), name, 8);
         }
     }
     if (layout.caption.h > 0) {

@@ -3,6 +3,7 @@
 
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/plate/PlatePainter.h"
+#include "stylos/widgets/plate/PlateTexts.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -68,7 +69,8 @@ QString shadingText(cp::PanelShading s)
     return {};
 }
 
-Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, cp::PlateSpec spec)
+Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, cp::PlateSpec spec,
+                       const plate::PlateTexts& texts)
 {
     Preview out;
     spec.dpi = kPreviewDpi;
@@ -79,6 +81,7 @@ Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, c
     }
     const auto& page = plate->layout.page;
     const double pxPerMm = kPreviewHeight / std::max(page.widthMm, page.heightMm); // the longer side fits
+    plate->texts = texts;
     out.image = QImage(int(std::lround(page.widthMm * pxPerMm)), int(std::lround(page.heightMm * pxPerMm)), QImage::Format_RGB32);
     out.image.fill(Qt::white);
     QPainter painter(&out.image);
@@ -374,7 +377,9 @@ void PlateDialog::startPreview()
         m_buttons->button(QDialogButtonBox::Ok)->setEnabled(p.error.isEmpty());
         Q_EMIT previewUpdated();
     });
-    watcher->setFuture(QtConcurrent::run([sources = m_sources, spec = spec()] { return computePreview(sources, spec); }));
+    watcher->setFuture(QtConcurrent::run([sources = m_sources, spec = spec(), texts = PlateTexts::translated(m_sources->legend)] {
+        return computePreview(sources, spec, texts);
+    }));
 }
 
 } // namespace stylos::widgets

@@ -15,6 +15,10 @@
 #include "stylos/core/plate/PlateSources.h"
 
 #include <QImage>
+#include <QString>
+
+#include <array>
+#include <functional>
 
 #include <vector>
 
@@ -22,12 +26,25 @@ class QPainter;
 
 namespace stylos::plate {
 
+/** @brief The words a plate writes besides the caption: English by default (the command line); the workbench
+ *         gives them in the user's language (widgets/plate/PlateTexts.h). */
+struct PlateTexts {
+    std::array<QString, 8> views;          ///< per PanelView: "développée", "front view", …, "orthographic view"
+    std::array<QString, 4> shadings;       ///< per PanelShading: "skydome", "light", "height", "headlight"
+    std::array<QString, 2> layerTitles;    ///< legend titles: "Material / condition", "Tool marks"
+    QString axis = QStringLiteral("axis");
+    /** A class's name on the plate; default: the legend's name as stored. */
+    std::function<QString(core::annotation::AnnotationLayer, const core::annotation::LegendClass&)> className;
+    static PlateTexts english();
+};
+
 /** @brief Everything a plate page shows, rendered and placed. */
 struct PlateContent {
     core::plate::PlateSpec spec;
     core::plate::PlateLayout layout;
     std::vector<core::plate::RenderedPanel> panels;
     core::annotation::Legend legend;
+    PlateTexts texts = PlateTexts::english();
 };
 
 /** @brief Rows of the legend for @p panels (a title row per layer in use, one row per class present). */
