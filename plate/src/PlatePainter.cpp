@@ -29,8 +29,9 @@ constexpr double kLegendColumnMm = 60.0;
 
 /** Draws @p text with its baseline-left (or aligned box) at @p at (mm), @p pt points high, in device pixels so
  *  glyphs are laid out at the device's resolution. */
-void text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bold = false, bool serif = false,
-          Qt::Alignment align = Qt::AlignLeft)
+/** @return the x (mm) where the text ends. */
+double text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bold = false, bool serif = false,
+            Qt::Alignment align = Qt::AlignLeft)
 {
     // Draw in device-sized units (the current transform less its scale, so a rotation stays), with a font sized in
     // device pixels: glyphs are laid out at the device's resolution whatever the page's scale.
@@ -50,6 +51,7 @@ void text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bold
     else if (align & Qt::AlignRight) x -= m.horizontalAdvance(s);
     p.drawText(QPointF(x, at.y() * scale), s);
     p.restore();
+    return (x + m.horizontalAdvance(s)) / scale;
 }
 
 QPen pen(double widthMm, const QColor& colour = Qt::black)
@@ -132,12 +134,13 @@ void drawRuler(QPainter& p, const cp::PanelBox& box, const QString& axis)
     p.restore();
 }
 
-void drawTriad(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box)
+void drawTriad(QPainter& p, const cp::PanelSpec& panel, const cp::PanelBox& box, double titleEnd)
 {
     // In the letter band, at the image's top right: the scene's X, Y and Z projected on the page (an axis seen
     // end-on is left out), so an oblique camera shows its true directions.
     const Eigen::Matrix3d m = cp::panelOrientation(panel).toRotationMatrix(); // camera → scene
-    const QPointF o(box.image.right() - 10.0, box.image.y - 1.2);
+    // After the title when the panel is too narrow for both.
+    const QPointF o(std::max(box.image.right() - 10.0, titleEnd + 3.0), box.image.y - 1.2);
     for (int k = 0; k < 3; ++k) {
         const Eigen::Vector3d v = m.transpose().col(k); // scene axis k in camera axes
         const QPointF d(v.x(), -v.y());                  // page: x right, y down
@@ -294,9 +297,9 @@ void paintPlate(QPainter& p, const PlateContent& plate)
         drawHatches(p, panel, box, image, plate.legend);
         const double titleX = box.image.x + (box.letter.empty() ? 0.0 : 6.0);
         if (!box.letter.empty()) text(p, QPointF(box.image.x, box.image.y - 2.0), QString::fromStdString(box.letter), 12, true);
-        text(p, QPointF(titleX, box.image.y - 2.0), viewTitle(panel, plate.texts), 7.5);
+        const double titleEnd = text(p, QPointF(titleX, box.image.y - 2.0), viewTitle(panel, plate.texts), 7.5);
         if (box.ruler) drawRuler(p, box, plate.texts.axis);
-        else drawTriad(p, panel, box);
+        else drawTriad(p, panel, box, titleEnd);
         drawBar(p, box);
     }
     const auto entries = legendEntries(plate.spec, plate.panels, plate.legend, plate.texts);
