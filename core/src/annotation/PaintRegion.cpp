@@ -59,6 +59,13 @@ Box flood(const std::vector<std::uint32_t>& seeds, int width, int height, std::v
 std::vector<std::uint32_t> marked(const std::vector<std::uint8_t>& seen, Box box, int width, std::uint8_t wanted)
 {
     std::vector<std::uint32_t> out;
+    // Counted first (a vectorised pass) so the list is allocated once.
+    std::size_t count = 0;
+    for (int r = box.r0; r <= box.r1; ++r) {
+        const std::uint8_t* row = seen.data() + std::size_t(r) * std::size_t(width);
+        for (int c = box.c0; c <= box.c1; ++c) count += row[c] == wanted;
+    }
+    out.reserve(count);
     for (int r = box.r0; r <= box.r1; ++r) {
         const std::uint32_t row = std::uint32_t(r) * std::uint32_t(width);
         for (int c = box.c0; c <= box.c1; ++c)
@@ -126,9 +133,12 @@ std::vector<std::uint32_t> floodFill(std::span<const float> values, std::span<co
     assert(values.size() == n && valid.size() == n && "floodFill(): one value per pixel");
     if (seed >= n || !valid[seed]) return {};
     const float reference = values[seed];
-    std::vector<std::uint8_t> seen(n, 0);
-    const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, seen,
-                          [&](std::uint32_t q) { return valid[q] && std::abs(values[q] - reference) <= tolerance; });
+    // One byte a pixel, set in a branch-free (vectorised) pass: 0 where the wand may go, 2 where it may not; the
+    // fill marks what it takes 1. One array, written once: on large images the time goes to touching memory.
+    std::vector<std::uint8_t> seen(n);
+    for (std::size_t q = 0; q < n; ++q)
+        seen[q] = std::uint8_t(2 * !((valid[q] != 0) & (std::abs(values[q] - reference) <= tolerance)));
+    const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, seen, [](std::uint32_t) { return true; });
     return marked(seen, box, width, 1);
 }
 
