@@ -94,7 +94,7 @@ void ImportOptionsTest::anImportIsBuiltInTheFrameAndTheProjectKeepsIt()
     for (int i = 0; i <= 40; i += 2)
         for (int j = 0; j <= 200; j += 2)
             for (int k = 0; k <= 20; k += 10) text += QStringLiteral("%1 %2 %3 0 0 1\n").arg(i).arg(j).arg(k);
-    const QString scan = stylos::test::writeFile(m_dir.path(), QStringLiteral("slab.xyz"), text);
+    const QString scan = stylos::test::writeFile(m_dir.path(), QStringLiteral("slab.xyz"), text.toUtf8());
     const QString project = m_dir.filePath(QStringLiteral("project"));
     QVERIFY(QDir().mkpath(project));
 
