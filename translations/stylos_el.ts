@@ -1510,6 +1510,18 @@
         <source>Fragment colour</source>
         <translation>Χρώμα θραύσματος</translation>
     </message>
+    <message>
+        <source>Imported as</source>
+        <translation>Εισήχθη ως</translation>
+    </message>
+    <message>
+        <source>%1 up, in %2</source>
+        <translation>%1 προς τα πάνω, σε %2</translation>
+    </message>
+    <message>
+        <source>offset %1, %2, %3</source>
+        <translation>μετατόπιση %1, %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>

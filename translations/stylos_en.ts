@@ -1510,6 +1510,18 @@
         <source>Fragment colour</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Imported as</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 up, in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offset %1, %2, %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>

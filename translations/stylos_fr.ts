@@ -1510,6 +1510,18 @@
         <source>Fragment colour</source>
         <translation>Couleur du fragment</translation>
     </message>
+    <message>
+        <source>Imported as</source>
+        <translation>Importé en</translation>
+    </message>
+    <message>
+        <source>%1 up, in %2</source>
+        <translation>%1 vers le haut, en %2</translation>
+    </message>
+    <message>
+        <source>offset %1, %2, %3</source>
+        <translation>décalage %1, %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>

@@ -6,6 +6,7 @@
 
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/view/GuideGeometry.h"
+#include "stylos/widgets/document/FragmentPropertiesWidget.h"
 #include "stylos/widgets/document/ImportOptionsDialog.h"
 #include "stylos/widgets/document/ScanImporter.h"
 #include "stylos/widgets/document/SceneDocument.h"
@@ -13,6 +14,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QLabel>
 #include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
@@ -21,6 +23,7 @@
 using stylos::core::io::ImportFrame;
 using stylos::core::io::LengthUnit;
 using stylos::core::io::UpAxis;
+using stylos::widgets::FragmentPropertiesWidget;
 using stylos::widgets::ImportOptionsDialog;
 using stylos::widgets::ScanImporter;
 using stylos::widgets::SceneDocument;
@@ -125,6 +128,13 @@ void ImportOptionsTest::anImportIsBuiltInTheFrameAndTheProjectKeepsIt()
     QVERIFY(reopened.scene().fragments()[0].importFrame == frame);
     QVERIFY(reopened.octree(fragment.id));
     QVERIFY(reopened.octree(fragment.id)->box() == octree->box());
+
+    // The Properties dock says how it was imported.
+    FragmentPropertiesWidget properties(reopened);
+    properties.setFragment(fragment.id);
+    QCOMPARE(properties.importedLabel()->text(), QStringLiteral("+Y up, in mm"));
+    reopened.setFragmentVisible(fragment.id, false);  // any change refreshes it: still there
+    QCOMPARE(properties.importedLabel()->text(), QStringLiteral("+Y up, in mm"));
 }
 
 void ImportOptionsTest::theHappyBuddhaStandsUpWithUpPlusY()
