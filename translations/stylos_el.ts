@@ -1546,6 +1546,18 @@
         <source>Fragment colour</source>
         <translation>Χρώμα θραύσματος</translation>
     </message>
+    <message>
+        <source>Imported as</source>
+        <translation>Εισήχθη ως</translation>
+    </message>
+    <message>
+        <source>%1 up, in %2</source>
+        <translation>%1 προς τα πάνω, σε %2</translation>
+    </message>
+    <message>
+        <source>offset %1, %2, %3</source>
+        <translation>μετατόπιση %1, %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>
@@ -1575,6 +1587,61 @@
     <message>
         <source>Fit the guides of %1</source>
         <translation>Προσαρμογή των οδηγών του %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ImportOptionsDialog</name>
+    <message>
+        <source>Import options</source>
+        <translation>Επιλογές εισαγωγής</translation>
+    </message>
+    <message>
+        <source>Stylos works with Z up and in metres. Say how the scans are stored: their points are turned and scaled once, as their octrees are built, and the project remembers it.</source>
+        <translation>Το Stylos δουλεύει με τον άξονα Z προς τα πάνω και σε μέτρα. Δηλώστε πώς είναι αποθηκευμένες οι σαρώσεις: τα σημεία τους περιστρέφονται και κλιμακώνονται μία φορά, κατά την κατασκευή των οκταδικών δέντρων τους, και το έργο το θυμάται.</translation>
+    </message>
+    <message>
+        <source>&amp;Up axis of the scans:</source>
+        <translation>&amp;Κατακόρυφος άξονας των σαρώσεων:</translation>
+    </message>
+    <message>
+        <source>&amp;Unit of the scans:</source>
+        <translation>&amp;Μονάδα των σαρώσεων:</translation>
+    </message>
+    <message>
+        <source>+Z (already upright)</source>
+        <translation>+Z (ήδη όρθιες)</translation>
+    </message>
+    <message>
+        <source>−Z (upside down)</source>
+        <translation>−Z (ανάποδα)</translation>
+    </message>
+    <message>
+        <source>+Y (Y up)</source>
+        <translation>+Y (Y προς τα πάνω)</translation>
+    </message>
+    <message>
+        <source>−Y (Y down)</source>
+        <translation>−Y (Y προς τα κάτω)</translation>
+    </message>
+    <message>
+        <source>+X (X up)</source>
+        <translation>+X (X προς τα πάνω)</translation>
+    </message>
+    <message>
+        <source>−X (X down)</source>
+        <translation>−X (X προς τα κάτω)</translation>
+    </message>
+    <message>
+        <source>metres (m)</source>
+        <translation>μέτρα (m)</translation>
+    </message>
+    <message>
+        <source>centimetres (cm)</source>
+        <translation>εκατοστά (cm)</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>χιλιοστά (mm)</translation>
     </message>
 </context>
 <context>

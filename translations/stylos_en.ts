@@ -1546,6 +1546,18 @@
         <source>Fragment colour</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Imported as</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 up, in %2</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>offset %1, %2, %3</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>
@@ -1574,6 +1586,61 @@
     </message>
     <message>
         <source>Fit the guides of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ImportOptionsDialog</name>
+    <message>
+        <source>Import options</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Stylos works with Z up and in metres. Say how the scans are stored: their points are turned and scaled once, as their octrees are built, and the project remembers it.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Up axis of the scans:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>&amp;Unit of the scans:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>+Z (already upright)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>−Z (upside down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>+Y (Y up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>−Y (Y down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>+X (X up)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>−X (X down)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>metres (m)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>centimetres (cm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1546,6 +1546,18 @@
         <source>Fragment colour</source>
         <translation>Couleur du fragment</translation>
     </message>
+    <message>
+        <source>Imported as</source>
+        <translation>Importé en</translation>
+    </message>
+    <message>
+        <source>%1 up, in %2</source>
+        <translation>%1 vers le haut, en %2</translation>
+    </message>
+    <message>
+        <source>offset %1, %2, %3</source>
+        <translation>décalage %1, %2, %3</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>
@@ -1575,6 +1587,61 @@
     <message>
         <source>Fit the guides of %1</source>
         <translation>Ajuster les guides de %1</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::widgets::ImportOptionsDialog</name>
+    <message>
+        <source>Import options</source>
+        <translation>Options d’importation</translation>
+    </message>
+    <message>
+        <source>Stylos works with Z up and in metres. Say how the scans are stored: their points are turned and scaled once, as their octrees are built, and the project remembers it.</source>
+        <translation>Stylos travaille avec Z vers le haut et en mètres. Indiquez comment les relevés sont enregistrés : leurs points sont tournés et mis à l’échelle une fois, à la construction de leurs octrees, et le projet s’en souvient.</translation>
+    </message>
+    <message>
+        <source>&amp;Up axis of the scans:</source>
+        <translation>&amp;Axe vertical des relevés :</translation>
+    </message>
+    <message>
+        <source>&amp;Unit of the scans:</source>
+        <translation>&amp;Unité des relevés :</translation>
+    </message>
+    <message>
+        <source>+Z (already upright)</source>
+        <translation>+Z (déjà debout)</translation>
+    </message>
+    <message>
+        <source>−Z (upside down)</source>
+        <translation>−Z (à l’envers)</translation>
+    </message>
+    <message>
+        <source>+Y (Y up)</source>
+        <translation>+Y (Y vers le haut)</translation>
+    </message>
+    <message>
+        <source>−Y (Y down)</source>
+        <translation>−Y (Y vers le bas)</translation>
+    </message>
+    <message>
+        <source>+X (X up)</source>
+        <translation>+X (X vers le haut)</translation>
+    </message>
+    <message>
+        <source>−X (X down)</source>
+        <translation>−X (X vers le bas)</translation>
+    </message>
+    <message>
+        <source>metres (m)</source>
+        <translation>mètres (m)</translation>
+    </message>
+    <message>
+        <source>centimetres (cm)</source>
+        <translation>centimètres (cm)</translation>
+    </message>
+    <message>
+        <source>millimetres (mm)</source>
+        <translation>millimètres (mm)</translation>
     </message>
 </context>
 <context>

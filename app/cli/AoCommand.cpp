@@ -1,5 +1,6 @@
 // stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
-//               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--scan N] [--json]
+//               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--scan N]
+//               [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 #include "CommandLine.h"
 
 #include "stylos/core/util/Stopwatch.h"
@@ -91,8 +92,9 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
     r.options.cosineWeighted = cl.flag("cosine");
 
     r.poctInput = core::cloud::isPoctPath(r.input) || lowerExtension(r.input) == ".poct";
-    if (r.poctInput && (cl.value("depth") || cl.value("columns") || cl.value("scan")))
-        return problem = "--depth, --columns and --scan apply to a point-file input only, not to the octree " + r.input, false;
+    if (r.poctInput && (cl.value("depth") || cl.value("columns") || cl.value("scan") || hasFrameOptions(cl)))
+        return problem = "--depth, --columns, --scan, --up, --unit and --offset apply to a point-file input only, "
+                         "not to the octree " + r.input, false;
     if (depth < oct::MinOctreeDepth || depth > oct::MaxOctreeDepth)
         return problem = "--depth must be between " + std::to_string(oct::MinOctreeDepth) + " and " +
                          std::to_string(oct::MaxOctreeDepth), false;
@@ -122,7 +124,7 @@ int fail(const core::Error& error)
 int runAo(const std::vector<std::string>& args)
 {
     CommandLine cl("ao", "IN -o OUT.ply|OUT.poct [options]",
-                   {{"output", "OUT", "leaf centres + ambient (.ply), or the octree + \"ambient\" layer (.poct; IN: in place)", "o"},
+                   withFrameOptions({{"output", "OUT", "leaf centres + ambient (.ply), or the octree + \"ambient\" layer (.poct; IN: in place)", "o"},
                     {"directions", "D", "directions over the sphere (or hemisphere), 1..65536 (default 256)"},
                     {"level", "L", "octree level of the skydome's cells (default: the deepest level whose cells still form a closed surface); values spread to the leaves"},
                     {"method", "NAME", std::string("slices or depthmap (default ") +
@@ -134,7 +136,7 @@ int runAo(const std::vector<std::string>& args)
                     {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
                     scanOption(),
                     {"threads", "N", "worker threads (default: all cores)"},
-                    {"json", "", "print one JSON object on stdout"}});
+                    {"json", "", "print one JSON object on stdout"}}));
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Computes the 3D skydome (ambient occlusion) of a packed octree: for every cell, the fraction of\n"

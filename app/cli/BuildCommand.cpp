@@ -1,5 +1,6 @@
 // stylos-cli build IN -o OUT.poct [--depth L] [--method optimal|streaming] [--memory-limit MiB]
-//                   [--normal-code octahedral16|paper15] [--threads N] [--columns LAYOUT] [--scan N] [--json]
+//                   [--normal-code octahedral16|paper15] [--threads N] [--columns LAYOUT] [--scan N]
+//                   [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 // stylos-cli build --synthetic-drum POINTS [--seed N] [--ordered] -o OUT.poct [same options]
 #include "CommandLine.h"
 #include "Commands.h"
@@ -116,7 +117,7 @@ void printSummary(const std::string& input, const std::string& output, const oct
 int runBuild(const std::vector<std::string>& args)
 {
     CommandLine cl("build", "IN -o OUT.poct [options]  |  build --synthetic-drum POINTS -o OUT.poct [options]",
-                   {{"output", "OUT.poct", "the packed octree to write", "o"},
+                   withFrameOptions({{"output", "OUT.poct", "the packed octree to write", "o"},
                     {"depth", "L", "leaf level, 1..21 (default 12; a cell is the root box / 2^L)"},
                     {"method", "NAME", "optimal (one pass per level, least memory; default) or streaming (one pass)"},
                     {"memory-limit", "MiB", "stop (writing nothing) if the construction structure would exceed this"},
@@ -127,7 +128,7 @@ int runBuild(const std::vector<std::string>& args)
                     {"synthetic-drum", "POINTS", "input: a procedural fluted drum of POINTS points, never stored"},
                     {"seed", "N", "seed of --synthetic-drum (default 1)"},
                     {"ordered", "", "--synthetic-drum in scan-like order (default: random order)"},
-                    {"json", "", "print one JSON object on stdout"}});
+                    {"json", "", "print one JSON object on stdout"}}));
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Builds a packed point octree (.poct) from a point file (normals are estimated when it has\n"
@@ -145,6 +146,7 @@ int runBuild(const std::vector<std::string>& args)
         if (!parseReadOptions(cl, read, problem)) return usageError(cl, problem);
     }
     if (synthetic && read.scan) return usageError(cl, "--scan applies to an input file only");
+    if (synthetic && hasFrameOptions(cl)) return usageError(cl, "--up, --unit and --offset apply to an input file only");
     if (!synthetic && (cl.value("seed") || cl.flag("ordered")))
         return usageError(cl, "--seed and --ordered apply to --synthetic-drum only");
     const auto output = cl.value("output");

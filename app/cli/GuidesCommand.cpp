@@ -1,8 +1,10 @@
-// stylos-cli guides DRUM -o GUIDES.json [--axis PX,PY,PZ,DX,DY,DZ] [--flutes N] [--threads N] [--json]
+// stylos-cli guides DRUM -o GUIDES.json [--axis PX,PY,PZ,DX,DY,DZ] [--flutes N] [--threads N]
+//                   [--columns LAYOUT] [--scan N] [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 #include "AxisArgument.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "ReadArguments.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/dock/DrumGuides.h"
@@ -24,6 +26,7 @@ namespace dock = core::dock;
 
 struct GuidesRequest {
     dock::GuideOptions options;
+    core::cloud::CloudLoadOptions load;
     std::string input, output;
     bool json = false;
 };
@@ -47,6 +50,10 @@ bool parseRequest(CommandLine& cl, GuidesRequest& r, std::string& problem)
     if (threads < 0 || threads > 1024) return problem = "--threads must be between 0 and 1024", false;
     r.options.flutes = int(flutes);
     r.options.threads = unsigned(threads);
+    if (!parseReadOptions(cl, r.load.read, problem)) return false;
+    if (core::cloud::isPoctPath(r.input) && (cl.value("columns") || cl.value("scan") || hasFrameOptions(cl)))
+        return problem = "--columns, --scan, --up, --unit and --offset apply to a point-file input only, "
+                         "not to the octree " + r.input, false;
     return true;
 }
 
@@ -61,11 +68,13 @@ int fail(const core::Error& error)
 int runGuides(const std::vector<std::string>& args)
 {
     CommandLine cl("guides", "DRUM -o GUIDES.json [options]",
-                   {{"output", "GUIDES.json", "the guides: axis, leading radius, flutes and their bottom lines", "o"},
+                   withFrameOptions({{"output", "GUIDES.json", "the guides: axis, leading radius, flutes and their bottom lines", "o"},
                     {"axis", "PX,PY,PZ,DX,DY,DZ", "use this axis (metres) and fit only the radius and flutes"},
                     {"flutes", "N", "the flute count, 3..1000 (default: found among 12..64)"},
                     {"threads", "N", "worker threads of the surface fit (default: all cores)"},
-                    {"json", "", "print the guides as one JSON object on stdout"}});
+                    {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
+                    scanOption(),
+                    {"json", "", "print the guides as one JSON object on stdout"}}));
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Fits the guides of an intact fluted drum: the axis of its leading cylinder, the leading radius\n"
@@ -79,7 +88,7 @@ int runGuides(const std::vector<std::string>& args)
     if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
 
     const auto start = std::chrono::steady_clock::now();
-    auto cloud = core::cloud::loadPointCloud(r.input);
+    auto cloud = core::cloud::loadPointCloud(r.input, r.load);
     if (!cloud) return fail(cloud.error());
     cloud->source = r.input;
     ConsoleProgress progress("fitting the guides of " + r.input);

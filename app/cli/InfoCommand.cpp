@@ -1,4 +1,5 @@
-// stylos-cli info FILE [--json] [--columns LAYOUT] [--scan N]; a .poct file gets the octree summary (PoctInfo).
+// stylos-cli info FILE [--json] [--columns LAYOUT] [--scan N] [--up AXIS] [--unit UNIT] [--offset X,Y,Z]
+// (the bounds in the corrected frame); a .poct file gets the octree summary (PoctInfo).
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
@@ -101,9 +102,9 @@ std::string extensionList(bool readable)
 int runInfo(const std::vector<std::string>& args)
 {
     CommandLine cl("info", "FILE [--json]",
-                   {{"json", "", "print one JSON object on stdout"},
+                   withFrameOptions({{"json", "", "print one JSON object on stdout"},
                     {"columns", "LAYOUT", "column layout of a text file, e.g. x,y,z,i,r,g,b (_ skips a column)"},
-                    scanOption()});
+                    scanOption()}));
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Format, point count, bounds and attributes of a point file, and the scans of an E57 or PTX\n"
@@ -117,7 +118,11 @@ int runInfo(const std::vector<std::string>& args)
     if (cl.positionals().size() != 1) return usageError(cl, "info takes exactly one FILE");
 
     const std::string file = cl.positionals()[0];
-    if (isPoctFile(file)) return runPoctInfo(file, cl.flag("json"));
+    if (isPoctFile(file)) {
+        if (hasFrameOptions(cl))
+            return usageError(cl, "--up, --unit and --offset apply to a point file, not to the octree " + file);
+        return runPoctInfo(file, cl.flag("json"));
+    }
     core::io::ReadOptions options;
     if (std::string problem; !parseReadOptions(cl, options, problem)) return usageError(cl, problem);
     ConsoleProgress progress("reading " + file);

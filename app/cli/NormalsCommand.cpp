@@ -37,7 +37,7 @@ bool parseTriple(const std::string& text, std::array<double, 3>& out)
 int runNormals(const std::vector<std::string>& args)
 {
     CommandLine cl("normals", "IN -o OUT.ply [options]",
-                   {{"output", "OUT.ply", "binary PLY to write: the points with normals and their attributes", "o"},
+                   withFrameOptions({{"output", "OUT.ply", "binary PLY to write: the points with normals and their attributes", "o"},
                     {"neighbours", "K", "neighbours per point for the PCA (default 16, 3..256)"},
                     {"viewpoint", "X,Y,Z", "orient toward this scanner position (default: away from the centroid)"},
                     {"memory-limit", "MiB", "memory for points held at once; larger clouds are tiled (default 256)"},
@@ -45,7 +45,7 @@ int runNormals(const std::vector<std::string>& args)
                     {"quality", "", "also write the surface variation as a scalar \"surface_variation\""},
                     {"columns", "LAYOUT", "column layout of a text input, e.g. x,y,z,i,r,g,b"},
                     scanOption(),
-                    {"json", "", "print one JSON object on stdout"}});
+                    {"json", "", "print one JSON object on stdout"}}));
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Estimates normals (k-nearest-neighbour PCA, consistently oriented) for a scan.\n" << cl.usage();

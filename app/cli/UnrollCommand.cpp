@@ -1,14 +1,17 @@
 // stylos-cli unroll IN -o OUT.png|tif|exr [--surface cylinder|cone|revolution] [--axis PX,PY,PZ,DX,DY,DZ]
 //                    [--shading height|light|skydome] [--directions D] [--pixel-size M] [--cut-angle DEG]
-//                    [--heights OUT.tif|exr] [--bits 8|16] [--threads N] [--json]
+//                    [--heights OUT.tif|exr] [--bits 8|16] [--threads N] [--columns LAYOUT] [--scan N]
+//                    [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 #include "AxisArgument.h"
 
 #include "stylos/core/util/Stopwatch.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "ReadArguments.h"
 #include "UnrollShading.h"
 
+#include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/image/ImageWriter.h"
 
@@ -70,6 +73,10 @@ bool parseRequest(CommandLine& cl, UnrollRequest& r, std::string& problem)
         r.bits = bits == 8 ? core::image::SampleFormat::UInt8 : core::image::SampleFormat::UInt16;
     }
     r.options.fillHoles = !cl.flag("no-fill");
+    if (!parseReadOptions(cl, r.options.read, problem)) return false;
+    if (core::cloud::isPoctPath(r.input) && (cl.value("columns") || cl.value("scan") || hasFrameOptions(cl)))
+        return problem = "--columns, --scan, --up, --unit and --offset apply to a point-file input only, "
+                         "not to the octree " + r.input, false;
     return parseShading(cl, r.options, problem);
 }
 
@@ -86,7 +93,7 @@ nlohmann::json vectorJson(const Eigen::Vector3d& v) { return nlohmann::json::arr
 int runUnroll(const std::vector<std::string>& args)
 {
     CommandLine cl("unroll", "IN -o OUT.png|tif|exr [options]",
-                   {{"output", "OUT", "the développée image: .png (8-bit), .tif (16-bit) or .exr (float)", "o"},
+                   withFrameOptions({{"output", "OUT", "the développée image: .png (8-bit), .tif (16-bit) or .exr (float)", "o"},
                     {"surface", "KIND", "cylinder (default), cone or revolution"},
                     {"axis", "PX,PY,PZ,DX,DY,DZ", "use this axis (metres) and fit only the radius or profile"},
                     {"shading", "NAME", "skydome (default), light or height"},
@@ -100,7 +107,9 @@ int runUnroll(const std::vector<std::string>& args)
                     {"bits", "N", "8 or 16 bits per sample for PNG and TIFF"},
                     {"no-fill", "", "leave the small holes empty instead of filling them"},
                     {"threads", "N", "worker threads (default: all cores)"},
-                    {"json", "", "print one JSON object on stdout"}});
+                    {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
+                    scanOption(),
+                    {"json", "", "print one JSON object on stdout"}}));
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Unrolls a scan of a drum (or any surface of revolution) into a développée: fits the surface,\n"

@@ -1,5 +1,7 @@
 #include "ProjectActions.h"
 
+#include "stylos/core/io/PointFileFormat.h"
+#include "stylos/widgets/document/ImportOptionsDialog.h"
 #include "stylos/widgets/document/ScanImporter.h"
 #include "stylos/widgets/document/SceneDocument.h"
 
@@ -10,6 +12,8 @@
 #include <QMenu>
 #include <QMessageBox>
 #include <QSettings>
+
+#include <algorithm>
 
 namespace stylos::app {
 
@@ -53,6 +57,8 @@ ProjectActions::ProjectActions(widgets::SceneDocument& document, widgets::ScanIm
     connect(m_import, &QAction::triggered, this, &ProjectActions::importScans);
     connect(m_quit, &QAction::triggered, &m_window, &QWidget::close);
     connect(m_recent, &QMenu::aboutToShow, this, &ProjectActions::rebuildRecentMenu);
+    QSettings settings;
+    m_importer.setImportFrame(widgets::ImportOptionsDialog::load(settings));
     retranslateUi();
 }
 
@@ -196,6 +202,16 @@ void ProjectActions::importScans()
                                                             widgets::ScanImporter::fileFilter());
     if (files.isEmpty()) return;
     settings.setValue(LastDirKey, QFileInfo(files.first()).absolutePath());
+    const bool pointFiles = std::any_of(files.begin(), files.end(), [](const QString& file) {
+        return !core::io::hasPoctExtension(file.toStdString());
+    });
+    if (pointFiles) {
+        // The up axis and unit apply to point files (a .poct is opened as it is); remembered for the next time.
+        widgets::ImportOptionsDialog options(m_importer.importFrame(), &m_window);
+        if (options.exec() != QDialog::Accepted) return;
+        m_importer.setImportFrame(options.frame());
+        widgets::ImportOptionsDialog::save(settings, options.frame());
+    }
     m_importer.importFiles(files);
 }
 

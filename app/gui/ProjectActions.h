@@ -1,8 +1,9 @@
 #pragma once
 /** @file
  * @brief The File menu: New, Open project…, Open recent, Save, Save as…, Import scans…, Quit — the actions
- *        and their handlers (file dialogs, "save changes?" before the project is replaced or the window
- *        closes, the recent projects kept in QSettings). Outcomes go out as messages (reported()) for the
+ *        and their handlers (file dialogs, the import options after the scans are chosen, "save changes?"
+ *        before the project is replaced or the window closes, the recent projects and the import options
+ *        kept in QSettings; the importer starts with the remembered import options, for drops too). Outcomes go out as messages (reported()) for the
  *        window to log and show. GUI thread only.
  */
 #include <QObject>

@@ -37,6 +37,7 @@ Scene sampleScene(const fs::path& folder)
     drum.guides.push_back({"axis", GuideKind::Axis, {0.1, 0.2, -0.3}, {0.0, 0.6, 0.8}});
     drum.guides.push_back({"groove 7", GuideKind::Groove, {0.55, 0, 0}, {0, 0, 1}});
     drum.annotationLayer = "class";
+    drum.importFrame = {io::UpAxis::NegX, io::LengthUnit::Millimetre, {512000.25, -4.5e6, 1e-3}};
     scene.add(drum);
     Fragment piece;
     piece.name = "fragment";
@@ -264,6 +265,14 @@ TEST(ProjectFileTest, EveryBadKeyIsNamed)
          ErrorCode::Malformed, "fragments[0].guides[0].direction: is not a unit vector"},
         {"annotations number", [](J& j) { j["fragments"][0]["annotations"] = 1; }, ErrorCode::Malformed,
          "fragments[0].annotations: "},
+        {"unknown up axis", [](J& j) { j["fragments"][0]["up"] = "+W"; }, ErrorCode::Malformed,
+         "fragments[0].up: is \"+W\", not one of the up axes +X, -X, +Y, -Y, +Z or -Z"},
+        {"up axis number", [](J& j) { j["fragments"][0]["up"] = 2; }, ErrorCode::Malformed,
+         "fragments[0].up: is 2, not one of"},
+        {"unknown unit", [](J& j) { j["fragments"][0]["unit"] = "inch"; }, ErrorCode::Malformed,
+         "fragments[0].unit: is \"inch\", not one of the units mm, cm or m"},
+        {"short offset", [](J& j) { j["fragments"][0]["offset"] = J::array({1, 2}); }, ErrorCode::Malformed,
+         "fragments[0].offset: is not an array of 3 finite numbers"},
         {"legend text", [](J& j) { j["legend"] = "defaults"; }, ErrorCode::Malformed, "legend: a legend must be"},
         {"legend class id", [](J& j) { j["legend"] = J::parse(annotation::Legend::defaults().toJson().dump()); j["legend"]["layers"]["material"][1]["id"] = 1; },
          ErrorCode::Malformed, "legend: layers.material[1].id: "},
@@ -349,6 +358,38 @@ TEST(ProjectFileTest, OptionalKeysTakeTheirDefaults)
     EXPECT_TRUE(f.octreeMissing);
     ASSERT_EQ(result->problems.size(), 1u);
     EXPECT_EQ(result->problems[0].message.rfind("/projects/a.poct: ", 0), 0u);
+}
+
+TEST(ProjectFileTest, TheImportFrameIsKeptPerFragmentAndDefaultsToZUpMetres)
+{
+    test::TempDir dir;
+    const Scene scene = sampleScene(dir / "project");
+    const fs::path path = dir / "project" / "site.stylos";
+    ASSERT_TRUE(ProjectFile::save(scene, path).ok());
+    const auto json = nlohmann::json::parse(contents(path));
+    EXPECT_EQ(json["fragments"][0]["up"], "-X");
+    EXPECT_EQ(json["fragments"][0]["unit"], "mm");
+    EXPECT_EQ(json["fragments"][0]["offset"], nlohmann::json::array({512000.25, -4.5e6, 1e-3}));
+    EXPECT_EQ(json["fragments"][1]["up"], "+Z");
+    EXPECT_EQ(json["fragments"][1]["unit"], "m");
+    const auto loaded = ProjectFile::load(path);
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    const io::ImportFrame expected{io::UpAxis::NegX, io::LengthUnit::Millimetre, {512000.25, -4.5e6, 1e-3}};
+    EXPECT_EQ(loaded->scene.fragments()[0].importFrame, expected);
+    EXPECT_EQ(loaded->scene.fragments()[1].importFrame, io::ImportFrame{});
+
+    // A project written before the import options: every fragment Z up, in metres.
+    const auto old = ProjectFile::fromJson(validDocument().dump(), "/projects/site.stylos");
+    ASSERT_TRUE(old.ok()) << old.error().message;
+    EXPECT_TRUE(old->scene.fragments().at(0).importFrame.isIdentity());
+    // The words as the command line takes them, too.
+    nlohmann::json lower = validDocument();
+    lower["fragments"][0]["up"] = "y";
+    lower["fragments"][0]["unit"] = "CM";
+    const auto read = ProjectFile::fromJson(lower.dump(), "/projects/site.stylos");
+    ASSERT_TRUE(read.ok()) << read.error().message;
+    EXPECT_EQ(read->scene.fragments().at(0).importFrame.up, io::UpAxis::PosY);
+    EXPECT_EQ(read->scene.fragments().at(0).importFrame.unit, io::LengthUnit::Centimetre);
 }
 
 } // namespace

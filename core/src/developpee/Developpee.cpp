@@ -171,7 +171,9 @@ Result<Developpee> computeDeveloppee(const std::filesystem::path& input, const D
     cloud::PointCloud cloud;
     {
         SubProgress step(progress, 0.0, 0.15);
-        auto loaded = cloud::loadPointCloud(input, {}, &step);
+        cloud::CloudLoadOptions load;
+        load.read = options.read;
+        auto loaded = cloud::loadPointCloud(input, load, &step);
         if (!loaded) return loaded.error();
         cloud = std::move(loaded).value();
     }

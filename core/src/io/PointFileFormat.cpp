@@ -1,5 +1,7 @@
 #include "stylos/core/io/PointFileFormat.h"
 
+#include "FramedReader.h"
+
 #include "stylos/core/io/BufferedFile.h"
 #include "stylos/core/io/E57Reader.h"
 #include "stylos/core/io/LasReader.h"
@@ -115,7 +117,9 @@ PointFormat detectPointFormat(const fs::path& path)
     return byExtension;
 }
 
-Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const ReadOptions& options)
+namespace {
+
+Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const ReadOptions& options)
 {
     auto file = BufferedFile::open(path, 4096);
     if (!file) return file.error();
@@ -154,6 +158,15 @@ Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const
     return Error::at(ErrorCode::UnknownFormat, path.string(), "",
                      "unknown point file format (Stylos reads PLY, LAS, E57, PTX, text and OBJ files: " +
                          readableExtensionsText() + ")");
+}
+
+} // namespace
+
+Result<std::unique_ptr<PointReader>> openPointReader(const fs::path& path, const ReadOptions& options)
+{
+    auto opened = openInFileFrame(path, options);
+    if (!opened || options.frame.isIdentity()) return opened;
+    return std::unique_ptr<PointReader>(std::make_unique<FramedReader>(std::move(opened).value(), options.frame));
 }
 
 } // namespace stylos::core::io

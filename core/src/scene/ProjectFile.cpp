@@ -50,6 +50,9 @@ OrderedJson fragmentJson(const Fragment& f, const std::filesystem::path& folder)
     out["guides"] = std::move(guides);
     out["annotations"] = f.annotationLayer;
     out["assembly"] = f.assembly;
+    out["up"] = io::upAxisName(f.importFrame.up);
+    out["unit"] = io::lengthUnitName(f.importFrame.unit);
+    out["offset"] = vectorJson(f.importFrame.offset);
     return out;
 }
 
@@ -294,6 +297,22 @@ Result<Fragment> SceneReader::readFragment(const json& value, const std::string&
     if (const json* annotations = member(value, "annotations")) {
         if (!annotations->is_string()) return bad(key + ".annotations", "is not a string");
         f.annotationLayer = annotations->get<std::string>();
+    }
+    if (const json* up = member(value, "up")) {
+        const auto axis = up->is_string() ? io::upAxisFromName(up->get<std::string>()) : std::nullopt;
+        if (!axis)
+            return bad(key + ".up", "is " + up->dump() + ", not one of the up axes " + io::upAxisChoices());
+        f.importFrame.up = *axis;
+    }
+    if (const json* unit = member(value, "unit")) {
+        const auto parsed = unit->is_string() ? io::lengthUnitFromName(unit->get<std::string>()) : std::nullopt;
+        if (!parsed)
+            return bad(key + ".unit", "is " + unit->dump() + ", not one of the units " + io::lengthUnitChoices());
+        f.importFrame.unit = *parsed;
+    }
+    if (const json* offset = member(value, "offset")) {
+        if (!finiteNumbers(*offset, 3, f.importFrame.offset.data()))
+            return bad(key + ".offset", "is not an array of 3 finite numbers");
     }
     return f;
 }

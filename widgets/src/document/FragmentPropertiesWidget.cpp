@@ -48,12 +48,14 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
     : QWidget(parent), m_document(document), m_form(new QFormLayout(this)), m_name(new QLineEdit(this)),
       m_visible(new QCheckBox(this)), m_colour(new QPushButton(this)), m_points(new QLabel(this)),
       m_leafCells(new QLabel(this)), m_totalCells(new QLabel(this)), m_depth(new QLabel(this)),
-      m_file(new QLabel(this))
+      m_imported(new QLabel(this)), m_file(new QLabel(this))
 {
     setObjectName(QStringLiteral("FragmentPropertiesWidget"));
     m_name->setObjectName(QStringLiteral("fragmentName"));
     m_visible->setObjectName(QStringLiteral("fragmentVisible"));
     m_colour->setObjectName(QStringLiteral("fragmentColour"));
+    m_imported->setObjectName(QStringLiteral("fragmentImported"));
+    m_imported->setWordWrap(true);
     m_file->setWordWrap(true);
     m_file->setTextInteractionFlags(Qt::TextSelectableByMouse);
     for (int i = 0; i < 6; ++i) {
@@ -63,7 +65,7 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
     }
     QWidget* fields[RowCount] = {m_name,     m_visible,   m_colour,    m_pose[0],     m_pose[1],
                                  m_pose[2],  m_pose[3],   m_pose[4],   m_pose[5],     m_points,
-                                 m_leafCells, m_totalCells, m_depth,  m_file};
+                                 m_leafCells, m_totalCells, m_depth,  m_imported, m_file};
     // Labels beside their fields while the dock is wide enough, above them when it is not (the longer
     // French and Greek labels): each field keeps its full width.
     m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
@@ -110,7 +112,7 @@ void FragmentPropertiesWidget::retranslateUi()
     const QString labels[RowCount] = {tr("Name"),        tr("Visible"),    tr("Colour"),      tr("X"),
                               tr("Y"),           tr("Z"),          tr("Rotation X"),  tr("Rotation Y"),
                               tr("Rotation Z"),  tr("Points"),     tr("Leaf cells"),  tr("Total cells"),
-                              tr("Depth"),       tr("File")};
+                              tr("Depth"),       tr("Imported as"), tr("File")};
     for (std::size_t row = 0; row < RowCount; ++row) m_labels[row]->setText(labels[row]);
     m_visible->setText(tr("Shown in the 3D view"));
     m_colour->setToolTip(tr("Choose the fragment's display colour"));
@@ -134,7 +136,7 @@ void FragmentPropertiesWidget::refresh()
         m_colour->setText(QString());
         m_colour->setStyleSheet(QString());
         for (QDoubleSpinBox* spin : m_pose) spin->setValue(0.0);
-        for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth, m_file}) label->setText(none);
+        for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth, m_imported, m_file}) label->setText(none);
         m_updating = false;
         return;
     }
@@ -159,6 +161,17 @@ void FragmentPropertiesWidget::refresh()
         const QString state = f->octreeMissing ? tr("missing") : tr("opening…");
         for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth}) label->setText(state);
     }
+    // The frame the scan was read in (Z up, metres from the file's up axis and unit), as the project keeps it.
+    const core::io::ImportFrame& frame = f->importFrame;
+    QString imported = tr("%1 up, in %2")
+                           .arg(QString::fromLatin1(core::io::upAxisName(frame.up)),
+                                QString::fromLatin1(core::io::lengthUnitName(frame.unit)));
+    if (frame.offset != std::array<double, 3>{0.0, 0.0, 0.0})
+        imported += QLatin1Char('\n') + tr("offset %1, %2, %3")
+                                           .arg(locale.toString(frame.offset[0], 'g', 12),
+                                                locale.toString(frame.offset[1], 'g', 12),
+                                                locale.toString(frame.offset[2], 'g', 12));
+    m_imported->setText(imported);
     m_file->setText(QString::fromStdString(f->octreePath.string()));
     m_updating = false;
 }

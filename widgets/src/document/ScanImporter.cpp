@@ -80,12 +80,14 @@ int ScanImporter::importFiles(const QStringList& paths)
         const std::filesystem::path in = input.toStdString();
         const std::filesystem::path out = output.toStdString();
         const core::octree::BuildOptions options = m_options;
+        core::io::ReadOptions read;
+        if (!direct) read.frame = m_frame;
         auto* watcher = m_tasks.start<ImportResult>(
             tr("Importing %1").arg(QFileInfo(input).fileName()),
-            [in, out, options, direct](QPromise<ImportResult>& promise, core::ProgressSink& progress) {
+            [in, out, options, read, direct](QPromise<ImportResult>& promise, core::ProgressSink& progress) {
                 ImportResult result;
                 if (!direct) {
-                    auto built = core::octree::buildOctreeFile(in, out, options, &progress);
+                    auto built = core::octree::buildOctreeFile(in, out, options, &progress, read);
                     if (!built && built.error().code == core::ErrorCode::Cancelled) return;
                     if (!built) {
                         result.error = built.error();
@@ -102,7 +104,7 @@ int ScanImporter::importFiles(const QStringList& paths)
             });
         m_pending.insert(watcher);
         connect(watcher, &QFutureWatcherBase::finished, this,
-                [this, input, output, watcher] { importEnded(input, output, watcher); });
+                [this, input, output, frame = read.frame, watcher] { importEnded(input, output, frame, watcher); });
         ++started;
     }
     if (m_pending.isEmpty() && !m_errors.isEmpty()) {
@@ -126,7 +128,8 @@ QString ScanImporter::reserveOutput(const QString& input)
     return candidate;
 }
 
-void ScanImporter::importEnded(const QString& input, const QString& output, QFutureWatcherBase* watcher)
+void ScanImporter::importEnded(const QString& input, const QString& output, const core::io::ImportFrame& frame,
+                               QFutureWatcherBase* watcher)
 {
     m_pending.remove(watcher);
     m_reserved.remove(output);
@@ -146,6 +149,7 @@ void ScanImporter::importEnded(const QString& input, const QString& output, QFut
         fragment.name = QFileInfo(input).completeBaseName().toStdString();
         fragment.octreePath = (output.isEmpty() ? input : output).toStdString();
         if (!output.isEmpty()) fragment.sourcePath = input.toStdString();
+        fragment.importFrame = frame;
         fragment.colour = core::scene::defaultFragmentColour(m_document.scene().size());
         fragment.pose = placement(*result.octree);
         const auto id = m_document.addFragment(std::move(fragment), result.octree,

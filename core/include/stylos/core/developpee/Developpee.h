@@ -19,6 +19,7 @@
  * or an image too large — with the pixel size that works), OutOfBudget, Cancelled.
  */
 #include "stylos/core/cloud/PointCloud.h"
+#include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/developpee/DeveloppeeShading.h"
 #include "stylos/core/shading/HeightField.h"
 #include "stylos/core/shading/HeightShading.h"
@@ -61,6 +62,9 @@ struct DeveloppeeOptions {
     std::optional<double> cutAngle;          ///< radians about the axis; default: where the fewest points lie
     bool fillHoles = true;                   ///< fill the small holes (unroll::UnrollOptions::holes)
     unsigned threads = 0;                    ///< worker threads; 0 = all cores; no effect on the result
+    /** How a point file is read (text columns, one scan, the import frame: up axis, unit, offset); ignored
+     *  for a .poct and by the overload that takes a cloud. "The input file's frame" is then the corrected one. */
+    io::ReadOptions read;
 
     /** @brief InvalidArgument "SOURCE: problem" when a value is out of range (directions, pixel size,
      *         cut angle, light, axis), else success. */

@@ -4,6 +4,7 @@
  *        right streaming reader for it; the one list of point-file extensions that the readers, the
  *        workbench's file dialogs and drops, and stylos-cli use. Pure functions, thread-safe.
  */
+#include "stylos/core/io/ImportFrame.h"
 #include "stylos/core/io/PointReader.h"
 
 #include <filesystem>
@@ -66,6 +67,11 @@ struct ReadOptions {
      * number beyond the file's scans is ErrorCode::InvalidArgument (E57: at open; PTX: at the end of the file).
      */
     std::optional<std::size_t> scan;
+    /**
+     * The import frame (ImportFrame.h: offset, unit, up axis → Z up, metres), applied to every point and
+     * normal as it is read, after the scan poses. The identity (the default) reads the file as it is.
+     */
+    ImportFrame frame;
 };
 
 /** Format from the magic bytes, then the extension. Does not validate the file. */
@@ -75,6 +81,8 @@ PointFormat detectPointFormat(const std::filesystem::path& path);
  * @brief Opens a reader for @p path in whatever format it is. LAZ files are recognised and refused
  *        (ErrorCode::Unsupported) with a message saying what they are and how to convert them;
  *        an unrecognised file gives ErrorCode::UnknownFormat; an empty file ErrorCode::Empty.
+ *        When @p options.frame is not the identity, the reader hands out its points in that frame (and
+ *        its header's declared bounds too): every pipeline that reads points through here gets them so.
  */
 Result<std::unique_ptr<PointReader>> openPointReader(const std::filesystem::path& path,
                                                      const ReadOptions& options = {});

@@ -7,6 +7,7 @@
  *        Plain data: it never draws and never opens its octree. Units: metres, radians.
  *        Thread-safety: a value type.
  */
+#include "stylos/core/io/ImportFrame.h"
 #include "stylos/core/scene/Pose.h"
 
 #include <array>
@@ -71,6 +72,9 @@ struct Fragment {
     bool visible = true;
     std::vector<Guide> guides;          ///< in the fragment's frame, in display order
     std::string annotationLayer;        ///< `.poct` attribute layer with the annotation classes; "" for none
+    /** How the scan was brought into the octree's frame on import (up axis, unit, offset): a record of
+     *  what the `.poct` already holds, kept so that a rebuild from the source gives the same octree. */
+    io::ImportFrame importFrame;
     /** The octree file was not found (or could not be opened) when the project was loaded. Runtime
      *  state, never saved. */
     bool octreeMissing = false;

@@ -9,7 +9,7 @@
  *                     "pose": [16 numbers, row-major], "colour": "#d6ccba", "visible": true,
  *                     "guides": [{"name": "axis", "kind": "axis", "origin": [x, y, z],
  *                                 "direction": [x, y, z]}],
- *                     "annotations": "", "assembly": 1}],
+ *                     "annotations": "", "assembly": 1, "up": "+Y", "unit": "mm", "offset": [0, 0, 0]}],
  *      "legend": {"format": "stylos-legend", "version": 1, "layers": {…}}}
  *
  * A fragment's "pose" is relative to its "assembly" (0 or absent: the scene's top level); an assembly's
@@ -22,7 +22,9 @@
  * Saving is atomic (util/AtomicTextFile.h). Every key listed is written, even when empty; unknown keys
  * are ignored (a later writer may add some). Optional on load (defaults in brackets): "nextId"
  * [above the largest id], "nextAssemblyId" [above the largest], "assemblies" [[]], "source" [""], "colour"
- * [#c8c8c8], "visible" [true], "guides" [[]], "annotations" [""], "assembly" [0], an assembly's "drum"
+ * [#c8c8c8], "visible" [true], "guides" [[]], "annotations" [""], "assembly" [0], "up" ["+Z"], "unit" ["m"], "offset" [[0, 0, 0]] (the
+ * fragment's import frame, io/ImportFrame.h: a record of how its octree was built from its source; an
+ * "up" or "unit" outside the lists is Malformed, naming the value and the choices), an assembly's "drum"
  * [0] and "visible" [true], "legend" [the default vocabulary, annotation::Legend::defaults()]: the
  * project's annotation classes as annotation/Legend.h writes them (a Malformed legend names the project
  * file, "legend" and the legend's key), "plate" [none: written only once a plate was exported]: the last

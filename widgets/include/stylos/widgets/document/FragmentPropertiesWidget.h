@@ -43,6 +43,7 @@ public:
     QLabel* leafCellsLabel() const { return m_leafCells; }
     QLabel* totalCellsLabel() const { return m_totalCells; }
     QLabel* depthLabel() const { return m_depth; }
+    QLabel* importedLabel() const { return m_imported; }
     QLabel* fileLabel() const { return m_file; }
 
 protected:
@@ -55,7 +56,7 @@ private:
     void applyPose(int component);
     void chooseColour();
 
-    static constexpr std::size_t RowCount = 14;
+    static constexpr std::size_t RowCount = 15;
 
     SceneDocument& m_document;
     core::scene::FragmentId m_id = core::scene::NoFragment;
@@ -69,6 +70,7 @@ private:
     QLabel* m_leafCells;
     QLabel* m_totalCells;
     QLabel* m_depth;
+    QLabel* m_imported;  ///< the import frame: up axis, unit (and offset)
     QLabel* m_file;
     std::array<QLabel*, RowCount> m_labels{};  ///< the form's row labels
 };

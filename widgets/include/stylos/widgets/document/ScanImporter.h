@@ -3,10 +3,13 @@
  * @brief File › Import scans: for each chosen file a background task (TaskManager, with progress and
  *        Cancel) builds its packed octree with core::octree::buildOctreeFile — into the project's folder,
  *        or into a cache folder while the project has never been saved — opens it, then adds the fragment
- *        through the undo stack ("Import NAME"). A `.poct` is opened directly. Each failure becomes one
+ *        through the undo stack ("Import NAME"). The scans are read in the import frame set with
+ *        setImportFrame() (up axis, unit, offset: the octree is Z up, in metres), which the fragment keeps
+ *        (Fragment::importFrame, saved in the project). A `.poct` is opened directly, as it is. Each failure becomes one
  *        translated message naming the file and the reason; a cancelled import adds nothing and leaves no
  *        file behind. GUI thread only; the window never waits for an import.
  */
+#include "stylos/core/io/ImportFrame.h"
 #include "stylos/core/octree/OctreeBuild.h"
 
 #include "stylos/core/scene/Pose.h"
@@ -37,6 +40,10 @@ public:
     /** @brief Octree build settings for the next imports (default: BuildOptions' defaults). */
     void setBuildOptions(const core::octree::BuildOptions& options) { m_options = options; }
     const core::octree::BuildOptions& buildOptions() const { return m_options; }
+
+    /** @brief How the next imports' scans are read (default: the identity, Z up in metres). */
+    void setImportFrame(const core::io::ImportFrame& frame) { m_frame = frame; }
+    const core::io::ImportFrame& importFrame() const { return m_frame; }
 
     /** @brief Where octrees go while the project is unsaved; default: the user cache's "octrees" folder. */
     void setCacheDirectory(const QString& directory) { m_cacheDirectory = directory; }
@@ -71,7 +78,8 @@ Q_SIGNALS:
 
 private:
     QString reserveOutput(const QString& input);
-    void importEnded(const QString& input, const QString& output, QFutureWatcherBase* watcher);
+    void importEnded(const QString& input, const QString& output, const core::io::ImportFrame& frame,
+                     QFutureWatcherBase* watcher);
     void fail(const QString& input, const QString& message);
     /** Where a scan with @p octree goes among the fragments open now (core::scene::placeImport). */
     core::scene::Pose placement(const core::octree::PackedOctree& octree) const;
@@ -79,6 +87,7 @@ private:
     SceneDocument& m_document;
     TaskManager& m_tasks;
     core::octree::BuildOptions m_options;
+    core::io::ImportFrame m_frame;
     QString m_cacheDirectory;
     QSet<QString> m_reserved;            ///< output files of running imports (not yet on disk)
     QSet<QFutureWatcherBase*> m_pending;
