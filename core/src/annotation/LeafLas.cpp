@@ -10,7 +10,6 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
-#include <set>
 
 namespace stylos::core::annotation {
 
@@ -56,48 +55,28 @@ std::vector<std::uint8_t> extraBytes(std::uint8_t dataType, const std::string& n
     return d;
 }
 
-struct Column {
-    std::string name;
-    std::vector<std::uint8_t> labels;
-    std::vector<float> floats;
-};
-
 } // namespace
 
 Result<std::uint64_t> exportLeafLas(const octree::PackedOctree& octree, const std::vector<std::string>& layers,
                                     const Legend& legend, const fs::path& output, ProgressSink* progress)
 {
     const std::string file = octree.path().string();
-    std::set<std::string> seen;
-    std::vector<std::uint8_t> material;
-    std::vector<Column> extras;
     const std::uint64_t leaves = leafCount(octree);
-    for (const std::string& name : layers) {
-        if (!isExportableLayer(name))
-            return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "unknown layer \"" + name + "\" (material, toolmark, ambient)");
-        if (!seen.insert(name).second)
-            return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "layer \"" + name + "\" given twice");
-        if (name == "material" || name == "toolmark") {
-            auto labels = readLeafLabels(octree, *layerFromName(name));
-            if (!labels) return labels.error();
-            if (name == "material") {
-                material = std::move(labels).value();
-                const auto high = std::find_if(material.begin(), material.end(), [](std::uint8_t id) { return id > 255 - kLasClassOffset; });
-                if (high != material.end())
-                    return Error::at(ErrorCode::InvalidArgument, file, {}, "material class " + std::to_string(*high) +
-                                                                               " is above 191, the last a LAS classification can hold");
-            } else {
-                extras.push_back({name, std::move(labels).value(), {}});
-            }
+    auto read = readLeafColumns(octree, layers, output);
+    if (!read) return read.error();
+    // Material becomes the classification byte; the other layers extra bytes, in the order asked.
+    std::vector<std::uint8_t> material;
+    std::vector<LeafColumn> extras;
+    for (LeafColumn& c : *read) {
+        if (c.name != "material") {
+            extras.push_back(std::move(c));
             continue;
         }
-        const auto view = octree.attribute(name);
-        if (!view) return Error::at(ErrorCode::InvalidArgument, file, {}, "has no \"" + name + "\" layer (stylos-cli ao adds it)");
-        if (view->type != octree::AttributeType::Float32 || view->components != 1 || view->bytes.size() != leaves * 4)
-            return Error::at(ErrorCode::Malformed, file, "layer \"" + name + "\"", "not one float per leaf");
-        Column c{name, {}, std::vector<float>(leaves)};
-        if (leaves) std::memcpy(c.floats.data(), view->bytes.data(), view->bytes.size());
-        extras.push_back(std::move(c));
+        material = std::move(c.labels);
+        const auto high = std::find_if(material.begin(), material.end(), [](std::uint8_t id) { return id > 255 - kLasClassOffset; });
+        if (high != material.end())
+            return Error::at(ErrorCode::InvalidArgument, file, {}, "material class " + std::to_string(*high) +
+                                                                       " is above 191, the last a LAS classification can hold");
     }
 
     // VLRs: the classification lookup, the extra bytes, the legend.
@@ -116,8 +95,8 @@ Result<std::uint64_t> exportLeafLas(const octree::PackedOctree& octree, const st
     std::size_t extraLength = 0;
     if (!extras.empty()) {
         std::vector<std::uint8_t> descriptors;
-        for (const Column& c : extras) {
-            const bool floats = !c.floats.empty() || c.name == "ambient";
+        for (const LeafColumn& c : extras) {
+            const bool floats = c.isFloat();
             const auto d = extraBytes(floats ? 9 : 1, c.name,
                                       floats ? "fraction of the sky (3D skydome)" : "Stylos tool-mark class id");
             descriptors.insert(descriptors.end(), d.begin(), d.end());
@@ -189,8 +168,8 @@ Result<std::uint64_t> exportLeafLas(const octree::PackedOctree& octree, const st
         record[14] = 0x11; // return 1 of 1
         if (!material.empty() && material[c.index] != 0) record[16] = std::uint8_t(kLasClassOffset + material[c.index]);
         std::size_t at = kFormat6Length;
-        for (const Column& e : extras) {
-            if (!e.floats.empty()) put<float>(record, at, e.floats[c.index]), at += 4;
+        for (const LeafColumn& e : extras) {
+            if (e.isFloat()) put<float>(record, at, e.floats[c.index]), at += 4;
             else record[at++] = e.labels[c.index];
         }
         chunk.insert(chunk.end(), record.begin(), record.end());

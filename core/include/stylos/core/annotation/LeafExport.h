@@ -24,6 +24,23 @@ namespace stylos::core::annotation {
 /** @brief The layer names exportLeafPly() knows: "material", "toolmark", "ambient". */
 bool isExportableLayer(const std::string& name);
 
+/** @brief One exported layer's values per leaf: class ids (material, toolmark) or floats (ambient). */
+struct LeafColumn {
+    std::string name;
+    std::vector<std::uint8_t> labels;
+    std::vector<float> floats;
+    bool isFloat() const { return name == "ambient"; }
+    double at(std::uint64_t leaf) const { return labels.empty() ? double(floats[leaf]) : double(labels[leaf]); }
+};
+
+/**
+ * @brief Reads @p layers of @p octree for an export to @p output (the PLY and LAS writers alike): InvalidArgument
+ *        for an unknown or repeated name (naming @p output) or "ambient" absent (naming the octree), Malformed
+ *        for a layer of the wrong type or size.
+ */
+Result<std::vector<LeafColumn>> readLeafColumns(const octree::PackedOctree& octree, const std::vector<std::string>& layers,
+                                                const std::filesystem::path& output);
+
 /** @brief Writes the leaves of @p octree with @p layers (in that order) to @p output; returns the point count. */
 Result<std::uint64_t> exportLeafPly(const octree::PackedOctree& octree, const std::vector<std::string>& layers,
                                     const std::filesystem::path& output, ProgressSink* progress = nullptr);
