@@ -127,6 +127,19 @@ Status writeSvg(const PlateContent& plate, const fs::path& output)
     return finish(partial, output);
 }
 
+/** Writes @p pixels (@p spec's size, channels and format) as TIFF or PNG by @p output's extension, through a
+ *  partial file renamed at the end. */
+Status writeImageFile(const OIIO::ImageSpec& spec, const void* pixels, const fs::path& output)
+{
+    const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
+    auto out = OIIO::ImageOutput::create(partial.string());
+    if (!out || !out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + OIIO::geterror());
+    const bool ok = out->write_image(spec.format, pixels);
+    const bool closed = out->close();
+    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->geterror());
+    return finish(partial, output);
+}
+
 bool inColour(const PlateContent& plate)
 {
     for (const auto& panel : plate.panels)
@@ -181,13 +194,7 @@ Status writeRaster(const PlateContent& plate, const fs::path& output, PlateForma
             }
         }
     }
-    const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
-    auto out = OIIO::ImageOutput::create(partial.string());
-    if (!out || !out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + OIIO::geterror());
-    const bool ok = out->write_image(sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8, buffer.data());
-    const bool closed = out->close();
-    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->geterror());
-    return finish(partial, output);
+    return writeImageFile(spec, buffer.data(), output);
 }
 
 } // namespace
@@ -224,14 +231,7 @@ Status writePanelImage(const core::plate::PanelImage& image, const fs::path& out
         bytes.resize(image.samples.size());
         for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t((image.samples[i] + 128) / 257);
     }
-    const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
-    auto out = OIIO::ImageOutput::create(partial.string());
-    if (!out || !out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + OIIO::geterror());
-    const bool ok = sixteen ? out->write_image(OIIO::TypeDesc::UINT16, image.samples.data())
-                            : out->write_image(OIIO::TypeDesc::UINT8, bytes.data());
-    const bool closed = out->close();
-    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->geterror());
-    return finish(partial, output);
+    return writeImageFile(spec, sixteen ? static_cast<const void*>(image.samples.data()) : bytes.data(), output);
 }
 
 Status writePlate(const PlateContent& plate, const fs::path& output)
