@@ -1,5 +1,6 @@
 // Label rasters on a développée's grid: 8-bit PNG/TIFF files, checks, and the transfer to and from leaves.
 #include "stylos/core/annotation/LabelRaster.h"
+#include "stylos/core/util/TextCase.h"
 
 #include "../image/TemporaryImageFile.h"
 
@@ -18,13 +19,6 @@ namespace stylos::core::annotation {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string lowerExtension(const fs::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
 
 bool isRasterExtension(const fs::path& path)
 {

@@ -1,4 +1,5 @@
 #include "stylos/core/io/PointFileFormat.h"
+#include "stylos/core/util/TextCase.h"
 
 #include "FramedReader.h"
 
@@ -27,13 +28,6 @@ constexpr PointFileExtension Extensions[] = {
     {"laz", PointFormat::Laz},
 };
 
-/** ".PLY" → ".ply" (with the dot, as the magic-byte checks compare it). */
-std::string lowerExtension(const fs::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
 
 /** The readable formats' names for a message: "ply, las, ..., neu or obj". */
 std::string readableExtensionsText()

@@ -1,4 +1,5 @@
 #include "stylos/core/io/TextColumns.h"
+#include "stylos/core/util/TextCase.h"
 
 #include <algorithm>
 #include <cassert>
@@ -125,12 +126,7 @@ FieldScan parseSeparated(const char* p, const char* end, char sep, double* out, 
     return scan;
 }
 
-std::string lower(std::string_view text)
-{
-    std::string s(text);
-    std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return s;
-}
+std::string lower(std::string_view text) { return lowerCase(text); }
 
 Error layoutError(const std::string& problem)
 {

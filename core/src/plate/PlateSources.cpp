@@ -1,5 +1,6 @@
 // What a plate is made from (a project, an octree or a point file), and each panel's picture.
 #include "stylos/core/plate/PlateSources.h"
+#include "stylos/core/util/TextCase.h"
 
 #include "stylos/core/annotation/LabelRaster.h"
 #include "stylos/core/annotation/LeafLabels.h"
@@ -23,13 +24,6 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace oct = octree;
-
-std::string lowerExtension(const fs::path& path)
-{
-    std::string e = path.extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return e;
-}
 
 /** The fragments a panel shows: the named one, or (empty name) the first (développée) / every visible one (3D). */
 Result<std::vector<const PlateFragment*>> pick(const PlateSources& sources, const PanelSpec& panel)

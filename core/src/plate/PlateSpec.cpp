@@ -1,5 +1,6 @@
 // A plate as stated: page, resolution, caption, panels; names, validation and the layout file.
 #include "stylos/core/plate/PlateSpec.h"
+#include "stylos/core/util/TextCase.h"
 
 #include <nlohmann/json.hpp>
 
@@ -20,12 +21,7 @@ namespace {
 constexpr std::array<const char*, 8> ViewNames{"developpee", "front", "back", "left", "right", "top", "bottom", "camera"};
 constexpr std::array<const char*, 4> ShadingNames{"skydome", "light", "height", "headlight"};
 
-std::string lower(std::string_view text)
-{
-    std::string out(text);
-    std::transform(out.begin(), out.end(), out.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return out;
-}
+std::string lower(std::string_view text) { return lowerCase(text); }
 
 Error malformed(const std::string& source, const std::string& key, const std::string& problem)
 {
