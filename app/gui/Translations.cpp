@@ -39,7 +39,12 @@ bool Translations::setLanguage(const QString& code)
                      : locale.language() == QLocale::Greek ? QStringLiteral("el")
                                                            : QStringLiteral("en");
     auto* stylos = new QTranslator(this);
-    if (!stylos->load(QStringLiteral(":/i18n/stylos_") + loaded)) {
+    // An installed copy (share/stylos/translations beside bin/, which a translator may update) comes first,
+    // then the one embedded in the program.
+    const QString installed =
+        QCoreApplication::applicationDirPath() + QStringLiteral("/../share/stylos/translations");
+    if (!stylos->load(QStringLiteral("stylos_") + loaded, installed) &&
+        !stylos->load(QStringLiteral(":/i18n/stylos_") + loaded)) {
         delete stylos;
         return false;
     }

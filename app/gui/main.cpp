@@ -1,19 +1,24 @@
 // stylos: the Qt workbench. Opens the demo scene, or the project or scans given on the command line.
 #include "Automation.h"
 #include "CommandLine.h"
+#include "DisplayCheck.h"
 #include "MainWindow.h"
 #include "ProjectActions.h"
 #include "Translations.h"
 
 #include <QApplication>
+#include <QIcon>
 
 int main(int argc, char* argv[])
 {
+    if (!stylos::app::hasDisplay(argc, argv)) return stylos::app::runWithoutDisplay(argc, argv, STYLOS_VERSION);
     QApplication app(argc, argv);
     QApplication::setOrganizationName(QStringLiteral("Stylos"));
     QApplication::setApplicationName(QStringLiteral("stylos"));
     QApplication::setApplicationDisplayName(QStringLiteral("Stylos"));
     QApplication::setApplicationVersion(QStringLiteral(STYLOS_VERSION));
+    QApplication::setDesktopFileName(QStringLiteral("stylos"));
+    QApplication::setWindowIcon(QIcon(QStringLiteral(":/icons/stylos.svg")));
     stylos::app::Translations translations;
     translations.setLanguage(stylos::app::Translations::savedLanguage());
 

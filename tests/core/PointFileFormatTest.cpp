@@ -88,4 +88,13 @@ TEST(PointFileFormat, EveryListedExtensionReachesItsReader)
     EXPECT_NE(unknown.error().message.find(".ply, .las, .e57, .ptx, .xyz, .xyzn, .asc, .csv, .pts, .txt, .neu or .obj"),
               std::string::npos)
         << unknown.error().message;
+
+    // An octree given where points are read (e.g. `stylos-cli build d.poct`) says it already is one.
+    stylos::test::writeText(dir / "d.POCT", "not read\n");
+    auto octree = openPointReader(dir / "d.POCT");
+    ASSERT_FALSE(octree.ok());
+    EXPECT_EQ(octree.error().code, ErrorCode::UnknownFormat);
+    EXPECT_NE(octree.error().message.find("is a packed octree (.poct), not a point file: it is already built"),
+              std::string::npos)
+        << octree.error().message;
 }

@@ -149,6 +149,10 @@ Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const
     case PointFormat::Ptx: return PtxReader::open(path, options);
     case PointFormat::Unknown: break;
     }
+    if (hasPoctExtension(path))
+        return Error::at(ErrorCode::UnknownFormat, path.string(), "",
+                         "this is a packed octree (.poct), not a point file: it is already built. Open it in the "
+                         "workbench, describe it with `stylos-cli info`, or give the scan it was built from");
     return Error::at(ErrorCode::UnknownFormat, path.string(), "",
                      "unknown point file format (Stylos reads PLY, LAS, E57, PTX, text and OBJ files: " +
                          readableExtensionsText() + ")");

@@ -1,0 +1,158 @@
+#include "stylos/core/scene/ProjectOctrees.h"
+
+#include "stylos/core/scene/ProjectFile.h"
+
+#include <algorithm>
+#include <set>
+#include <system_error>
+
+namespace fs = std::filesystem;
+
+namespace stylos::core::scene {
+
+namespace {
+
+fs::path normalised(const fs::path& p)
+{
+    std::error_code ec;
+    fs::path n = fs::weakly_canonical(p, ec);
+    return ec ? p.lexically_normal() : n;
+}
+
+/** Whether @p file lies in @p folder or below it (both normalised). */
+bool isInside(const fs::path& file, const fs::path& folder)
+{
+    const fs::path relative = file.lexically_relative(folder);
+    if (relative.empty()) return false;
+    const auto first = *relative.begin();
+    return first != ".." && first != ".";
+}
+
+/** A name for @p source in @p folder that no other file (on disk or already planned) has. */
+fs::path destinationFor(const fs::path& source, const fs::path& folder, std::set<fs::path>& taken)
+{
+    const std::string stem = source.stem().string();
+    const std::string extension = source.extension().string();
+    for (int n = 1;; ++n) {
+        const fs::path candidate = folder / (n == 1 ? stem + extension : stem + "-" + std::to_string(n) + extension);
+        std::error_code ec;
+        if (!taken.count(candidate) && !fs::exists(candidate, ec)) {
+            taken.insert(candidate);
+            return candidate;
+        }
+    }
+}
+
+Status copyWhole(const fs::path& from, const fs::path& to)
+{
+    const fs::path part = to.string() + ".part";
+    std::error_code ec;
+    fs::copy_file(from, part, fs::copy_options::overwrite_existing, ec);
+    if (!ec) fs::rename(part, to, ec);
+    if (ec) {
+        std::error_code ignored;
+        fs::remove(part, ignored);
+        return Error::at(ErrorCode::WriteFailed, to.string(), "",
+                         "could not copy the octree " + from.string() + " here: " + ec.message());
+    }
+    return {};
+}
+
+} // namespace
+
+GatherPlan planGather(const Scene& scene, const fs::path& projectPath, const fs::path& cacheFolder)
+{
+    GatherPlan plan;
+    const fs::path folder = normalised(fs::absolute(projectPath).parent_path());
+    const fs::path cache = cacheFolder.empty() ? fs::path{} : normalised(cacheFolder);
+    std::set<fs::path> taken;
+    for (const Fragment& f : scene.fragments()) {
+        if (f.octreeMissing || f.octreePath.empty()) continue;
+        const fs::path from = normalised(f.octreePath);
+        if (isInside(from, folder)) continue;
+        auto same = std::find_if(plan.transfers.begin(), plan.transfers.end(),
+                                 [&](const OctreeTransfer& t) { return t.from == from; });
+        if (same != plan.transfers.end()) {
+            same->fragments.push_back(f.id);
+            continue;
+        }
+        std::error_code ec;
+        const std::uintmax_t bytes = fs::file_size(from, ec);
+        if (ec) continue; // vanished since it was opened: the save keeps its path, the next open reports it
+        OctreeTransfer t;
+        t.from = from;
+        t.to = destinationFor(from, folder, taken);
+        t.bytes = bytes;
+        t.fromCache = !cache.empty() && isInside(from, cache);
+        t.fragments.push_back(f.id);
+        (t.fromCache ? plan.moveBytes : plan.copyBytes) += bytes;
+        plan.transfers.push_back(std::move(t));
+    }
+    return plan;
+}
+
+Result<GatherReport> gather(Scene& scene, const GatherPlan& plan, bool copies)
+{
+    GatherReport report;
+    for (const OctreeTransfer& t : plan.transfers) {
+        if (!t.fromCache && !copies) continue;
+        std::error_code ec;
+        if (!fs::exists(t.from, ec))
+            return Error::at(ErrorCode::NotFound, t.from.string(), "", "the octree is gone; it cannot be brought into "
+                                                                      "the project's folder");
+        bool moved = false;
+        if (t.fromCache) {
+            fs::rename(t.from, t.to, ec); // the same file system: instant, and atomic
+            moved = !ec;
+        }
+        if (!moved) {
+            if (const Status copied = copyWhole(t.from, t.to); !copied) return copied.error();
+            if (t.fromCache) fs::remove(t.from, ec); // a copy left behind is the cache cleaner's
+        }
+        for (FragmentId id : t.fragments)
+            if (Fragment* f = scene.find(id)) f->octreePath = t.to;
+        (t.fromCache ? report.moved : report.copied) += 1;
+        report.bytes += t.bytes;
+    }
+    return report;
+}
+
+CacheCleanReport cleanCache(const fs::path& cacheFolder, const std::vector<fs::path>& inUse,
+                            const std::vector<fs::path>& projects, std::chrono::seconds grace,
+                            fs::file_time_type now)
+{
+    CacheCleanReport report;
+    std::error_code ec;
+    if (!fs::is_directory(cacheFolder, ec)) return report;
+
+    std::set<fs::path> used;
+    for (const fs::path& p : inUse) used.insert(normalised(p));
+    for (const fs::path& project : projects) {
+        auto loaded = ProjectFile::load(project);
+        if (!loaded) continue;
+        for (const Fragment& f : loaded->scene.fragments()) used.insert(normalised(f.octreePath));
+    }
+
+    for (const fs::directory_entry& entry : fs::directory_iterator(cacheFolder, ec)) {
+        if (!entry.is_regular_file(ec)) continue;
+        const fs::path path = entry.path();
+        const std::string name = path.filename().string();
+        const bool octree = path.extension() == ".poct";
+        const bool partial = name.size() > 5 && name.ends_with(".part");
+        if (!octree && !partial) continue;
+        std::error_code sizeError, timeError;
+        const std::uintmax_t bytes = entry.file_size(sizeError);
+        const auto written = entry.last_write_time(timeError);
+        const bool old = !timeError && now - written > grace;
+        if ((partial || !used.count(normalised(path))) && old && fs::remove(path, ec)) {
+            report.removed.push_back(path);
+            report.bytesFreed += bytes;
+        } else if (octree) {
+            report.bytesKept += bytes;
+        }
+    }
+    std::sort(report.removed.begin(), report.removed.end());
+    return report;
+}
+
+} // namespace stylos::core::scene
