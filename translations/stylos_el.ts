@@ -856,6 +856,39 @@
         <source>Clear the list</source>
         <translation>Εκκαθάριση λίστας</translation>
     </message>
+    <message numerus="yes">
+        <source>The project uses %n octree(s) outside its folder, %1 in all.</source>
+        <translation>
+            <numerusform>Το έργο χρησιμοποιεί %n οκταδικό δέντρο εκτός του φακέλου του, %1 συνολικά.</numerusform>
+            <numerusform>Το έργο χρησιμοποιεί %n οκταδικά δέντρα εκτός του φακέλου του, %1 συνολικά.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Copied into the folder, they travel with it: the folder can be moved or copied whole. Left where they are, the project names them there.</source>
+        <translation>Αντιγραμμένα στον φάκελο, ταξιδεύουν μαζί του: ο φάκελος μπορεί να μετακινηθεί ή να αντιγραφεί ολόκληρος. Αν μείνουν όπου είναι, το έργο τα αναφέρει εκεί.</translation>
+    </message>
+    <message>
+        <source>Copy into the folder</source>
+        <translation>Αντιγραφή στον φάκελο</translation>
+    </message>
+    <message>
+        <source>Leave them where they are</source>
+        <translation>Να μείνουν όπου είναι</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %1, with %n octree(s) copied into its folder</source>
+        <translation>
+            <numerusform>Αποθηκεύτηκε το %1, με %n οκταδικό δέντρο αντιγραμμένο στον φάκελό του</numerusform>
+            <numerusform>Αποθηκεύτηκε το %1, με %n οκταδικά δέντρα αντιγραμμένα στον φάκελό του</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Removed %n unused octree(s) from the cache, %1 freed</source>
+        <translation>
+            <numerusform>Αφαιρέθηκε %n αχρησιμοποίητο οκταδικό δέντρο από την κρυφή μνήμη, ελευθερώθηκαν %1</numerusform>
+            <numerusform>Αφαιρέθηκαν %n αχρησιμοποίητα οκταδικά δέντρα από την κρυφή μνήμη, ελευθερώθηκαν %1</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::PropertiesDock</name>
@@ -2264,6 +2297,10 @@
     <message>
         <source>Keep the plate&apos;s settings</source>
         <translation>Διατήρηση των ρυθμίσεων του πίνακα</translation>
+    </message>
+    <message>
+        <source>Could not copy the octrees into the project&apos;s folder: %1.</source>
+        <translation>Δεν ήταν δυνατή η αντιγραφή των οκταδικών δέντρων στον φάκελο του έργου: %1.</translation>
     </message>
 </context>
 <context>

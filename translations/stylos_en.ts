@@ -856,6 +856,39 @@
         <source>Clear the list</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>The project uses %n octree(s) outside its folder, %1 in all.</source>
+        <translation>
+            <numerusform>The project uses %n octree outside its folder, %1 in all.</numerusform>
+            <numerusform>The project uses %n octrees outside its folder, %1 in all.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Copied into the folder, they travel with it: the folder can be moved or copied whole. Left where they are, the project names them there.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Copy into the folder</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Leave them where they are</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %1, with %n octree(s) copied into its folder</source>
+        <translation>
+            <numerusform>Saved %1, with %n octree copied into its folder</numerusform>
+            <numerusform>Saved %1, with %n octrees copied into its folder</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Removed %n unused octree(s) from the cache, %1 freed</source>
+        <translation>
+            <numerusform>Removed %n unused octree from the cache, %1 freed</numerusform>
+            <numerusform>Removed %n unused octrees from the cache, %1 freed</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::PropertiesDock</name>
@@ -2259,6 +2292,10 @@
     </message>
     <message>
         <source>Keep the plate&apos;s settings</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not copy the octrees into the project&apos;s folder: %1.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

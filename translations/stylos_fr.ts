@@ -856,6 +856,39 @@
         <source>Clear the list</source>
         <translation>Effacer la liste</translation>
     </message>
+    <message numerus="yes">
+        <source>The project uses %n octree(s) outside its folder, %1 in all.</source>
+        <translation>
+            <numerusform>Le projet utilise %n octree hors de son dossier, %1 en tout.</numerusform>
+            <numerusform>Le projet utilise %n octrees hors de son dossier, %1 en tout.</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>Copied into the folder, they travel with it: the folder can be moved or copied whole. Left where they are, the project names them there.</source>
+        <translation>Copiés dans le dossier, ils voyagent avec lui : le dossier peut être déplacé ou copié en entier. Laissés où ils sont, le projet les désigne à cet endroit.</translation>
+    </message>
+    <message>
+        <source>Copy into the folder</source>
+        <translation>Copier dans le dossier</translation>
+    </message>
+    <message>
+        <source>Leave them where they are</source>
+        <translation>Les laisser où ils sont</translation>
+    </message>
+    <message numerus="yes">
+        <source>Saved %1, with %n octree(s) copied into its folder</source>
+        <translation>
+            <numerusform>%1 enregistré, %n octree copié dans son dossier</numerusform>
+            <numerusform>%1 enregistré, %n octrees copiés dans son dossier</numerusform>
+        </translation>
+    </message>
+    <message numerus="yes">
+        <source>Removed %n unused octree(s) from the cache, %1 freed</source>
+        <translation>
+            <numerusform>%n octree inutilisé retiré du cache, %1 libérés</numerusform>
+            <numerusform>%n octrees inutilisés retirés du cache, %1 libérés</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::PropertiesDock</name>
@@ -2260,6 +2293,10 @@
     <message>
         <source>Keep the plate&apos;s settings</source>
         <translation>Conserver les réglages de la planche</translation>
+    </message>
+    <message>
+        <source>Could not copy the octrees into the project&apos;s folder: %1.</source>
+        <translation>Impossible de copier les octrees dans le dossier du projet : %1.</translation>
     </message>
 </context>
 <context>

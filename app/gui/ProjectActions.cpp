@@ -9,11 +9,15 @@
 #include <QDir>
 #include <QFileDialog>
 #include <QFileInfo>
+#include <QLocale>
 #include <QMenu>
 #include <QMessageBox>
+#include <QPushButton>
 #include <QSettings>
 
 #include <algorithm>
+#include <chrono>
+#include <filesystem>
 
 namespace stylos::app {
 
@@ -132,14 +136,7 @@ bool ProjectActions::openProject(const QString& path)
 bool ProjectActions::save()
 {
     if (m_document.projectPath().isEmpty()) return saveAs();
-    QString error;
-    if (!m_document.save(&error)) {
-        Q_EMIT reported(error, true);
-        return false;
-    }
-    addRecent(m_document.projectPath());
-    Q_EMIT reported(tr("Saved %1").arg(QDir::toNativeSeparators(m_document.projectPath())), false);
-    return true;
+    return saveTo(m_document.projectPath());
 }
 
 bool ProjectActions::saveAs()
@@ -152,14 +149,60 @@ bool ProjectActions::saveAs()
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".stylos");
     settings.setValue(LastDirKey, QFileInfo(path).absolutePath());
+    return saveTo(path);
+}
+
+bool ProjectActions::saveTo(const QString& path)
+{
+    const core::scene::GatherPlan plan = m_document.octreeGatherPlan(path);
+    auto copies = widgets::SceneDocument::OctreeCopies::All;
+    if (m_prompts && plan.copyBytes > static_cast<std::uintmax_t>(AskBeforeCopying)) {
+        int outside = 0;
+        for (const core::scene::OctreeTransfer& t : plan.transfers) outside += t.fromCache ? 0 : 1;
+        QMessageBox box(QMessageBox::Question, tr("Save project"),
+                        tr("The project uses %n octree(s) outside its folder, %1 in all.", nullptr, outside)
+                            .arg(QLocale().formattedDataSize(static_cast<qint64>(plan.copyBytes))),
+                        QMessageBox::NoButton, &m_window);
+        box.setInformativeText(tr("Copied into the folder, they travel with it: the folder can be moved or "
+                                  "copied whole. Left where they are, the project names them there."));
+        QPushButton* copy = box.addButton(tr("Copy into the folder"), QMessageBox::AcceptRole);
+        QPushButton* leave = box.addButton(tr("Leave them where they are"), QMessageBox::DestructiveRole);
+        box.addButton(QMessageBox::Cancel);
+        box.setDefaultButton(copy);
+        box.exec();
+        if (box.clickedButton() == leave) copies = widgets::SceneDocument::OctreeCopies::CacheOnly;
+        else if (box.clickedButton() != copy) return false;
+    }
     QString error;
-    if (!m_document.saveAs(path, &error)) {
+    const bool saved = m_document.saveAs(path, &error, copies);
+    if (!saved) {
         Q_EMIT reported(error, true);
         return false;
     }
+    int copied = 0;
+    for (const core::scene::OctreeTransfer& t : plan.transfers)
+        copied += t.fromCache || copies == widgets::SceneDocument::OctreeCopies::All ? 1 : 0;
     addRecent(m_document.projectPath());
-    Q_EMIT reported(tr("Saved %1").arg(QDir::toNativeSeparators(m_document.projectPath())), false);
+    const QString where = QDir::toNativeSeparators(m_document.projectPath());
+    Q_EMIT reported(copied == 0 ? tr("Saved %1").arg(where)
+                                : tr("Saved %1, with %n octree(s) copied into its folder", nullptr, copied).arg(where),
+                    false);
     return true;
+}
+
+void ProjectActions::cleanOctreeCache()
+{
+    std::vector<std::filesystem::path> inUse;
+    for (const core::scene::Fragment& f : m_document.scene().fragments()) inUse.push_back(f.octreePath);
+    std::vector<std::filesystem::path> projects;
+    for (const QString& project : recentProjects()) projects.push_back(project.toStdString());
+    const core::scene::CacheCleanReport report = core::scene::cleanCache(
+        m_document.octreeCacheFolder().toStdString(), inUse, projects, std::chrono::hours(24));
+    if (report.removed.empty()) return;
+    Q_EMIT reported(tr("Removed %n unused octree(s) from the cache, %1 freed", nullptr,
+                       static_cast<int>(report.removed.size()))
+                        .arg(QLocale().formattedDataSize(static_cast<qint64>(report.bytesFreed))),
+                    false);
 }
 
 bool ProjectActions::maybeSave()

@@ -3,7 +3,9 @@
  * @brief The File menu: New, Open project…, Open recent, Save, Save as…, Import scans…, Quit — the actions
  *        and their handlers (file dialogs, the import options after the scans are chosen, "save changes?"
  *        before the project is replaced or the window closes, the recent projects and the import options
- *        kept in QSettings; the importer starts with the remembered import options, for drops too). Outcomes go out as messages (reported()) for the
+ *        kept in QSettings; the importer starts with the remembered import options, for drops too). Saving brings
+ *        the octrees into the project's folder (asking first for big ones from outside the cache) so that the
+ *        folder travels whole; cleanOctreeCache() keeps the cache to what something uses. Outcomes go out as messages (reported()) for the
  *        window to log and show. GUI thread only.
  */
 #include <QObject>
@@ -60,6 +62,15 @@ public:
     /** @brief Recent projects, most recent first (existing or not). */
     static QStringList recentProjects();
 
+    /** @brief Saving asks before copying more than this many bytes of octrees from outside the cache into the
+     *         project's folder (the cache's octrees are always copied: the cache is cleaned). */
+    static constexpr qint64 AskBeforeCopying = qint64(1) << 30;
+    /**
+     * @brief Removes from the octree cache what neither the open project nor a recent project uses, once a
+     *        day old (core::scene::cleanCache); reports what it freed. The workbench calls it at start.
+     */
+    void cleanOctreeCache();
+
     QAction* newAction() const { return m_new; }
     QAction* openAction() const { return m_open; }
     QAction* saveAction() const { return m_save; }
@@ -77,6 +88,8 @@ private:
     void chooseProject();
     void importScans();
     void addRecent(const QString& path);
+    /** Saves to @p path, asking first when big octrees would be copied into its folder. */
+    bool saveTo(const QString& path);
     void rebuildRecentMenu();
 
     widgets::SceneDocument& m_document;

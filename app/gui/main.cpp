@@ -36,6 +36,7 @@ int main(int argc, char* argv[])
     if (options.orbitFrames > 0) stylos::app::orbitWhenReady(window, options.orbitFrames);
     if (options.poseFrames > 0) stylos::app::poseWhenReady(window, options.poseFrames);
     window.show();
+    window.projectActions().cleanOctreeCache();
     if (options.files.isEmpty()) window.openDemo();
     else window.projectActions().openPaths(options.files);
     return QApplication::exec();

@@ -1,5 +1,6 @@
 // Projects that travel: planGather/gather bring a scene's octrees into the project's folder (cache octrees
-// moved, others copied, shared ones once, names made unique), and cleanCache removes only what nothing uses.
+// always, others unless left where they are; shared ones once; names made unique), and cleanCache removes
+// only what nothing uses.
 #include "TestSupport.h"
 
 #include "stylos/core/scene/ProjectFile.h"
@@ -55,7 +56,7 @@ TEST(ProjectOctreesTest, SavingBringsEveryOctreeIntoTheFolderAndTheCopiedProject
 
     const GatherPlan plan = planGather(scene, d.project, d.cache);
     ASSERT_EQ(plan.transfers.size(), 2u);
-    EXPECT_EQ(plan.moveBytes, 10u);
+    EXPECT_EQ(plan.cacheBytes, 10u);
     EXPECT_EQ(plan.copyBytes, 18u);
     EXPECT_TRUE(plan.transfers[0].fromCache);
     EXPECT_FALSE(plan.transfers[1].fromCache);
@@ -64,7 +65,7 @@ TEST(ProjectOctreesTest, SavingBringsEveryOctreeIntoTheFolderAndTheCopiedProject
 
     auto report = gather(scene, plan);
     ASSERT_TRUE(report.ok()) << report.error().message;
-    EXPECT_EQ(report->moved, 1);
+    EXPECT_EQ(report->fromCache, 1);
     EXPECT_EQ(report->copied, 1);
     EXPECT_EQ(report->bytes, 28u);
     const fs::path folder = fs::weakly_canonical(d.project.parent_path());
@@ -72,7 +73,7 @@ TEST(ProjectOctreesTest, SavingBringsEveryOctreeIntoTheFolderAndTheCopiedProject
     EXPECT_EQ(scene.find(a)->octreePath, folder / "fragment-2.poct");
     EXPECT_EQ(scene.find(b)->octreePath, folder / "fragment-2.poct");
     EXPECT_EQ(scene.find(inside)->octreePath, d.project.parent_path() / "inside.poct");
-    EXPECT_FALSE(fs::exists(d.cache / "drum.poct"));            // moved out of the cache
+    EXPECT_EQ(contents(d.cache / "drum.poct"), "cache drum"); // left for the cache cleaner (the undo history)
     EXPECT_EQ(contents(d.elsewhere / "fragment.poct"), "built with the CLI"); // copied: the original stays
     EXPECT_EQ(contents(folder / "fragment-2.poct"), "built with the CLI");
     EXPECT_EQ(contents(folder / "fragment.poct"), "another file of that name");
@@ -95,7 +96,7 @@ TEST(ProjectOctreesTest, SavingBringsEveryOctreeIntoTheFolderAndTheCopiedProject
     EXPECT_TRUE(planGather(loaded->scene, travelled / "column.stylos", d.cache).transfers.empty());
 }
 
-TEST(ProjectOctreesTest, CopiesCanBeLeftWhereTheyAreWhileTheCacheIsStillEmptied)
+TEST(ProjectOctreesTest, OctreesElsewhereCanBeLeftWhereTheyAreButNotTheCaches)
 {
     Folders d;
     test::writeText(d.cache / "scan.poct", "cache");
@@ -105,7 +106,7 @@ TEST(ProjectOctreesTest, CopiesCanBeLeftWhereTheyAreWhileTheCacheIsStillEmptied)
     const FragmentId big = addFragment(scene, "Big", d.elsewhere / "big.poct");
     auto report = gather(scene, planGather(scene, d.project, d.cache), /*copies=*/false);
     ASSERT_TRUE(report.ok());
-    EXPECT_EQ(report->moved, 1);
+    EXPECT_EQ(report->fromCache, 1);
     EXPECT_EQ(report->copied, 0);
     EXPECT_EQ(scene.find(scan)->octreePath.filename(), "scan.poct");
     EXPECT_NE(scene.find(scan)->octreePath.parent_path(), fs::weakly_canonical(d.cache));

@@ -38,6 +38,7 @@ private Q_SLOTS:
     void undoingARemovalDuringLoadingReopensTheOctree();
     void assembliesMoveTheirFragmentsAndUndoExactly();
     void anAssemblySurvivesSaveAndReopen();
+    void savingCopiesTheOctreesIntoTheFolderSoItTravels();
 
 private:
     Fragment fragment(const QString& name) const;
@@ -431,6 +432,58 @@ void SceneDocumentTest::anAssemblySurvivesSaveAndReopen()
     QCOMPARE(reopened.scene(), doc.scene());
     QCOMPARE(reopened.worldPose(a), doc.worldPose(a));
     QCOMPARE(reopened.drumFor(a), drum);
+}
+
+
+void SceneDocumentTest::savingCopiesTheOctreesIntoTheFolderSoItTravels()
+{
+    const QString cache = m_dir.filePath("travel-cache");
+    const QString elsewhere = m_dir.filePath("travel-elsewhere");
+    const QString site = m_dir.filePath("travel-site");
+    for (const QString& folder : {cache, elsewhere, site}) QVERIFY(QDir().mkpath(folder));
+    const QString imported = stylos::test::makeOctreeFile(cache, "import.poct");
+    const QString built = stylos::test::makeOctreeFile(elsewhere, "built.poct");
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    doc.setOctreeCacheFolder(cache);
+    Fragment f = fragment("import");
+    f.octreePath = imported.toStdString();
+    const FragmentId a = doc.addFragment(f, m_octree);
+    f.name = "built";
+    f.octreePath = built.toStdString();
+    const FragmentId b = doc.addFragment(f, m_octree);
+
+    // Left where they are: only the cache's octree comes.
+    QString error;
+    QVERIFY2(doc.saveAs(site + "/first.stylos", &error, SceneDocument::OctreeCopies::CacheOnly), qPrintable(error));
+    const QString canonicalSite = QFileInfo(site).canonicalFilePath();
+    QCOMPARE(QString::fromStdString(doc.fragment(a)->octreePath.string()), canonicalSite + "/import.poct");
+    QCOMPARE(QString::fromStdString(doc.fragment(b)->octreePath.string()), built);
+    QVERIFY(QFile::exists(imported)); // the cache's copy waits for the cache cleaner
+
+    // All: the other one comes too, and the folder travels whole.
+    QSignalSpy changed(&doc, &SceneDocument::fragmentChanged);
+    QVERIFY2(doc.saveAs(site + "/column.stylos", &error), qPrintable(error));
+    QCOMPARE(changed.size(), 1);
+    QCOMPARE(changed.at(0).at(0).toULongLong(), b);
+    QCOMPARE(QString::fromStdString(doc.fragment(b)->octreePath.string()), canonicalSite + "/built.poct");
+    QVERIFY(!doc.isModified());
+
+    const QString usb = m_dir.filePath("travel-usb");
+    QVERIFY(QDir().mkpath(usb));
+    for (const QString& name : QDir(site).entryList(QDir::Files)) QVERIFY(QFile::copy(site + "/" + name, usb + "/" + name));
+    QVERIFY(QDir(site).removeRecursively());
+    QVERIFY(QDir(elsewhere).removeRecursively());
+    QVERIFY(QDir(cache).removeRecursively());
+    SceneDocument reopened(tasks);
+    QSignalSpy loaded(&reopened, &SceneDocument::loadingFinished);
+    QVERIFY2(reopened.open(usb + "/column.stylos", &error), qPrintable(error));
+    QVERIFY(loaded.wait(10000));
+    QCOMPARE(loaded.at(0).at(0).toStringList(), QStringList());
+    QVERIFY(reopened.octree(a));
+    QVERIFY(reopened.octree(b));
+    QCOMPARE(reopened.octree(b)->totalCells(), m_octree->totalCells());
+    QVERIFY(tasks.waitForIdle(10000));
 }
 
 STYLOS_WIDGET_TEST_MAIN(SceneDocumentTest)

@@ -11,7 +11,6 @@
 #include <QDir>
 #include <QFile>
 #include <QFileInfo>
-#include <QStandardPaths>
 
 #include <optional>
 
@@ -33,8 +32,7 @@ bool isPoct(const QString& path)
 } // namespace
 
 ScanImporter::ScanImporter(SceneDocument& document, TaskManager& tasks, QObject* parent)
-    : QObject(parent), m_document(document), m_tasks(tasks),
-      m_cacheDirectory(QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/octrees"))
+    : QObject(parent), m_document(document), m_tasks(tasks)
 {
     // An import that ends after the project was replaced must not land in the new one.
     connect(&document, &SceneDocument::sceneAboutToBeReset, this, [this] {
@@ -42,10 +40,20 @@ ScanImporter::ScanImporter(SceneDocument& document, TaskManager& tasks, QObject*
     });
 }
 
+void ScanImporter::setCacheDirectory(const QString& directory)
+{
+    m_document.setOctreeCacheFolder(directory);
+}
+
+QString ScanImporter::cacheDirectory() const
+{
+    return m_document.octreeCacheFolder();
+}
+
 QString ScanImporter::outputDirectory() const
 {
     const QString folder = m_document.projectFolder();
-    return folder.isEmpty() ? m_cacheDirectory : folder;
+    return folder.isEmpty() ? m_document.octreeCacheFolder() : folder;
 }
 
 QString ScanImporter::fileFilter()

@@ -19,6 +19,7 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QFileInfo>
+#include <QStandardPaths>
 
 #include <algorithm>
 #include <set>
@@ -487,18 +488,45 @@ void SceneDocument::newProject()
     setProjectPath({});
 }
 
-bool SceneDocument::save(QString* error)
+bool SceneDocument::save(QString* error, OctreeCopies copies)
 {
     if (m_path.isEmpty()) {
         if (error) *error = tr("The project has no file yet: choose one with Save as.");
         return false;
     }
-    return saveAs(m_path, error);
+    return saveAs(m_path, error, copies);
 }
 
-bool SceneDocument::saveAs(const QString& path, QString* error)
+QString SceneDocument::defaultOctreeCacheFolder()
+{
+    return QStandardPaths::writableLocation(QStandardPaths::CacheLocation) + QStringLiteral("/octrees");
+}
+
+core::scene::GatherPlan SceneDocument::octreeGatherPlan(const QString& path) const
+{
+    return core::scene::planGather(m_scene, QFileInfo(path).absoluteFilePath().toStdString(),
+                                   m_octreeCache.toStdString());
+}
+
+bool SceneDocument::gatherOctrees(const QString& path, OctreeCopies copies, QString* error)
+{
+    const core::scene::GatherPlan plan = octreeGatherPlan(path);
+    const auto gathered = core::scene::gather(m_scene, plan, copies == OctreeCopies::All);
+    // The fragments repointed so far stay repointed (their copies are whole), even after a failure.
+    for (const core::scene::OctreeTransfer& t : plan.transfers)
+        for (FragmentId id : t.fragments)
+            if (const Fragment* f = m_scene.find(id); f && f->octreePath == t.to) Q_EMIT fragmentChanged(id);
+    if (gathered) return true;
+    if (error)
+        *error = tr("Could not copy the octrees into the project's folder: %1.").arg(ErrorText::reason(gathered.error().code)) +
+                 QLatin1Char('\n') + QString::fromStdString(gathered.error().message);
+    return false;
+}
+
+bool SceneDocument::saveAs(const QString& path, QString* error, OctreeCopies copies)
 {
     const QString absolute = QFileInfo(path).absoluteFilePath();
+    if (!gatherOctrees(absolute, copies, error)) return false;
     if (!saveLabels(error)) return false;
     const core::Status saved = core::scene::ProjectFile::save(m_scene, absolute.toStdString());
     if (!saved) {

@@ -45,9 +45,10 @@ public:
     void setImportFrame(const core::io::ImportFrame& frame) { m_frame = frame; }
     const core::io::ImportFrame& importFrame() const { return m_frame; }
 
-    /** @brief Where octrees go while the project is unsaved; default: the user cache's "octrees" folder. */
-    void setCacheDirectory(const QString& directory) { m_cacheDirectory = directory; }
-    QString cacheDirectory() const { return m_cacheDirectory; }
+    /** @brief Where octrees go while the project is unsaved: the document's octreeCacheFolder() (default: the
+     *         user cache's "octrees" folder), which saving copies them out of and the cache cleaner empties. */
+    void setCacheDirectory(const QString& directory);
+    QString cacheDirectory() const;
     /** @brief Where the next import's octree goes: the project's folder, or the cache folder. */
     QString outputDirectory() const;
 
@@ -88,7 +89,6 @@ private:
     TaskManager& m_tasks;
     core::octree::BuildOptions m_options;
     core::io::ImportFrame m_frame;
-    QString m_cacheDirectory;
     QSet<QString> m_reserved;            ///< output files of running imports (not yet on disk)
     QSet<QFutureWatcherBase*> m_pending;
     QStringList m_errors;

@@ -9,6 +9,7 @@
  *        octree and is not marked missing gets one opened, so undoing a removal restores it either way.
  *        GUI thread only. Failures come back as translated messages naming the file and the reason.
  */
+#include "stylos/core/scene/ProjectOctrees.h"
 #include "stylos/core/scene/Scene.h"
 #include "stylos/widgets/document/CommandText.h"
 
@@ -189,15 +190,26 @@ public:
     // Files.
     /** @brief An empty, unsaved project (the undo history is cleared). */
     void newProject();
+    /** @brief Whether saving copies the octrees outside the project's folder into it (those in the cache always). */
+    enum class OctreeCopies { All, CacheOnly };
     /** @brief Saves to projectPath() (see saveAs()); false (with @p error) when it fails or the project was never saved. */
-    bool save(QString* error = nullptr);
+    bool save(QString* error = nullptr, OctreeCopies copies = OctreeCopies::All);
     /**
      * @brief Saves to @p path (paths inside are made relative to its folder) and makes it the project path.
-     *        First writes the labels of every fragment changed since its octree opened into that octree's
-     *        file (both layers, one atomic rewrite each); when one fails, nothing more is written and the
-     *        project stays modified.
+     *        First brings the fragments' octrees into the project's folder (core::scene::gather: those in
+     *        octreeCacheFolder() always, the others unless @p copies is CacheOnly), so the folder can be
+     *        moved or copied whole; then writes the labels of every fragment changed since its octree opened
+     *        into that octree's file (both layers, one atomic rewrite each). When a step fails, nothing more
+     *        is written and the project stays modified.
      */
-    bool saveAs(const QString& path, QString* error = nullptr);
+    bool saveAs(const QString& path, QString* error = nullptr, OctreeCopies copies = OctreeCopies::All);
+    /** @brief What saving to @p path would copy into its folder (see saveAs()). */
+    core::scene::GatherPlan octreeGatherPlan(const QString& path) const;
+    /** @brief Where imports build their octrees while the project was never saved (ScanImporter). */
+    QString octreeCacheFolder() const { return m_octreeCache; }
+    void setOctreeCacheFolder(const QString& folder) { m_octreeCache = folder; }
+    /** @brief The user cache's "octrees" folder: the default octreeCacheFolder(). */
+    static QString defaultOctreeCacheFolder();
     /**
      * @brief Replaces the project by the one in @p path and opens each fragment's octree in the
      *        background; loadingFinished() follows with the problems met. On failure (unreadable or
@@ -269,6 +281,8 @@ private:
     void changePlate(const std::optional<core::plate::PlateSpec>& plate);
     /** Writes the changed labels into their octrees' files; false with @p error at the first failure. */
     bool saveLabels(QString* error);
+    /** Brings the octrees into the folder of @p path (saveAs()); false with @p error when a copy fails. */
+    bool gatherOctrees(const QString& path, OctreeCopies copies, QString* error);
     /** Takes @p id's labels from its opened octree; a failure goes to the load errors. */
     void loadLabels(FragmentId id);
 
@@ -285,6 +299,7 @@ private:
     std::map<const QUndoCommand*, CommandText> m_macroTexts;
     core::scene::Scene m_scene;
     std::map<FragmentId, OctreePtr> m_octrees;
+    QString m_octreeCache = defaultOctreeCacheFolder();
     std::map<FragmentId, DeveloppeePtr> m_developpees;
     std::map<FragmentId, QPointer<QFutureWatcherBase>> m_loads;  ///< octrees being opened
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
