@@ -1,9 +1,10 @@
 // stylos-cli dock FRAGMENT --drum DRUM [--guides G.json] [--pose R00,…,R22,TX,TY,TZ] [--lock z,r,theta,tilt]
-//                 [--threads N] [--json]
+//                 [--threads N] [--json] [--up AXIS] [--unit UNIT] [--offset X,Y,Z]
 #include "AxisArgument.h"
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
+#include "ReadArguments.h"
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/dock/DockRegistration.h"
@@ -31,6 +32,7 @@ struct DockRequest {
     dock::DockOptions options;
     unsigned threads = 0;
     bool json = false;
+    core::cloud::CloudLoadOptions load; ///< the import frame (--up, --unit, --offset) of the point-file inputs
 };
 
 bool parseRequest(CommandLine& cl, DockRequest& r, std::string& problem)
@@ -56,6 +58,10 @@ bool parseRequest(CommandLine& cl, DockRequest& r, std::string& problem)
     if (!cl.integer("threads", threads)) return problem = cl.error(), false;
     if (threads < 0 || threads > 1024) return problem = "--threads must be between 0 and 1024", false;
     r.threads = unsigned(threads);
+    if (!parseReadOptions(cl, r.load.read, problem)) return false;
+    if (hasFrameOptions(cl) && core::cloud::isPoctPath(r.fragment) && core::cloud::isPoctPath(r.drum))
+        return problem = "--up, --unit and --offset apply to point-file inputs only, and both " + r.fragment +
+                         " and " + r.drum + " are octrees", false;
     return true;
 }
 
@@ -79,7 +85,7 @@ core::Result<dock::DrumGuides> guidesFor(const DockRequest& r)
         options.axis = guides->axis;
         options.flutes = guides->flutes;
     }
-    auto drum = core::cloud::loadPointCloud(r.drum);
+    auto drum = core::cloud::loadPointCloud(r.drum, r.load);
     if (!drum) return drum.error();
     drum->source = r.drum;
     ConsoleProgress progress("fitting the guides of " + r.drum);
@@ -115,13 +121,14 @@ nlohmann::json dockJson(const dock::DockResult& d, double seconds)
 int runDock(const std::vector<std::string>& args)
 {
     CommandLine cl("dock", "FRAGMENT --drum DRUM [options]",
-                   {{"drum", "DRUM", "the intact drum (point file or .poct) the fragment docks against"},
+                   withFrameOptions({{"drum", "DRUM", "the intact drum (point file or .poct) the fragment docks against"},
                     {"guides", "G.json", "the drum's guides from `stylos-cli guides` (default: fitted on DRUM)"},
                     {"pose", "R00,R01,R02,R10,R11,R12,R20,R21,R22,TX,TY,TZ",
                      "starting placement: fragment file frame -> drum file frame (default: identity)"},
                     {"lock", "z,r,theta,tilt", "unknowns kept as the start has them (also tangent, tilt_lean, tilt_roll)"},
                     {"threads", "N", "worker threads of the guides' fit (default: all cores)"},
-                    {"json", "", "print the docked pose as one JSON object on stdout"}});
+                    {"json", "", "print the docked pose as one JSON object on stdout"}}));
+    // (frame options: the same frame for both inputs, when they are point files; a .poct is already in its frame)
     if (!cl.parse(args)) return usageError(cl, cl.error());
     if (cl.helpRequested()) {
         std::cout << "Docks a fragment against the guides of an intact drum: from the starting placement, snaps its\n"
@@ -139,7 +146,7 @@ int runDock(const std::vector<std::string>& args)
     const auto start = std::chrono::steady_clock::now();
     auto guides = guidesFor(r);
     if (!guides) return fail(guides.error());
-    auto fragment = core::cloud::loadPointCloud(r.fragment);
+    auto fragment = core::cloud::loadPointCloud(r.fragment, r.load);
     if (!fragment) return fail(fragment.error());
     fragment->source = r.fragment;
     ConsoleProgress progress("docking " + r.fragment);

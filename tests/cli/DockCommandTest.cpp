@@ -5,6 +5,8 @@
 #include "CliRunner.h"
 #include "TestSupport.h"
 
+#include "stylos/core/io/ImportFrame.h"
+
 #include <Eigen/Geometry>
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -143,4 +145,38 @@ TEST(CliDock, BadInputFailsNamingTheProblem)
     EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--lock", "yaw"}).exitCode, 2);
     EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,2,0,0,0"}).exitCode, 2);
     EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0"}).exitCode, 2);
+}
+
+TEST(CliDock, TheImportFrameAppliesToBothPointFiles)
+{
+    // Read Y-up (--up +Y turns both files by the same R), the dock is the same one seen in the turned frame:
+    // R·P·Rᵀ from R·start·Rᵀ.
+    const Scene& s = scene();
+    const std::array<double, 9> r = stylos::core::io::ImportFrame{stylos::core::io::UpAxis::PosY}.rotation();
+    Eigen::Affine3d rot = Eigen::Affine3d::Identity();
+    for (int i = 0; i < 9; ++i) rot.linear()(i / 3, i % 3) = r[std::size_t(i)];
+    const Eigen::Affine3d start = s.turned(2.0);
+    const auto plain = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", poseArgument(start), "--json"});
+    ASSERT_EQ(plain.exitCode, 0) << plain.err;
+    const auto framed = runCli({"dock", s.fragment, "--drum", s.drum, "--up", "+Y", "--pose",
+                                poseArgument(rot * start * rot.inverse()), "--json"});
+    ASSERT_EQ(framed.exitCode, 0) << framed.err;
+    const Eigen::Affine3d expected = rot * poseFromJson(nlohmann::json::parse(plain.out)) * rot.inverse();
+    const Eigen::Affine3d docked = poseFromJson(nlohmann::json::parse(framed.out));
+    EXPECT_LT(angleDeg(docked.linear(), expected.linear()), 1e-3);
+    EXPECT_LT((docked.translation() - expected.translation()).norm(), 2e-4); // 0.2 mm: the solve's own tolerance
+
+    // Two octrees are already in their frame: the options are refused, naming both.
+    TempDir dir;
+    const std::string a = (dir / "a.poct").string(), b = (dir / "b.poct").string();
+    for (const std::string& f : {a, b}) std::ofstream(f, std::ios::binary) << "\x89POCT\r\n\x1a\n"; // the signature
+    const auto refused = runCli({"dock", a, "--drum", b, "--unit", "mm"});
+    EXPECT_EQ(refused.exitCode, 2);
+    EXPECT_NE(refused.err.find("--up, --unit and --offset apply to point-file inputs only, and both " + a + " and " + b +
+                               " are octrees"),
+              std::string::npos)
+        << refused.err;
+    const auto badUnit = runCli({"dock", s.fragment, "--drum", s.drum, "--unit", "inch"});
+    EXPECT_EQ(badUnit.exitCode, 2);
+    EXPECT_NE(badUnit.err.find("--unit must be one of"), std::string::npos) << badUnit.err;
 }
