@@ -1676,6 +1676,22 @@
         <source>millimetres (mm)</source>
         <translation>χιλιοστά (mm)</translation>
     </message>
+    <message>
+        <source>&amp;Offset (site coordinates, in that unit):</source>
+        <translation>&amp;Μετατόπιση (συντεταγμένες θέσης, σε αυτή τη μονάδα):</translation>
+    </message>
+    <message>
+        <source>Subtracted from every x, before the turn and the scaling</source>
+        <translation>Αφαιρείται από κάθε x, πριν από την περιστροφή και την κλιμάκωση</translation>
+    </message>
+    <message>
+        <source>Subtracted from every y, before the turn and the scaling</source>
+        <translation>Αφαιρείται από κάθε y, πριν από την περιστροφή και την κλιμάκωση</translation>
+    </message>
+    <message>
+        <source>Subtracted from every z, before the turn and the scaling</source>
+        <translation>Αφαιρείται από κάθε z, πριν από την περιστροφή και την κλιμάκωση</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::LegendText</name>

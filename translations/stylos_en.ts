@@ -1676,6 +1676,22 @@
         <source>millimetres (mm)</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Offset (site coordinates, in that unit):</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subtracted from every x, before the turn and the scaling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subtracted from every y, before the turn and the scaling</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Subtracted from every z, before the turn and the scaling</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::LegendText</name>

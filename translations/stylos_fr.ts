@@ -1676,6 +1676,22 @@
         <source>millimetres (mm)</source>
         <translation>millimètres (mm)</translation>
     </message>
+    <message>
+        <source>&amp;Offset (site coordinates, in that unit):</source>
+        <translation>&amp;Décalage (coordonnées du site, dans cette unité) :</translation>
+    </message>
+    <message>
+        <source>Subtracted from every x, before the turn and the scaling</source>
+        <translation>Soustrait de chaque x, avant la rotation et la mise à l&apos;échelle</translation>
+    </message>
+    <message>
+        <source>Subtracted from every y, before the turn and the scaling</source>
+        <translation>Soustrait de chaque y, avant la rotation et la mise à l&apos;échelle</translation>
+    </message>
+    <message>
+        <source>Subtracted from every z, before the turn and the scaling</source>
+        <translation>Soustrait de chaque z, avant la rotation et la mise à l&apos;échelle</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::LegendText</name>

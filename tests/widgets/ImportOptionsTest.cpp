@@ -14,6 +14,7 @@
 
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
 #include <QSettings>
@@ -67,6 +68,11 @@ void ImportOptionsTest::theDialogGivesTheChosenAxisAndUnit()
     QVERIFY(chosen.up == UpAxis::PosY);
     QVERIFY(chosen.unit == LengthUnit::Millimetre);
     QCOMPARE(chosen.offset, given.offset);
+    // The site offset: three boxes in the scans' unit, to the millimetre of a UTM easting.
+    dialog.offsetBox(0)->setValue(512000.125);
+    dialog.offsetBox(1)->setValue(-4100000.5);
+    dialog.offsetBox(2)->setValue(0);
+    QCOMPARE(dialog.frame().offset, (std::array<double, 3>{512000.125, -4100000.5, 0.0}));
     // Every item names its axis; OK accepts.
     for (int i = 0; i < dialog.upBox()->count(); ++i)
         QVERIFY2(dialog.upBox()->itemText(i).contains(dialog.upBox()->itemData(i).toString().right(1)),
@@ -84,6 +90,11 @@ void ImportOptionsTest::theChoiceIsRememberedInTheSettings()
     QCOMPARE(store.value(QStringLiteral("import/up")).toString(), QStringLiteral("-Y"));
     QCOMPARE(store.value(QStringLiteral("import/unit")).toString(), QStringLiteral("mm"));
     QVERIFY((ImportOptionsDialog::load(store) == ImportFrame{UpAxis::NegY, LengthUnit::Millimetre, {}}));
+    const ImportFrame site{UpAxis::PosZ, LengthUnit::Metre, {512000.25, -4.5e6, 12.5}};
+    ImportOptionsDialog::save(store, site);
+    QVERIFY(ImportOptionsDialog::load(store) == site);
+    store.setValue(QStringLiteral("import/offset"), QVariantList{1, QStringLiteral("x"), 3}); // not numbers: no offset
+    QCOMPARE(ImportOptionsDialog::load(store).offset, (std::array<double, 3>{0.0, 0.0, 0.0}));
     // A value this version does not know keeps its default.
     store.setValue(QStringLiteral("import/up"), QStringLiteral("sideways"));
     store.setValue(QStringLiteral("import/unit"), QStringLiteral("ell"));
