@@ -85,7 +85,7 @@ GatherPlan planGather(const Scene& scene, const fs::path& projectPath, const fs:
         t.bytes = bytes;
         t.fromCache = !cache.empty() && isInside(from, cache);
         t.fragments.push_back(f.id);
-        (t.fromCache ? plan.moveBytes : plan.copyBytes) += bytes;
+        (t.fromCache ? plan.cacheBytes : plan.copyBytes) += bytes;
         plan.transfers.push_back(std::move(t));
     }
     return plan;
@@ -100,18 +100,12 @@ Result<GatherReport> gather(Scene& scene, const GatherPlan& plan, bool copies)
         if (!fs::exists(t.from, ec))
             return Error::at(ErrorCode::NotFound, t.from.string(), "", "the octree is gone; it cannot be brought into "
                                                                       "the project's folder");
-        bool moved = false;
-        if (t.fromCache) {
-            fs::rename(t.from, t.to, ec); // the same file system: instant, and atomic
-            moved = !ec;
-        }
-        if (!moved) {
-            if (const Status copied = copyWhole(t.from, t.to); !copied) return copied.error();
-            if (t.fromCache) fs::remove(t.from, ec); // a copy left behind is the cache cleaner's
-        }
+        // Copied, never moved: the undo history may still name the cache's file; cleanCache() removes it
+        // once nothing uses it.
+        if (const Status copied = copyWhole(t.from, t.to); !copied) return copied.error();
         for (FragmentId id : t.fragments)
             if (Fragment* f = scene.find(id)) f->octreePath = t.to;
-        (t.fromCache ? report.moved : report.copied) += 1;
+        (t.fromCache ? report.fromCache : report.copied) += 1;
         report.bytes += t.bytes;
     }
     return report;

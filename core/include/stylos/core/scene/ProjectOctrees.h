@@ -3,10 +3,11 @@
  * @brief Projects that travel: the octrees a project uses brought into its folder when it is saved, and the
  *        octree cache (where imports go while a project was never saved) kept to what something still uses.
  *
- * planGather() lists the fragments' octrees that lie outside the project's folder. Those in the cache are
- * moved (renamed when on the same file system, else copied then removed); the others (a demo, an octree
- * built elsewhere with `stylos-cli build`) are copied, and the caller may ask first when they are big
- * (GatherPlan::copyBytes). Each goes to the project's folder under its own name, made unique with "-2",
+ * planGather() lists the fragments' octrees that lie outside the project's folder: those in the cache must
+ * come (the cache is cleaned), the others (a demo, an octree built elsewhere with `stylos-cli build`) may
+ * stay where they are, and the caller may ask first when they are big (GatherPlan::copyBytes). All are
+ * copied, never moved: the undo history may still name the cache's file, which cleanCache() removes once
+ * nothing uses it. Each goes to the project's folder under its own name, made unique with "-2",
  * "-3"… when a different file already has it; fragments sharing one octree keep sharing its one copy.
  * gather() writes each copy to "NAME.poct.part" then renames it, so an interrupted save leaves either the
  * whole octree or none, and repoints the fragments at each octree as soon as it is in place: after a
@@ -33,14 +34,14 @@ struct OctreeTransfer {
     std::filesystem::path from;       ///< where it is now (absolute)
     std::filesystem::path to;         ///< where it goes, in the project's folder (absolute)
     std::uintmax_t bytes = 0;
-    bool fromCache = false;           ///< moved (the cache's copy goes), not copied
+    bool fromCache = false;           ///< from the cache: always brought (gather()'s @p copies aside)
     std::vector<FragmentId> fragments;///< the fragments that use it
 };
 
 struct GatherPlan {
     std::vector<OctreeTransfer> transfers;
-    std::uintmax_t copyBytes = 0;     ///< bytes of the transfers that copy (not from the cache)
-    std::uintmax_t moveBytes = 0;     ///< bytes of the transfers from the cache
+    std::uintmax_t copyBytes = 0;     ///< bytes of the transfers not from the cache (the caller may ask)
+    std::uintmax_t cacheBytes = 0;    ///< bytes of the transfers from the cache
 };
 
 /**
@@ -53,13 +54,14 @@ GatherPlan planGather(const Scene& scene, const std::filesystem::path& projectPa
 
 /** @brief What gather() did. */
 struct GatherReport {
-    int moved = 0;
-    int copied = 0;
+    int fromCache = 0;                ///< octrees copied out of the cache
+    int copied = 0;                   ///< other octrees copied
     std::uintmax_t bytes = 0;
 };
 
 /**
- * @brief Carries out @p plan's transfers (all, or only those from the cache when @p copies is false) and
+ * @brief Carries out @p plan's transfers (all, or only those from the cache when @p copies is false: the
+ *        others keep their paths) and
  *        repoints @p scene's fragments. Errors: WriteFailed naming the source and the destination (the
  *        transfers done before it stay done, the scene names them); NotFound when a source vanished.
  */
