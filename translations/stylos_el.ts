@@ -1219,6 +1219,26 @@
         <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
         <translation>Σκίαση θόλου ουρανού του ξετυλίγματος: πόσα αζιμούθια ερευνά κάθε εικονοστοιχείο για τον ορίζοντά του (περισσότερα: ομαλότερο και πιο αργό). Όχι ο θόλος ουρανού της τρισδιάστατης όψης.</translation>
     </message>
+    <message>
+        <source>noise %1 mm smoothed by %2 mm</source>
+        <translation>θόρυβος %1 mm, εξομάλυνση %2 mm</translation>
+    </message>
+    <message>
+        <source>noise %1 mm, raw heights</source>
+        <translation>θόρυβος %1 mm, ακατέργαστα ύψη</translation>
+    </message>
+    <message>
+        <source>Smooth noise</source>
+        <translation>Εξομάλυνση θορύβου</translation>
+    </message>
+    <message>
+        <source>Skydome: smooth the scanner&apos;s noise out of the heights before the horizon search, so that flat, open surfaces read evenly instead of as salt and pepper. Off: the raw heights.</source>
+        <translation>Θόλος ουρανού: εξομάλυνση του θορύβου του σαρωτή στα ύψη πριν από την αναζήτηση του ορίζοντα, ώστε οι επίπεδες, ανοιχτές επιφάνειες να διαβάζονται ομοιόμορφα αντί για «αλάτι και πιπέρι». Ανενεργό: τα ακατέργαστα ύψη.</translation>
+    </message>
+    <message>
+        <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
+        <translation>Πλάτος (σ της γκαουσιανής) της εξομάλυνσης· το Αυτόματο το ορίζει από τον θόρυβο που μετρήθηκε στα ύψη. Η γραμμή κατάστασης λέει ποιο χρησιμοποιήθηκε.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeSettings</name>
@@ -1265,6 +1285,10 @@
     <message>
         <source>the unrolling radius must be a positive length</source>
         <translation>η ακτίνα ξετυλίγματος πρέπει να είναι θετικό μήκος</translation>
+    </message>
+    <message>
+        <source>the smoothing must be a positive length, or 0 for automatic</source>
+        <translation>η εξομάλυνση πρέπει να είναι θετικό μήκος, ή 0 για αυτόματη</translation>
     </message>
 </context>
 <context>

@@ -1219,6 +1219,26 @@
         <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>noise %1 mm smoothed by %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>noise %1 mm, raw heights</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Smooth noise</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome: smooth the scanner&apos;s noise out of the heights before the horizon search, so that flat, open surfaces read evenly instead of as salt and pepper. Off: the raw heights.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeSettings</name>
@@ -1264,6 +1284,10 @@
     </message>
     <message>
         <source>the unrolling radius must be a positive length</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the smoothing must be a positive length, or 0 for automatic</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1219,6 +1219,26 @@
         <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
         <translation>Ombrage skydome de la développée : le nombre d&apos;azimuts où chaque pixel cherche son horizon (plus, c&apos;est plus lisse et plus lent). Pas le skydome de la vue 3D.</translation>
     </message>
+    <message>
+        <source>noise %1 mm smoothed by %2 mm</source>
+        <translation>bruit %1 mm lissé sur %2 mm</translation>
+    </message>
+    <message>
+        <source>noise %1 mm, raw heights</source>
+        <translation>bruit %1 mm, hauteurs brutes</translation>
+    </message>
+    <message>
+        <source>Smooth noise</source>
+        <translation>Lisser le bruit</translation>
+    </message>
+    <message>
+        <source>Skydome: smooth the scanner&apos;s noise out of the heights before the horizon search, so that flat, open surfaces read evenly instead of as salt and pepper. Off: the raw heights.</source>
+        <translation>Skydome : lisser le bruit du scanner dans les hauteurs avant la recherche de l&apos;horizon, pour que les surfaces planes et dégagées se lisent uniformément au lieu de poivre et sel. Désactivé : les hauteurs brutes.</translation>
+    </message>
+    <message>
+        <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
+        <translation>Largeur (σ de la gaussienne) du lissage ; Automatique la fixe d&apos;après le bruit mesuré sur les hauteurs. La ligne d&apos;état indique la valeur utilisée.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeSettings</name>
@@ -1265,6 +1285,10 @@
     <message>
         <source>the unrolling radius must be a positive length</source>
         <translation>le rayon de déroulement doit être une longueur positive</translation>
+    </message>
+    <message>
+        <source>the smoothing must be a positive length, or 0 for automatic</source>
+        <translation>le lissage doit être une longueur positive, ou 0 pour automatique</translation>
     </message>
 </context>
 <context>

@@ -1,5 +1,5 @@
 // stylos-cli unroll IN -o OUT.png|tif|exr [--surface cylinder|cone|revolution] [--axis PX,PY,PZ,DX,DY,DZ]
-//                    [--shading height|light|skydome] [--directions D] [--pixel-size M] [--cut-angle DEG]
+//                    [--shading height|light|skydome] [--directions D] [--smoothing M] [--pixel-size M] [--cut-angle DEG]
 //                    [--heights OUT.tif|exr] [--bits 8|16] [--threads N] [--columns LAYOUT] [--scan N]
 //                    [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 #include "AxisArgument.h"
@@ -56,11 +56,16 @@ bool parseRequest(CommandLine& cl, UnrollRequest& r, std::string& problem)
         if (!parseAxis(*axis, a, problem)) return false;
         r.options.axis = a;
     }
-    double pixel = 0, cut = 0;
+    double pixel = 0, cut = 0, smoothing = 0;
     long long threads = 0, bits = 0;
     if (!cl.number("pixel-size", pixel) || !cl.number("cut-angle", cut) || !cl.integer("threads", threads) ||
-        !cl.integer("bits", bits))
+        !cl.integer("bits", bits) || !cl.number("smoothing", smoothing))
         return problem = cl.error(), false;
+    if (cl.value("smoothing")) {
+        if (!(smoothing >= 0 && std::isfinite(smoothing)))
+            return problem = "--smoothing must be a length of 0 or more metres (0: the raw heights)", false;
+        r.options.smoothing = smoothing;
+    }
     if (cl.value("pixel-size")) {
         if (!(pixel > 0)) return problem = "--pixel-size must be a positive length in metres", false;
         r.options.pixelSize = pixel;
@@ -99,6 +104,7 @@ int runUnroll(const std::vector<std::string>& args)
                     {"shading", "NAME", "skydome (default), light or height"},
                     {"directions", "D", "skydome azimuths, 1..4096 (default 40)"},
                     {"raw", "", "skydome: write the exact fraction of the sky, not the 1-99 % contrast stretch"},
+                    {"smoothing", "M", "skydome: Gaussian sigma smoothing the heights first, metres (default: from the measured noise; 0: raw heights)"},
                     {"light-azimuth", "DEG", "light: clockwise from up (default 315, upper left)"},
                     {"light-elevation", "DEG", "light: above the horizon, 0..90 (default 45)"},
                     {"pixel-size", "M", "metres per pixel (default: the sampling spacing, at least 3 leaf edges of a .poct)"},
@@ -159,6 +165,8 @@ int runUnroll(const std::vector<std::string>& args)
                          {"cut_angle", u.cutAngle * 180.0 / std::numbers::pi},
                          {"shading", shadingKey},
                          {"directions", r.options.shading == dev::Shading::Skydome ? r.options.directions : 0},
+                         {"height_noise", d.heightNoise},
+                         {"smoothing", d.smoothing},
                          {"filled_fraction", u.filledFraction},
                          {"coverage", u.coverage},
                          {"sampling_spacing", u.samplingSpacing},
@@ -179,6 +187,9 @@ int runUnroll(const std::vector<std::string>& args)
                     r.input.c_str(), r.output.c_str(), d.field.width(), d.field.height(),
                     u.pixelSize * 1e3, unroll::surfaceKindName(surface.kind()), surface.referenceRadius() * 1e3,
                     d.fit.rmsResidual * 1e3, u.coverage * 100.0, u.filledFraction * 100.0);
+        if (r.options.shading == dev::Shading::Skydome)
+            std::printf("height noise %.3f mm; skydome on heights smoothed by a Gaussian of %.3f mm%s\n", d.heightNoise * 1e3,
+                        d.smoothing * 1e3, d.smoothing > 0 ? "" : " (none: raw heights)");
         std::printf("read %.2f s, fit %.2f s, unroll %.2f s, %s shading %.2f s, total %.2f s; map in %s\n",
                     d.timings.load, d.timings.fit, u.seconds, shadingKey, d.timings.shading, seconds,
                     sidecar.c_str());

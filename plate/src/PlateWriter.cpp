@@ -129,6 +129,9 @@ Status writeSvg(const PlateContent& plate, const fs::path& output)
 
 /** Writes @p pixels (@p spec's size, channels and format) as TIFF or PNG by @p output's extension, through a
  *  partial file renamed at the end. */
+/** The TIFF DateTime of every image written: the PDF's fixed date, so that the same plate gives the same bytes. */
+constexpr const char* ReproducibleDateTime = "2000:01:01 00:00:00";
+
 Status writeImageFile(const OIIO::ImageSpec& spec, const void* pixels, const fs::path& output)
 {
     const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
@@ -175,6 +178,7 @@ Status writeRaster(const PlateContent& plate, const fs::path& output, PlateForma
     spec.attribute("YResolution", float(plate.spec.dpi));
     spec.attribute("ResolutionUnit", "in");
     spec.attribute("Software", "Stylos");
+    spec.attribute("DateTime", ReproducibleDateTime); // else OpenImageIO stamps the second it writes
     if (format == PlateFormat::Tiff) spec.attribute("compression", "zip");
     std::vector<std::uint8_t> buffer(std::size_t(size.width()) * std::size_t(size.height()) * std::size_t(channels) *
                                      (sixteen ? 2u : 1u));
@@ -224,6 +228,7 @@ Status writePanelImage(const core::plate::PanelImage& image, const fs::path& out
     const bool sixteen = bits == 16;
     OIIO::ImageSpec spec(image.width, image.height, image.channels, sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
     spec.attribute("Software", "Stylos");
+    spec.attribute("DateTime", ReproducibleDateTime);
     spec.attribute("stylos:pixel_size_m", float(image.pixelSizeM));
     if (*format == PlateFormat::Tiff) spec.attribute("compression", "zip");
     std::vector<std::uint8_t> bytes;

@@ -408,11 +408,14 @@ void DeveloppeeViewTest::dockShowsTheFitOrTheError()
     done.fit.inlierFraction = 0.98;
     done.unroll.pixelSize = PixelSize;
     done.timings.total = 1.5;
+    done.heightNoise = 0.00014;
+    done.smoothing = 0.0008;
     dock.showResult(done);
     QVERIFY(dock.view()->hasDeveloppee());
     QCOMPARE(dock.view()->fragmentId(), FragmentId);
     QCOMPARE(dock.statusText(), QStringLiteral("drum.poct: Cylinder, radius 500.0 mm, RMS 0.42 mm, 98 % inliers; "
-                                               "%1 × 40 pixels of 10.00 mm; 1.5 s").arg(m_fixture->map.width()));
+                                               "%1 × 40 pixels of 10.00 mm; 1.5 s; noise 0.14 mm smoothed by 0.80 mm")
+                                    .arg(m_fixture->map.width()));
 }
 
 STYLOS_WIDGET_TEST_MAIN(DeveloppeeViewTest)

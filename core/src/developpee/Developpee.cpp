@@ -4,6 +4,7 @@
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/shading/ContrastStretch.h"
+#include "stylos/core/shading/HeightNoise.h"
 #include "stylos/core/shading/SkydomeShading.h"
 #include "stylos/core/util/SubProgress.h"
 
@@ -11,6 +12,7 @@
 #include <cmath>
 #include <functional>
 #include <numbers>
+#include <optional>
 #include <utility>
 
 namespace stylos::core::developpee {
@@ -115,13 +117,14 @@ Result<Developpee> develop(const cloud::PointCloud& cloud, const DeveloppeeOptio
 
     const auto shadingStart = Clock::now();
     SubProgress shadeStep(progress, split.unroll, split.shade);
-    auto shaded = shadeField(unrolled->field, options, &shadeStep);
+    ShadingReport shadingReport;
+    auto shaded = shadeField(unrolled->field, options, &shadeStep, &shadingReport);
     if (!shaded) return shaded.error();
     timings.shading = secondsSince(shadingStart);
     timings.total = secondsSince(start);
     if (progress) progress->update(1.0);
     return Developpee{std::move(unrolled->field), std::move(shaded).value(), std::move(unrolled->map), *fit,
-                      unrolled->report, timings};
+                      unrolled->report, timings, shadingReport.heightNoise, shadingReport.smoothing};
 }
 
 } // namespace
@@ -142,21 +145,34 @@ Status DeveloppeeOptions::check(const std::string& source) const
     if (axis && (!axis->point.allFinite() || !axis->direction.allFinite() || axis->direction.norm() < 1e-12))
         return invalid("the axis needs a finite point and a non-zero direction");
     if (radius && !(std::isfinite(*radius) && *radius > 0.0)) return invalid("the unrolling radius must be a positive length in metres");
+    if (smoothing && !(std::isfinite(*smoothing) && *smoothing >= 0.0))
+        return invalid("the skydome smoothing must be a length of 0 or more metres");
     return {};
 }
 
 Result<shading::ShadedImage> shadeField(const shading::HeightField& field, const DeveloppeeOptions& options,
-                                        ProgressSink* progress)
+                                        ProgressSink* progress, ShadingReport* report)
 {
+    if (report) *report = {};
     switch (options.shading) {
     case Shading::Height: return shading::shadeHeight(field, options.height);
     case Shading::Light: return shading::shadeLight(field, options.light);
     case Shading::Skydome: break;
     }
+    // Scanner noise read as relief is salt and pepper: the horizon sweeps smoothed heights (HeightNoise.h).
+    const double noise = shading::estimateHeightNoise(field);
+    const double sigma = options.smoothing.value_or(shading::noiseSmoothingSigma(noise, field.pixelSize()));
+    if (report) *report = {noise, sigma};
+    std::optional<shading::HeightField> smoothed;
+    if (sigma > 0.0) {
+        auto s = shading::smoothHeights(field, sigma, options.threads);
+        if (!s) return s.error();
+        smoothed = std::move(s).value();
+    }
     shading::SkydomeOptions sky;
     sky.directions = options.directions;
     sky.threads = options.threads;
-    auto shaded = shading::shadeSkydome(field, sky, progress);
+    auto shaded = shading::shadeSkydome(smoothed ? *smoothed : field, sky, progress);
     if (shaded && options.stretch) {
         if (auto range = shading::stretchContrast(*shaded); !range) return range.error();
     }

@@ -51,6 +51,8 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
     result.fit = made->developpee.fit;
     result.unroll = made->developpee.unroll;
     result.timings = made->developpee.timings;
+    result.heightNoise = made->developpee.heightNoise;
+    result.smoothing = made->developpee.smoothing;
     result.heights = std::make_shared<const core::shading::HeightField>(std::move(made->developpee.field));
     result.shaded = std::make_shared<const core::shading::ShadedImage>(std::move(made->developpee.shaded));
     result.map = std::move(made->developpee.map);

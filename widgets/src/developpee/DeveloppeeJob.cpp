@@ -84,6 +84,8 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
     result.fit = made->fit;
     result.unroll = made->unroll;
     result.timings = made->timings;
+    result.heightNoise = made->heightNoise;
+    result.smoothing = made->smoothing;
     const double imageSeconds = secondsSince(imageStart);
     result.timings.shading += imageSeconds;
     result.timings.total += imageSeconds;

@@ -31,7 +31,8 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
     : QWidget(parent), m_view(new DeveloppeeView(this)), m_surfaceLabel(new QLabel(this)),
       m_surface(new QComboBox(this)), m_shadingLabel(new QLabel(this)), m_shading(new QComboBox(this)),
       m_directionsLabel(new QLabel(this)), m_directions(new QSpinBox(this)), m_pixelLabel(new QLabel(this)),
-      m_pixelSize(new QDoubleSpinBox(this)), m_useAxis(new QCheckBox(this)), m_fit(new QToolButton(this)),
+      m_pixelSize(new QDoubleSpinBox(this)), m_smooth(new QCheckBox(this)), m_smoothing(new QDoubleSpinBox(this)),
+      m_useAxis(new QCheckBox(this)), m_fit(new QToolButton(this)),
       m_compute(new QPushButton(this)), m_status(new QLabel(this))
 {
     setObjectName(QStringLiteral("DeveloppeePanel"));
@@ -39,6 +40,8 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
     m_shading->setObjectName(QStringLiteral("developpeeShading"));
     m_directions->setObjectName(QStringLiteral("developpeeDirections"));
     m_pixelSize->setObjectName(QStringLiteral("developpeePixelSize"));
+    m_smooth->setObjectName(QStringLiteral("developpeeSmooth"));
+    m_smoothing->setObjectName(QStringLiteral("developpeeSmoothing"));
     m_useAxis->setObjectName(QStringLiteral("developpeeUseAxis"));
     m_fit->setObjectName(QStringLiteral("developpeeFit"));
     m_compute->setObjectName(QStringLiteral("developpeeCompute"));
@@ -50,6 +53,9 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
     m_pixelSize->setRange(0.0, 1000.0);
     m_pixelSize->setDecimals(2);
     m_pixelSize->setSingleStep(0.1);
+    m_smoothing->setRange(0.0, 20.0);
+    m_smoothing->setDecimals(2);
+    m_smoothing->setSingleStep(0.1);
     m_status->setWordWrap(true);
     m_status->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_useAxis->setChecked(true);
@@ -65,12 +71,14 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
     bar->addWidget(m_directions, 1, 1);
     bar->addWidget(m_pixelLabel, 1, 2);
     bar->addWidget(m_pixelSize, 1, 3);
+    bar->addWidget(m_smooth, 2, 0);
+    bar->addWidget(m_smoothing, 2, 1);
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_useAxis);
     buttons->addStretch(1);
     buttons->addWidget(m_fit);
     buttons->addWidget(m_compute);
-    bar->addLayout(buttons, 2, 0, 1, 4);
+    bar->addLayout(buttons, 2, 2, 1, 2);
     bar->setColumnStretch(1, 1);
     bar->setColumnStretch(3, 1);
 
@@ -82,6 +90,7 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
 
     setSettings(DeveloppeeSettings{});
     connect(m_shading, &QComboBox::currentIndexChanged, this, &DeveloppeePanel::updateEnabled);
+    connect(m_smooth, &QCheckBox::toggled, this, &DeveloppeePanel::updateEnabled);
     connect(m_fit, &QToolButton::clicked, m_view, &DeveloppeeView::fitToWindow);
     connect(m_compute, &QPushButton::clicked, this, [this] {
         if (m_fragmentId != 0 && !m_busy) Q_EMIT computeRequested(settings());
@@ -97,6 +106,8 @@ DeveloppeeSettings DeveloppeePanel::settings() const
     s.shading = static_cast<DeveloppeeShading>(m_shading->currentData().toInt());
     s.directions = m_directions->value();
     s.pixelSize = m_pixelSize->value() * 1e-3;
+    s.smooth = m_smooth->isChecked();
+    s.smoothing = m_smoothing->value() * 1e-3;
     s.axis.reset();
     s.radius.reset();
     if (m_axisGuide && m_useAxis->isChecked()) s.axis = m_axisGuide;
@@ -112,6 +123,8 @@ void DeveloppeePanel::setSettings(const DeveloppeeSettings& settings)
     m_shading->setCurrentIndex(m_shading->findData(static_cast<int>(settings.shading)));
     m_directions->setValue(settings.directions);
     m_pixelSize->setValue(settings.pixelSize * 1e3);
+    m_smooth->setChecked(settings.smooth);
+    m_smoothing->setValue(settings.smoothing * 1e3);
     updateEnabled();
 }
 
@@ -163,12 +176,18 @@ QString DeveloppeePanel::fitSummary(const DeveloppeeResult& result)
     if (!result.ok()) return result.error;
     const QLocale locale;
     const core::unroll::Surface& surface = result.fit.surface;
-    return tr("%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s")
+    QString summary = tr("%1: %2, radius %3 mm, RMS %4 mm, %5 % inliers; %6 × %7 pixels of %8 mm; %9 s")
         .arg(QFileInfo(result.octreePath).fileName(), DeveloppeeSettings::surfaceName(surface.kind()),
              locale.toString(surface.referenceRadius() * 1e3, 'f', 1), locale.toString(result.fit.rmsResidual * 1e3, 'f', 2),
              locale.toString(result.fit.inlierFraction * 100.0, 'f', 0), locale.toString(result.image.width()),
              locale.toString(result.image.height()), locale.toString(result.unroll.pixelSize * 1e3, 'f', 2),
              locale.toString(result.timings.total, 'f', 1));
+    if (result.settings.shading != DeveloppeeShading::Skydome) return summary;
+    return summary + QStringLiteral("; ") +
+           (result.smoothing > 0.0
+                ? tr("noise %1 mm smoothed by %2 mm").arg(locale.toString(result.heightNoise * 1e3, 'f', 2),
+                                                          locale.toString(result.smoothing * 1e3, 'f', 2))
+                : tr("noise %1 mm, raw heights").arg(locale.toString(result.heightNoise * 1e3, 'f', 2)));
 }
 
 void DeveloppeePanel::retranslateUi()
@@ -188,6 +207,13 @@ void DeveloppeePanel::retranslateUi()
     m_pixelSize->setSuffix(tr(" mm"));
     m_pixelSize->setSpecialValueText(tr("Automatic"));
     m_pixelSize->setToolTip(tr("Side of a pixel; Automatic uses the octree's leaf size"));
+    m_smooth->setText(tr("Smooth noise"));
+    m_smooth->setToolTip(tr("Skydome: smooth the scanner's noise out of the heights before the horizon search, so "
+                            "that flat, open surfaces read evenly instead of as salt and pepper. Off: the raw heights."));
+    m_smoothing->setSuffix(tr(" mm"));
+    m_smoothing->setSpecialValueText(tr("Automatic"));
+    m_smoothing->setToolTip(tr("Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on "
+                               "the heights. The status line says what was used."));
     m_useAxis->setText(tr("Use the axis guide"));
     m_useAxis->setToolTip(tr("Fit only the radius about the fragment's axis guide (needed for a fragment)"));
     m_fit->setText(tr("Fit"));
@@ -206,8 +232,10 @@ void DeveloppeePanel::changeEvent(QEvent* event)
 
 void DeveloppeePanel::updateEnabled()
 {
-    m_directions->setEnabled(static_cast<DeveloppeeShading>(m_shading->currentData().toInt()) ==
-                             DeveloppeeShading::Skydome);
+    const bool skydome = static_cast<DeveloppeeShading>(m_shading->currentData().toInt()) == DeveloppeeShading::Skydome;
+    m_directions->setEnabled(skydome);
+    m_smooth->setEnabled(skydome);
+    m_smoothing->setEnabled(skydome && m_smooth->isChecked());
     m_compute->setEnabled(m_fragmentId != 0 && !m_busy);
 }
 

@@ -32,6 +32,8 @@ QString DeveloppeeSettings::problem() const
     if (axis && (!finite(axis->point) || !finite(axis->direction) || axis->direction.norm() < 1e-12))
         return tr("the axis needs a finite point and a non-zero direction");
     if (radius && !(std::isfinite(*radius) && *radius > 0.0)) return tr("the unrolling radius must be a positive length");
+    if (!std::isfinite(smoothing) || smoothing < 0.0)
+        return tr("the smoothing must be a positive length, or 0 for automatic");
     return {};
 }
 
@@ -73,6 +75,8 @@ core::developpee::DeveloppeeOptions DeveloppeeSettings::options() const
     o.light = light;
     o.stretch = stretch;
     if (pixelSize > 0.0) o.pixelSize = pixelSize;
+    if (!smooth) o.smoothing = 0.0;
+    else if (smoothing > 0.0) o.smoothing = smoothing;
     return o;
 }
 
@@ -86,6 +90,8 @@ void DeveloppeeSettings::save(QSettings& settings) const
     settings.setValue(QStringLiteral("lightElevation"), light.elevation);
     settings.setValue(QStringLiteral("stretch"), stretch);
     settings.setValue(QStringLiteral("pixelSize"), pixelSize);
+    settings.setValue(QStringLiteral("smooth"), smooth);
+    settings.setValue(QStringLiteral("smoothing"), smoothing);
     settings.endGroup();
 }
 
@@ -101,10 +107,13 @@ DeveloppeeSettings DeveloppeeSettings::load(QSettings& settings)
     s.light.elevation = settings.value(QStringLiteral("lightElevation"), s.light.elevation).toDouble();
     s.stretch = settings.value(QStringLiteral("stretch"), s.stretch).toBool();
     s.pixelSize = settings.value(QStringLiteral("pixelSize"), s.pixelSize).toDouble();
+    s.smooth = settings.value(QStringLiteral("smooth"), s.smooth).toBool();
+    s.smoothing = settings.value(QStringLiteral("smoothing"), s.smoothing).toDouble();
     settings.endGroup();
     const DeveloppeeSettings defaults;
     if (s.directions < MinDirections || s.directions > MaxDirections) s.directions = defaults.directions;
     if (!std::isfinite(s.pixelSize) || s.pixelSize < 0.0) s.pixelSize = defaults.pixelSize;
+    if (!std::isfinite(s.smoothing) || s.smoothing < 0.0) s.smoothing = defaults.smoothing;
     if (!s.problem().isEmpty()) s.light = defaults.light;
     return s;
 }
@@ -114,7 +123,8 @@ bool DeveloppeeSettings::operator==(const DeveloppeeSettings& o) const
     return surface == o.surface && shading == o.shading && directions == o.directions &&
            light.azimuth == o.light.azimuth && light.elevation == o.light.elevation &&
            light.verticalExaggeration == o.light.verticalExaggeration && stretch == o.stretch &&
-           pixelSize == o.pixelSize && sameAxis(axis, o.axis) && radius == o.radius;
+           pixelSize == o.pixelSize && smooth == o.smooth && smoothing == o.smoothing && sameAxis(axis, o.axis) &&
+           radius == o.radius;
 }
 
 } // namespace stylos::widgets

@@ -54,6 +54,10 @@ struct DeveloppeeOptions {
     Shading shading = Shading::Skydome;
     int directions = 40;                     ///< skydome azimuths, [kMinDirections, kMaxDirections]
     bool stretch = true;                     ///< skydome: stretch 1–99 % to [0, 1] (false: the exact Ω / 2π)
+    /** Skydome: the Gaussian σ (metres) that smooths the heights before the horizon sweep, so that scanner noise
+     *  does not read as relief (shading/HeightNoise.h); default: from the noise measured on the field
+     *  (noiseSmoothingSigma); 0: the raw heights. The field kept in the result stays raw. */
+    std::optional<double> smoothing;
     shading::LightShadingOptions light;      ///< light: azimuth, elevation (radians)
     shading::HeightShadingOptions height;    ///< height: the percentiles
     /** Metres per pixel; default: the unroller's rule (the sampling spacing, at least three leaf edges of a
@@ -88,6 +92,8 @@ struct Developpee {
     unroll::FitReport fit;
     unroll::UnrollReport unroll;  ///< pixel size, cut, sampling spacing, coverage, counts
     DeveloppeeTimings timings;
+    double heightNoise = 0.0;     ///< σ of the height noise measured on the field, metres (skydome only; else 0)
+    double smoothing = 0.0;       ///< the Gaussian σ the skydome's heights were smoothed with, metres (0: none)
 };
 
 /** @brief Runs the whole chain on the file @p input (see the file comment). */
@@ -98,8 +104,15 @@ Result<Developpee> computeDeveloppee(const std::filesystem::path& input, const D
 Result<Developpee> computeDeveloppee(const cloud::PointCloud& cloud, const DeveloppeeOptions& options = {},
                                      ProgressSink* progress = nullptr);
 
-/** @brief Shades @p field as @p options say (the skydome stretched when asked). */
+/** @brief What shadeField() measured and applied (skydome only; zeros for the other shadings). */
+struct ShadingReport {
+    double heightNoise = 0.0;     ///< metres
+    double smoothing = 0.0;       ///< the Gaussian σ used, metres
+};
+
+/** @brief Shades @p field as @p options say (the skydome on smoothed heights and stretched when asked);
+ *         @p report, when given, receives the noise measured and the smoothing used. */
 Result<shading::ShadedImage> shadeField(const shading::HeightField& field, const DeveloppeeOptions& options,
-                                        ProgressSink* progress = nullptr);
+                                        ProgressSink* progress = nullptr, ShadingReport* report = nullptr);
 
 } // namespace stylos::core::developpee

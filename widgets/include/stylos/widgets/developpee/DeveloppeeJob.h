@@ -60,6 +60,8 @@ struct DeveloppeeResult {
      *  overlay); null when the source is not a `.poct` or for an assembly's développée. */
     std::shared_ptr<const core::annotation::PixelLeafIndex> leafIndex;
     DeveloppeeTimings timings;
+    double heightNoise = 0.0;     ///< skydome: σ of the height noise measured, metres
+    double smoothing = 0.0;       ///< skydome: the Gaussian σ the heights were smoothed with, metres (0: raw)
     /** Empty on success; a translated message naming the file and the reason otherwise. */
     QString error;
     std::optional<core::ErrorCode> errorCode;

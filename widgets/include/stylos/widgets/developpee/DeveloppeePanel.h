@@ -89,6 +89,8 @@ private:
     QSpinBox* m_directions;
     QLabel* m_pixelLabel;
     QDoubleSpinBox* m_pixelSize;
+    QCheckBox* m_smooth;
+    QDoubleSpinBox* m_smoothing;
     QCheckBox* m_useAxis;
     QToolButton* m_fit;
     QPushButton* m_compute;

@@ -36,6 +36,8 @@ public:
     core::shading::LightShadingOptions light; ///< light shading: azimuth, elevation (radians)
     bool stretch = true;          ///< skydome: stretch the 1–99 % range to [0, 1] (false: the exact Ω / 2π)
     double pixelSize = 0.0;       ///< metres; 0 = automatic (the core's rule: the sampling spacing, ≥ 3 leaf edges)
+    bool smooth = true;           ///< skydome: smooth the scanner's noise out of the heights first (false: raw heights)
+    double smoothing = 0.0;       ///< with smooth: the Gaussian σ, metres; 0 = automatic (from the measured noise)
     /** Given axis in the octree's frame (unit direction not required: normalised by the job). */
     std::optional<core::unroll::Axis> axis;
     /** With the axis: the unrolling radius (metres), the leading radius of the drum's guides, so that a fragment and
