@@ -15,6 +15,7 @@
 #include <nlohmann/json.hpp>
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cstdio>
@@ -33,6 +34,26 @@ std::uint64_t peakRssBytes()
     getrusage(RUSAGE_SELF, &usage);
     return static_cast<std::uint64_t>(usage.ru_maxrss) * 1024;
 }
+
+/** What this process holds now, bytes (/proc/self/statm's resident pages); 0 when unknown. Before a build it is
+ *  the fixed part of every peak: the shared libraries' pages (OpenImageIO, Qt and what they load) and their
+ *  static data, about 126 MiB on Debian 12. */
+std::uint64_t residentBytes()
+{
+    std::FILE* statm = std::fopen("/proc/self/statm", "r");
+    if (!statm) return 0;
+    unsigned long long size = 0, resident = 0;
+    const bool read = std::fscanf(statm, "%llu %llu", &size, &resident) == 2;
+    std::fclose(statm);
+    const long page = sysconf(_SC_PAGESIZE);
+    return read && page > 0 ? resident * static_cast<std::uint64_t>(page) : 0;
+}
+
+/** Besides the construction structure and the baseline: the reader's batches, the normal tables, the writer's
+ *  buffers and (for a file without normals) the estimator's working set within its own budget. */
+constexpr std::uint64_t WorkingReserve = std::uint64_t(64) << 20;
+
+std::string mebibytes(std::uint64_t bytes) { return std::to_string((bytes + (1u << 19)) >> 20) + " MiB"; }
 
 /** The build's options from the command line; false (with @p problem set) on a usage error. */
 bool parseBuildOptions(CommandLine& cl, oct::BuildOptions& options, std::string& problem)
@@ -96,16 +117,17 @@ bool parseSynthetic(CommandLine& cl, core::synth::SyntheticStreamOptions& stream
 }
 
 void printSummary(const std::string& input, const std::string& output, const oct::BuildReport& r,
-                  std::uint64_t peakRss)
+                  std::uint64_t peakRss, std::uint64_t baseline)
 {
     const double cells = static_cast<double>(std::max<std::uint64_t>(r.cells, 1));
     std::printf("built %s from %s: %llu points -> %llu cells (%llu leaves), depth %d, %s, %.3f s\n",
                 output.c_str(), input.c_str(), static_cast<unsigned long long>(r.points),
                 static_cast<unsigned long long>(r.cells), static_cast<unsigned long long>(r.leaves), r.depth,
                 oct::buildMethodName(r.method), r.seconds);
-    std::printf("construction %.1f MiB (%.2f bytes/cell), file %.1f MiB (%.2f bytes/cell), peak RSS %.1f MiB\n",
+    std::printf("construction %.1f MiB (%.2f bytes/cell), file %.1f MiB (%.2f bytes/cell), peak RSS %.1f MiB "
+                "(%.1f MiB held before the build)\n",
                 r.constructionBytes / 1048576.0, r.constructionBytes / cells, r.fileBytes / 1048576.0,
-                r.fileBytes / cells, peakRss / 1048576.0);
+                r.fileBytes / cells, peakRss / 1048576.0, baseline / 1048576.0);
     if (r.skippedPoints > 0)
         std::printf("skipped %llu points with NaN or infinite coordinates\n",
                     static_cast<unsigned long long>(r.skippedPoints));
@@ -120,7 +142,7 @@ int runBuild(const std::vector<std::string>& args)
                    withFrameOptions({{"output", "OUT.poct", "the packed octree to write", "o"},
                     {"depth", "L", "leaf level, 1..21 (default 12; a cell is the root box / 2^L)"},
                     {"method", "NAME", "optimal (one pass per level, least memory; default) or streaming (one pass)"},
-                    {"memory-limit", "MiB", "stop (writing nothing) if the construction structure would exceed this"},
+                    {"memory-limit", "MiB", "stop (writing nothing) if the process would exceed this: what it holds at start + 64 MiB of buffers + the construction structure"},
                     {"normal-code", "NAME", "octahedral16 (default) or paper15"},
                     {"threads", "N", "worker threads (default 2)"},
                     {"columns", "LAYOUT", "column layout of a text input, e.g. x,y,z,nx,ny,nz"},
@@ -159,6 +181,19 @@ int runBuild(const std::vector<std::string>& args)
     if (!parseBuildOptions(cl, options, problem) || (synthetic && !parseSynthetic(cl, stream, problem)))
         return usageError(cl, problem);
 
+    // --memory-limit bounds the whole process: what it already holds and the buffers come off the octree's share.
+    const std::uint64_t limit = options.memoryLimit, baseline = residentBytes();
+    if (limit > 0) {
+        if (limit < baseline + WorkingReserve + (std::uint64_t(1) << 20)) {
+            std::cerr << "stylos-cli: --memory-limit " << mebibytes(limit) << " is below what a build needs besides its "
+                      << "octree: " << mebibytes(baseline) << " this process already holds (its libraries and their data) "
+                      << "and " << mebibytes(WorkingReserve) << " of buffers; give at least "
+                      << mebibytes(baseline + WorkingReserve + (std::uint64_t(2) << 20)) << "\n";
+            return ExitFailure;
+        }
+        options.memoryLimit = limit - baseline - WorkingReserve;
+    }
+
     const std::string input = synthetic ? "synthetic-drum" : cl.positionals()[0];
     ConsoleProgress progress("building " + *output);
     auto build = [&]() -> core::Result<oct::BuildReport> {
@@ -170,7 +205,11 @@ int runBuild(const std::vector<std::string>& args)
     };
     const auto report = build();
     if (!report) {
-        std::cerr << "stylos-cli: " << report.error().message << "\n";
+        std::cerr << "stylos-cli: " << report.error().message;
+        if (report.error().code == core::ErrorCode::OutOfBudget && limit > 0)
+            std::cerr << " (of the " << mebibytes(limit) << " given, " << mebibytes(baseline)
+                      << " are this process's libraries and their data, " << mebibytes(WorkingReserve) << " its buffers)";
+        std::cerr << "\n";
         return ExitFailure;
     }
     const oct::BuildReport& r = report.value();
@@ -191,11 +230,12 @@ int runBuild(const std::vector<std::string>& args)
                          {"passes", r.passes},
                          {"normals_estimated", r.normalsEstimated},
                          {"cells_per_level", r.cellsPerLevel},
-                         {"peak_rss_bytes", peakRss}};
+                         {"peak_rss_bytes", peakRss},
+                         {"baseline_rss_bytes", baseline}};
         if (synthetic) j["synthetic"] = {{"points", stream.points}, {"seed", stream.seed}, {"ordered", !stream.shuffled}};
         std::cout << j.dump() << "\n";
     } else {
-        printSummary(input, *output, r, peakRss);
+        printSummary(input, *output, r, peakRss, baseline);
     }
     return ExitOk;
 }

@@ -147,10 +147,35 @@ TEST(CliBuild, MemoryLimitTooSmallFailsAndLeavesNothing)
         EXPECT_EQ(std::count(run.err.begin(), run.err.end(), '\n'), 1) << run.err;
         EXPECT_EQ(entriesIn(dir.path()), 0u) << method;
     }
-    // The same build fits in 64 MiB.
-    const auto fits = runCli({"build", "--synthetic-drum", "150000", "-o", out, "--depth", "11", "--memory-limit", "64", "--json"});
+    // The limit bounds the whole process: below what it holds at start plus its buffers, the build is refused
+    // naming both.
+    const auto below = runCli({"build", "--synthetic-drum", "150000", "-o", out, "--depth", "11", "--memory-limit", "64"});
+    EXPECT_EQ(below.exitCode, 1);
+    EXPECT_NE(below.err.find("--memory-limit 64 MiB is below what a build needs besides its octree: "), std::string::npos)
+        << below.err;
+    EXPECT_NE(below.err.find("this process already holds (its libraries and their data) and 64 MiB of buffers; give at least"),
+              std::string::npos)
+        << below.err;
+    EXPECT_EQ(entriesIn(dir.path()), 0u);
+    // With room for the octree (its ~4 MiB) above the baseline and the buffers, it fits, and the whole process
+    // stays within the limit given.
+    const auto measured = runCli({"build", "--synthetic-drum", "150000", "-o", out, "--depth", "11", "--json"});
+    ASSERT_EQ(measured.exitCode, 0) << measured.err;
+    const auto baseline = nlohmann::json::parse(measured.out)["baseline_rss_bytes"].get<std::uint64_t>();
+    EXPECT_GT(baseline, 1u << 20);
+    const std::uint64_t limitMib = (baseline >> 20) + 64 + 16;
+    const auto fits = runCli({"build", "--synthetic-drum", "150000", "-o", out, "--depth", "11", "--memory-limit",
+                              std::to_string(limitMib), "--json"});
     ASSERT_EQ(fits.exitCode, 0) << fits.err;
-    EXPECT_GT(nlohmann::json::parse(fits.out)["construction_bytes"].get<std::uint64_t>(), 1u << 20);
+    const auto j = nlohmann::json::parse(fits.out);
+    EXPECT_GT(j["construction_bytes"].get<std::uint64_t>(), 1u << 20);
+    EXPECT_LE(j["peak_rss_bytes"].get<std::uint64_t>(), limitMib << 20);
+    // Room for less than the octree: refused by the builder, the message saying where the rest went.
+    const auto tight = runCli({"build", "--synthetic-drum", "150000", "-o", out, "--depth", "11", "--memory-limit",
+                               std::to_string((baseline >> 20) + 64 + 2)});
+    EXPECT_EQ(tight.exitCode, 1);
+    EXPECT_NE(tight.err.find(" are this process's libraries and their data, 64 MiB its buffers)"), std::string::npos)
+        << tight.err;
 }
 
 TEST(CliBuild, FileWithoutNormalsGetsThemEstimated)

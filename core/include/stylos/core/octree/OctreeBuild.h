@@ -20,6 +20,8 @@
  * estimates normals first (normals::estimateNormalsForFile into a temporary file).
  *
  * Memory: the construction structure counts against `memoryLimit` (cells, chunk tables and free lists);
+ * `stylos-cli build --memory-limit` passes the process's limit minus what the process holds at start and 64 MiB
+ * of buffers, so that the whole process's peak stays within what the user gave;
  * read buffers (a few batches of 16 Ki points) and the normal tables (< 2 MiB) are outside it. A build
  * that would exceed the limit stops with ErrorCode::OutOfBudget and a message giving the bytes it needed
  * and the limit ("the octree needs 812 MiB at level 12 but the memory limit (--memory-limit) is 512 MiB";
