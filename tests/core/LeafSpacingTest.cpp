@@ -80,4 +80,9 @@ TEST(LeafSpacingTest, TheBuilderStoresTheLayer)
     const std::vector<float> computed = octree::computeLeafSpacing(drum.octree->levels());
     ASSERT_EQ(layer->bytes.size(), 4 * computed.size());
     for (std::size_t i = 0; i < computed.size(); i += 97) EXPECT_EQ(drum.octree->leafSpacing(i), computed[i]);
+    // The layer the build writes (computed straight into its bytes) is the vector's, byte for byte.
+    const octree::AttributeLayer direct = octree::leafSpacingLayer(drum.octree->levels());
+    EXPECT_EQ(direct.bytes, octree::leafSpacingLayer(computed).bytes);
+    EXPECT_EQ(direct.bytes, std::vector<std::uint8_t>(layer->bytes.begin(), layer->bytes.end()));
+    EXPECT_EQ(direct.name, octree::LeafSpacingLayerName);
 }

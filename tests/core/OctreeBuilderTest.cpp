@@ -439,6 +439,18 @@ TEST(OctreeBuilder, MemoryLimitStopsTheBuildWithAMessageAndNoFile)
         BuildReport report;
         ASSERT_TRUE(buildConstructionOctree(memorySource(cloud), o, nullptr, &report).ok());
         EXPECT_LE(report.constructionBytes, o.memoryLimit);
+        // Room for the structure but not for the spacing layer written beside it (4 bytes a leaf): refused, no file.
+        const std::uint64_t leaves = report.cellsPerLevel.back();
+        o.memoryLimit = report.constructionBytes + 2 * leaves;
+        auto spacing = buildOctree(memorySource(cloud), dir / "x.poct", o);
+        ASSERT_FALSE(spacing.ok()) << buildMethodName(m);
+        EXPECT_EQ(spacing.error().code, ErrorCode::OutOfBudget);
+        EXPECT_NE(spacing.error().message.find("with its leaves' spacing layer (" + std::to_string(leaves) + " leaves × 4 bytes)"),
+                  std::string::npos)
+            << spacing.error().message;
+        o.memoryLimit = report.constructionBytes + 4 * leaves;
+        ASSERT_TRUE(buildOctree(memorySource(cloud), dir / "y.poct", o).ok()) << buildMethodName(m);
+        std::filesystem::remove(dir / "y.poct");
     }
     EXPECT_TRUE(listing(dir.path()).empty());
 }

@@ -29,14 +29,14 @@ std::vector<std::uint64_t> nextStarts(const OctreeLevels& levels, int level, con
     return next;
 }
 
-} // namespace
-
-std::vector<float> computeLeafSpacing(const OctreeLevels& levels)
+/** Calls @p run(first, last, h) for each run of leaves [first, last) that share the spacing h; false when the
+ *  octree has no leaf. */
+template <typename Run>
+bool leafSpacingRuns(const OctreeLevels& levels, Run run)
 {
     const OctreeDescription& desc = levels.description();
     const int depth = desc.depth;
-    if (desc.cellsPerLevel.empty() || desc.cellsPerLevel.back() == 0) return {};
-    const std::uint64_t leaves = desc.cellsPerLevel[static_cast<std::size_t>(depth)];
+    if (desc.cellsPerLevel.empty() || desc.cellsPerLevel.back() == 0) return false;
     const int m = std::max(0, depth - 4);
     const int fine = std::min(depth, m + 2), coarse = std::min(depth, m + 1);
     const std::uint64_t ancestors = desc.cellsPerLevel[static_cast<std::size_t>(m)];
@@ -64,17 +64,46 @@ std::vector<float> computeLeafSpacing(const OctreeLevels& levels)
     }
 
     const double coarseEdge = desc.box.cellSize(coarse), fineEdge = desc.box.cellSize(fine);
-    std::vector<float> spacing(leaves);
     for (std::uint64_t i = 0; i < ancestors; ++i) {
         const auto n = double(starts[i + 1] - starts[i]);
         const auto o2 = double(fineStarts[i + 1] - fineStarts[i]);
         const auto o1 = double(coarseStarts[i + 1] - coarseStarts[i]);
         const double area = n >= 2 * o2 ? o2 * fineEdge * fineEdge / l1[i] : o1 * coarseEdge * coarseEdge / l1[i];
         const auto h = static_cast<float>(std::sqrt(area / std::max(n, 1.0)));
-        std::fill(spacing.begin() + static_cast<std::ptrdiff_t>(starts[i]),
-                  spacing.begin() + static_cast<std::ptrdiff_t>(starts[i + 1]), h);
+        run(starts[i], starts[i + 1], h);
     }
+    return true;
+}
+
+} // namespace
+
+std::vector<float> computeLeafSpacing(const OctreeLevels& levels)
+{
+    std::vector<float> spacing;
+    const auto& cells = levels.description().cellsPerLevel;
+    if (!cells.empty()) spacing.resize(cells.back());
+    if (!leafSpacingRuns(levels, [&](std::uint64_t first, std::uint64_t last, float h) {
+            std::fill(spacing.begin() + std::ptrdiff_t(first), spacing.begin() + std::ptrdiff_t(last), h);
+        }))
+        return {};
     return spacing;
+}
+
+AttributeLayer leafSpacingLayer(const OctreeLevels& levels)
+{
+    // Straight into the layer's bytes: the build's peak holds 4 bytes a leaf for it, not 8 (a vector and its copy).
+    AttributeLayer layer;
+    layer.name = LeafSpacingLayerName;
+    layer.type = AttributeType::Float32;
+    layer.components = 1;
+    const auto& cells = levels.description().cellsPerLevel;
+    if (!cells.empty()) layer.bytes.resize(std::size_t(cells.back()) * sizeof(float));
+    std::uint8_t* bytes = layer.bytes.data();
+    if (!leafSpacingRuns(levels, [&](std::uint64_t first, std::uint64_t last, float h) {
+            for (std::uint64_t i = first; i < last; ++i) std::memcpy(bytes + i * sizeof(float), &h, sizeof(float));
+        }))
+        layer.bytes.clear();
+    return layer;
 }
 
 AttributeLayer leafSpacingLayer(const std::vector<float>& spacing)

@@ -67,7 +67,16 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
     if (progress && progress->isCancelRequested())
         return Error::at(ErrorCode::Cancelled, output.string(), "", "octree build cancelled");
     SubProgress writing(progress, 0.95, 1.0);
-    const AttributeLayer spacing = leafSpacingLayer(computeLeafSpacing(**tree));
+    // The spacing layer (4 bytes a leaf) is held beside the construction structure while the file is written:
+    // it counts against the same limit.
+    const std::uint64_t leaves = report.cellsPerLevel.empty() ? 0 : report.cellsPerLevel.back();
+    if (options.memoryLimit > 0 && report.constructionBytes + 4 * leaves > options.memoryLimit)
+        return Error::at(ErrorCode::OutOfBudget, output.string(), "",
+                         "the octree needs " + formatBytes(report.constructionBytes + 4 * leaves) +
+                             " with its leaves' spacing layer (" + std::to_string(leaves) +
+                             " leaves × 4 bytes) but the memory limit (--memory-limit) is " +
+                             formatBytes(options.memoryLimit));
+    const AttributeLayer spacing = leafSpacingLayer(**tree);
     auto written = writePoct(**tree, output, std::span<const AttributeLayer>(&spacing, 1), &writing);
     if (!written.ok()) return written.error();
     report.fileBytes = *written;

@@ -32,5 +32,8 @@ std::vector<float> computeLeafSpacing(const OctreeLevels& levels);
 
 /** @brief @p spacing as the "spacing" attribute layer (little-endian Float32). */
 AttributeLayer leafSpacingLayer(const std::vector<float>& spacing);
+/** @brief The same layer computed straight from @p levels (computeLeafSpacing's values, 4 bytes a leaf, no copy);
+ *         empty bytes when there is no leaf. */
+AttributeLayer leafSpacingLayer(const OctreeLevels& levels);
 
 } // namespace stylos::core::octree

@@ -20,8 +20,10 @@
  * estimates normals first (normals::estimateNormalsForFile into a temporary file).
  *
  * Memory: the construction structure counts against `memoryLimit` (cells, chunk tables and free lists);
- * `stylos-cli build --memory-limit` passes the process's limit minus what the process holds at start and 64 MiB
- * of buffers, so that the whole process's peak stays within what the user gave;
+ * the leaves' spacing layer (4 bytes a leaf, computed once the structure is complete and written beside it) counts
+ * too, checked before it is allocated. `stylos-cli build --memory-limit` passes the process's limit minus what the
+ * process holds at start and 64 MiB of buffers, so that the whole process's peak stays within what the user gave
+ * (measured: peak ≤ baseline + 64 MiB + 7 B × cells + 4 B × leaves);
  * read buffers (a few batches of 16 Ki points) and the normal tables (< 2 MiB) are outside it. A build
  * that would exceed the limit stops with ErrorCode::OutOfBudget and a message giving the bytes it needed
  * and the limit ("the octree needs 812 MiB at level 12 but the memory limit (--memory-limit) is 512 MiB";
