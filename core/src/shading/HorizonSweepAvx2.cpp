@@ -19,8 +19,9 @@ namespace {
 /** Lanes per register, half a group. */
 constexpr int kWidth = 8;
 /**
- * Levels of each stack cached in registers. AVX2 has 16 registers, not AVX-512's 32: 4 levels
- * (12 registers) measured fastest, the rest of the loop's values being reloaded from L1.
+ * Levels of each stack cached in registers. AVX2 has 16 registers, not AVX-512's 32: with 4 levels
+ * (12 registers) the compiler keeps part of the cache on the stack (L1); 3 levels measured ~10 %
+ * slower (more refills), 5 and 6 within the noise (docs/benchmarks.md).
  */
 constexpr int kLevels = 4;
 
@@ -96,112 +97,132 @@ STYLOS_AVX2_INLINE void push(Cache& cache, __m256 valid, __m256 height, __m256 s
     cache.count = _mm256_min_epi32(_mm256_sub_epi32(cache.count, _mm256_castps_si256(valid)), levels);
 }
 
+/** What every step of a walk reads: the walk, its hull list and its vector constants. */
+struct Walk {
+    const GroupWalk& walk;
+    std::uint16_t* links;
+    HullList list;
+    __m256 along, across, nan;
+    __m256i firstKeys, laneBits;
+    bool sine;
+
+    STYLOS_AVX2_INLINE Walk(const GroupWalk& w, HullStacks& stacks)
+        : walk(w), links(stacks.links.data()), list(w, stacks), along(_mm256_set1_ps(w.along)),
+          across(_mm256_set1_ps(w.across)), nan(_mm256_set1_ps(std::numeric_limits<float>::quiet_NaN())),
+          firstKeys(_mm256_set1_epi32(list.firstKey)), laneBits(_mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128)),
+          sine(w.value == HorizonValue::Sine)
+    {
+    }
+
+    STYLOS_AVX2_INLINE Cache startCache() const
+    {
+        Cache cache;
+        for (int i = 0; i < kLevels; ++i) {
+            cache.height[i] = _mm256_set1_ps(-std::numeric_limits<float>::infinity());
+            cache.slope[i] = nan;
+            cache.key[i] = _mm256_set1_epi32(list.sentinel);
+        }
+        cache.below = cache.key[0];
+        cache.count = _mm256_set1_epi32(1);
+        return cache;
+    }
+};
+
 /**
- * Lanes first … first + 7 of the group: the AVX-512 kernel's walk (HorizonSweepAvx512.cpp) with 8
- * lanes, masks as vectors, and the masked loads and stores only where some lane of the step lies
- * outside the grid.
+ * Step @p s of lanes first … first + 7 of the group: the AVX-512 kernel's step (HorizonSweepAvx512.cpp)
+ * with 8 lanes, masks as vectors, and masked loads and stores only where a lane lies outside the grid.
  */
+STYLOS_AVX2_INLINE void walkStep(Cache& cache, const Walk& c, int s, int first)
+{
+    const GroupWalk& walk = c.walk;
+    constexpr unsigned all = (1u << kWidth) - 1u;
+    const __m256 zero = _mm256_setzero_ps();
+    const std::size_t row = std::size_t(s) * kGroupLanes + std::size_t(first);
+    float* values = walk.values + row;
+    // Lane j is element offsets[s] + first + j of the source layout; lanes outside the grid are
+    // masked, so the addresses are formed as integers (they may lie outside the arrays).
+    const std::uintptr_t offset = std::uintptr_t(walk.offsets[s] + first);
+    const unsigned inside = (unsigned(walk.inside[s]) >> first) & all;
+    __m256 h, valid;
+    if (walk.fromSource) {
+        const auto* cell = reinterpret_cast<const float*>(reinterpret_cast<std::uintptr_t>(walk.source) + offset * 4);
+        if (inside == all) {
+            h = _mm256_loadu_ps(cell);
+            valid = _mm256_cmp_ps(h, h, _CMP_ORD_Q);
+        } else {
+            const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(inside)), c.laneBits), c.laneBits);
+            h = _mm256_maskload_ps(cell, lanes);
+            valid = _mm256_and_ps(asMask(lanes), _mm256_cmp_ps(h, h, _CMP_ORD_Q));
+        }
+        h = select(c.nan, h, valid);
+        _mm256_storeu_ps(walk.heights + row, h);
+    } else {
+        h = _mm256_loadu_ps(walk.heights + row);
+        valid = _mm256_cmp_ps(h, h, _CMP_ORD_Q);
+    }
+    if (_mm256_movemask_ps(valid) == 0) {
+        if (walk.output == WalkOutput::Values) _mm256_storeu_ps(values, zero);
+        return;
+    }
+    const __m256i key = _mm256_set1_epi32(walk.reverse ? -walk.keys[s] : walk.keys[s]);
+
+    // Pop: test the top, bring the next level up, until no lane pops.
+    __m256 run = distance(_mm256_sub_epi32(key, cache.key[0]), c.along, c.across);
+    __m256 next = distance(_mm256_sub_epi32(key, cache.key[1]), c.along, c.across);
+    __m256 pop = _mm256_and_ps(
+        valid, _mm256_cmp_ps(_mm256_sub_ps(h, cache.height[0]), _mm256_mul_ps(cache.slope[0], run), _CMP_GE_OQ));
+    for (int round = 0; round < 1 || _mm256_movemask_ps(pop) != 0; ++round) {
+        popTop(cache, pop);
+        run = select(run, next, pop);
+        next = distance(_mm256_sub_epi32(key, cache.key[1]), c.along, c.across);
+        const __m256 dry = _mm256_and_ps(pop, asMask(_mm256_cmpeq_epi32(cache.count, _mm256_setzero_si256())));
+        if (const unsigned dryBits = unsigned(_mm256_movemask_ps(dry)); dryBits != 0) {
+            refill(cache, dryBits, dry, c.list, first);
+            run = distance(_mm256_sub_epi32(key, cache.key[0]), c.along, c.across);
+            next = distance(_mm256_sub_epi32(key, cache.key[1]), c.along, c.across);
+        }
+        pop = _mm256_and_ps(pop, _mm256_cmp_ps(_mm256_sub_ps(h, cache.height[0]), _mm256_mul_ps(cache.slope[0], run),
+                                               _CMP_GE_OQ));
+    }
+
+    // Level 0 is every lane's tangent: one square root and one division for the value and the slope.
+    const __m256 rise = _mm256_sub_ps(cache.height[0], h);
+    const __m256 up = _mm256_max_ps(rise, zero); // NaN → 0, as the portable kernel
+    const __m256 hyp = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(rise, rise), _mm256_mul_ps(run, run)));
+    const __m256 inverse = _mm256_div_ps(_mm256_set1_ps(1.0f), _mm256_mul_ps(hyp, run));
+    const __m256 value = c.sine ? _mm256_mul_ps(_mm256_mul_ps(up, run), inverse) : _mm256_div_ps(up, run);
+    if (walk.output == WalkOutput::Values) {
+        _mm256_storeu_ps(values, _mm256_and_ps(valid, value));
+    } else {
+        auto* cell = reinterpret_cast<float*>(reinterpret_cast<std::uintptr_t>(walk.sum) + offset * 4);
+        const __m256 total = walk.output == WalkOutput::Sum ? value : _mm256_add_ps(_mm256_loadu_ps(values), value);
+        // Every lane in the grid: those without a pixel add +0 to a sum of values ≥ +0 (same bits).
+        if (inside == all) {
+            _mm256_storeu_ps(cell, _mm256_add_ps(_mm256_loadu_ps(cell), _mm256_and_ps(valid, total)));
+        } else {
+            const __m256i lanes = _mm256_castps_si256(valid);
+            _mm256_maskstore_ps(cell, lanes, _mm256_add_ps(_mm256_maskload_ps(cell, lanes), total));
+        }
+    }
+
+    // Push: the pixel's link is its tangent's step.
+    const __m256i tangent = walk.reverse ? _mm256_sub_epi32(_mm256_setzero_si256(), cache.key[0]) : cache.key[0];
+    const __m256i link = _mm256_and_si256(_mm256_sub_epi32(tangent, c.firstKeys), _mm256_set1_epi32(0xFFFF));
+    const __m128i packed = _mm_packus_epi32(_mm256_castsi256_si128(link), _mm256_extracti128_si256(link, 1));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(c.links + row), packed);
+    const __m256 slope = _mm256_mul_ps(_mm256_mul_ps(_mm256_sub_ps(h, cache.height[0]), hyp), inverse);
+    push(cache, valid, h, slope, key);
+}
+
+/** Lanes first … first + 7 of the group, step by step. */
 STYLOS_AVX2 void walkHalf(const GroupWalk& walk, HullStacks& stacks, int first)
 {
-    const int n = walk.steps;
-    std::uint16_t* const links = stacks.links.data();
-    const bool sine = walk.value == HorizonValue::Sine, reverse = walk.reverse, fromSource = walk.fromSource;
-    const WalkOutput output = walk.output;
-    float* const heights = walk.heights;
-    const std::int32_t* const keys = walk.keys;
-    const std::int64_t* const offsets = walk.offsets;
-    const auto source = reinterpret_cast<std::uintptr_t>(walk.source);
-    const auto sum = reinterpret_cast<std::uintptr_t>(walk.sum);
-    const __m256 along = _mm256_set1_ps(walk.along), across = _mm256_set1_ps(walk.across);
-    const __m256 zero = _mm256_setzero_ps(), unit = _mm256_set1_ps(1.0f);
-    const __m256 nan = _mm256_set1_ps(std::numeric_limits<float>::quiet_NaN());
-    const HullList list(walk, stacks);
-    const __m256i firstKeys = _mm256_set1_epi32(list.firstKey), stepBits = _mm256_set1_epi32(0xFFFF);
-    const __m256i laneBits = _mm256_setr_epi32(1, 2, 4, 8, 16, 32, 64, 128);
-    constexpr unsigned all = (1u << kWidth) - 1u;
-
-    Cache cache;
-    for (int i = 0; i < kLevels; ++i) {
-        cache.height[i] = _mm256_set1_ps(-std::numeric_limits<float>::infinity());
-        cache.slope[i] = nan;
-        cache.key[i] = _mm256_set1_epi32(list.sentinel);
-    }
-    cache.below = cache.key[0];
-    cache.count = _mm256_set1_epi32(1);
-
-    for (int t = 0; t < n; ++t) {
-        const int s = reverse ? n - 1 - t : t;
-        const std::size_t row = std::size_t(s) * kGroupLanes + std::size_t(first);
-        float* values = walk.values + row;
-        // Lane j is element offsets[s] + first + j of the source layout; lanes outside the grid are
-        // masked, so the addresses are formed as integers (they may lie outside the arrays).
-        const std::uintptr_t offset = std::uintptr_t(offsets[s] + first);
-        const unsigned inside = (unsigned(walk.inside[s]) >> first) & all;
-        const __m256 insideMask = asMask(_mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(inside)), laneBits), laneBits));
+    const Walk c(walk, stacks);
+    Cache cache = c.startCache();
+    for (int t = 0; t < walk.steps; ++t) {
+        const int s = walk.reverse ? walk.steps - 1 - t : t;
         prefetchAhead(walk, s);
-        __m256 h, valid;
-        if (fromSource) {
-            const auto* cell = reinterpret_cast<const float*>(source + offset * 4);
-            h = inside == all ? _mm256_loadu_ps(cell) : _mm256_maskload_ps(cell, _mm256_castps_si256(insideMask));
-            valid = _mm256_and_ps(insideMask, _mm256_cmp_ps(h, h, _CMP_ORD_Q));
-            h = select(nan, h, valid);
-            _mm256_storeu_ps(heights + row, h);
-        } else {
-            h = _mm256_loadu_ps(heights + row);
-            valid = _mm256_cmp_ps(h, h, _CMP_ORD_Q);
-        }
-        if (_mm256_movemask_ps(valid) == 0) {
-            if (output == WalkOutput::Values) _mm256_storeu_ps(values, zero);
-            continue;
-        }
-        const __m256i key = _mm256_set1_epi32(reverse ? -keys[s] : keys[s]);
-
-        // Pop: test the top, bring the next level up, until no lane pops.
-        __m256 run = distance(_mm256_sub_epi32(key, cache.key[0]), along, across);
-        __m256 next = distance(_mm256_sub_epi32(key, cache.key[1]), along, across);
-        __m256 pop = _mm256_and_ps(
-            valid, _mm256_cmp_ps(_mm256_sub_ps(h, cache.height[0]), _mm256_mul_ps(cache.slope[0], run), _CMP_GE_OQ));
-        for (int round = 0; round < 1 || _mm256_movemask_ps(pop) != 0; ++round) {
-            popTop(cache, pop);
-            run = select(run, next, pop);
-            next = distance(_mm256_sub_epi32(key, cache.key[1]), along, across);
-            const __m256 dry = _mm256_and_ps(pop, asMask(_mm256_cmpeq_epi32(cache.count, _mm256_setzero_si256())));
-            if (const unsigned dryBits = unsigned(_mm256_movemask_ps(dry)); dryBits != 0) {
-                refill(cache, dryBits, dry, list, first);
-                run = distance(_mm256_sub_epi32(key, cache.key[0]), along, across);
-                next = distance(_mm256_sub_epi32(key, cache.key[1]), along, across);
-            }
-            pop = _mm256_and_ps(pop, _mm256_cmp_ps(_mm256_sub_ps(h, cache.height[0]),
-                                                   _mm256_mul_ps(cache.slope[0], run), _CMP_GE_OQ));
-        }
-
-        // Level 0 is every lane's tangent: one square root and one division for the value and the slope.
-        const __m256 rise = _mm256_sub_ps(cache.height[0], h);
-        const __m256 up = _mm256_max_ps(rise, zero); // NaN → 0, as the portable kernel
-        const __m256 hyp = _mm256_sqrt_ps(_mm256_add_ps(_mm256_mul_ps(rise, rise), _mm256_mul_ps(run, run)));
-        const __m256 inverse = _mm256_div_ps(unit, _mm256_mul_ps(hyp, run));
-        const __m256 value = sine ? _mm256_mul_ps(_mm256_mul_ps(up, run), inverse) : _mm256_div_ps(up, run);
-        if (output == WalkOutput::Values) {
-            _mm256_storeu_ps(values, _mm256_and_ps(valid, value));
-        } else {
-            auto* cell = reinterpret_cast<float*>(sum + offset * 4);
-            const __m256 total = output == WalkOutput::Sum ? value : _mm256_add_ps(_mm256_loadu_ps(values), value);
-            // Every lane in the grid: those without a pixel add +0 to a sum of values ≥ +0 (same bits).
-            if (inside == all) {
-                _mm256_storeu_ps(cell, _mm256_add_ps(_mm256_loadu_ps(cell), _mm256_and_ps(valid, total)));
-            } else {
-                const __m256i lanes = _mm256_castps_si256(valid);
-                _mm256_maskstore_ps(cell, lanes, _mm256_add_ps(_mm256_maskload_ps(cell, lanes), total));
-            }
-        }
-
-        // Push: the pixel's link is its tangent's step.
-        const __m256i tangent = reverse ? _mm256_sub_epi32(_mm256_setzero_si256(), cache.key[0]) : cache.key[0];
-        const __m256i link = _mm256_and_si256(_mm256_sub_epi32(tangent, firstKeys), stepBits);
-        const __m128i packed = _mm_packus_epi32(_mm256_castsi256_si128(link), _mm256_extracti128_si256(link, 1));
-        _mm_storeu_si128(reinterpret_cast<__m128i*>(links + row), packed);
-        const __m256 slope = _mm256_mul_ps(_mm256_mul_ps(_mm256_sub_ps(h, cache.height[0]), hyp), inverse);
-        push(cache, valid, h, slope, key);
+        walkStep(cache, c, s, first);
     }
 }
 
