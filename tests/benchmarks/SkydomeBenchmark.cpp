@@ -83,10 +83,11 @@ void BM_SkydomeHullSweep(benchmark::State& state)
     state.SetLabel(std::string(skydomeKernelName(kernel.value())));
     timed(state, options.directions, [&] { return shadeSkydome(field, options); });
 }
-// Auto first (the fastest of this CPU), then the three kernels side by side at 32 directions.
+// Auto first (the fastest of this CPU), then the three kernels side by side at 32 directions, on 2
+// threads and on 1.
 BENCHMARK(BM_SkydomeHullSweep)
     ->Args({32, 0, 0})->Args({40, 0, 0})->Args({16, 0, 0})->Args({32, 1, 0})
-    ->Args({32, 0, 1})->Args({32, 0, 2})->Args({32, 0, 3})->Args({32, 1, 2})
+    ->Args({32, 0, 1})->Args({32, 0, 2})->Args({32, 0, 3})->Args({32, 1, 1})->Args({32, 1, 2})->Args({32, 1, 3})
     ->ArgNames({"directions", "threads", "kernel"})
     ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
