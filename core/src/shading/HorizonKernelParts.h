@@ -97,55 +97,55 @@ STYLOS_KERNEL_INLINE float edgeSlope(float lower, float height, float run)
     return num * hyp * inverse;
 }
 
+/** Up to kRefill vertices of one lane's hull from the list, top first (refillLane). */
+struct LaneRefill {
+    float heights[kRefill], slopes[kRefill];
+    std::int32_t keys[kRefill];
+    std::int32_t below; ///< the key of the vertex under the last one taken
+    int count;          ///< the levels taken, 1 … kRefill (those past the sentinel are copies of it)
+};
+
 /**
- * Refills the register cache of the lanes @p dry (bit j: lane first + j of the group), which have
- * popped every cached vertex: up to kRefill vertices under the cache come up from the list, each
- * slope computed again exactly as at its push. Per lane j, the levels go to heights / slopes / keys
- * [level · width + j] (levels past the sentinel are filled with it); below[j] (in: the key under the
- * cache, out: the key under the vertices taken) and counts[j] (the levels now held) are updated.
- * ~1 lane in 4 steps: scalar.
+ * A vector kernel's lane @p lane (of the group) has popped every vertex of its register cache: up to
+ * kRefill vertices from @p vertex (the key under the cache) down come up from the hull's linked list,
+ * each slope computed again exactly as at its push. ~1 lane in 4 steps: scalar.
  */
-STYLOS_KERNEL_INLINE void refillFromList(const HullList& list, unsigned dry, int first, int width, float* heights,
-                                         float* slopes, std::int32_t* keys, std::int32_t* below, std::int32_t* counts)
+STYLOS_KERNEL_INLINE LaneRefill refillLane(const HullList& list, std::size_t lane, std::int32_t vertex)
 {
     constexpr float lowest = -std::numeric_limits<float>::infinity();
     const float none = std::numeric_limits<float>::quiet_NaN();
-    for (unsigned bits = dry; bits != 0; bits &= bits - 1) {
-        const int j = __builtin_ctz(bits);
-        const std::size_t lane = std::size_t(first + j);
-        std::int32_t vertex = below[j];
-        int level = 0;
-        for (; level < kRefill; ++level) {
-            const int at = level * width + j;
-            keys[at] = vertex;
-            if (vertex == list.sentinel) {
-                heights[at] = lowest;
-                slopes[at] = none;
-                ++level;
-                break;
-            }
-            const std::size_t row = std::size_t((list.sign * vertex - list.firstKey) & 0xFFFF) * kGroupLanes;
-            const float height = list.heights[row + lane];
-            const unsigned link = list.links[row + lane];
-            heights[at] = height;
-            if (link >= unsigned(list.steps)) { // the first vertex: its tangent is the sentinel
-                slopes[at] = none;
-                vertex = list.sentinel;
-                continue;
-            }
-            const std::int32_t under = list.sign * list.keys[link];
-            const float lower = list.heights[std::size_t(link) * kGroupLanes + lane];
-            slopes[at] = edgeSlope(lower, height, keyDistance(vertex - under, list.along, list.across));
-            vertex = under;
+    LaneRefill taken;
+    int level = 0;
+    for (; level < kRefill; ++level) {
+        taken.keys[level] = vertex;
+        if (vertex == list.sentinel) {
+            taken.heights[level] = lowest;
+            taken.slopes[level] = none;
+            ++level;
+            break;
         }
-        below[j] = vertex;
-        counts[j] = level;
-        for (int l = level; l < kRefill; ++l) { // levels past the sentinel: never read, but defined
-            heights[l * width + j] = lowest;
-            slopes[l * width + j] = none;
-            keys[l * width + j] = list.sentinel;
+        const std::size_t row = std::size_t((list.sign * vertex - list.firstKey) & 0xFFFF) * kGroupLanes;
+        const float height = list.heights[row + lane];
+        const unsigned link = list.links[row + lane];
+        taken.heights[level] = height;
+        if (link >= unsigned(list.steps)) { // the first vertex: its tangent is the sentinel
+            taken.slopes[level] = none;
+            vertex = list.sentinel;
+            continue;
         }
+        const std::int32_t under = list.sign * list.keys[link];
+        const float lower = list.heights[std::size_t(link) * kGroupLanes + lane];
+        taken.slopes[level] = edgeSlope(lower, height, keyDistance(vertex - under, list.along, list.across));
+        vertex = under;
     }
+    taken.below = vertex;
+    taken.count = level;
+    for (int l = level; l < kRefill; ++l) { // levels past the sentinel: never read, but defined
+        taken.heights[l] = lowest;
+        taken.slopes[l] = none;
+        taken.keys[l] = list.sentinel;
+    }
+    return taken;
 }
 
 } // namespace stylos::core::shading::detail

@@ -7,7 +7,8 @@
 namespace stylos::core::shading::detail {
 
 // The lanes one after the other at each step, each with its stack level by level; the pop loop and
-// the arithmetic are those of the vector kernel (HorizonSweepAvx512.cpp), in the same order.
+// the arithmetic are those of the vector kernels (HorizonSweepAvx2.cpp, HorizonSweepAvx512.cpp), in the
+// same order.
 void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
 {
     constexpr int L = kGroupLanes;

@@ -7,7 +7,7 @@
 
 namespace stylos::core::shading::detail {
 
-/** Lines walked together by one kernel call (one AVX-512 register of floats). */
+/** Lines walked together by one kernel call (one AVX-512 register of floats, two AVX2 ones). */
 constexpr int kGroupLanes = 16;
 
 /**

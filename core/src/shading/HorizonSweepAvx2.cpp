@@ -26,14 +26,20 @@ constexpr int kWidth = 8;
 constexpr int kLevels = 4;
 
 /** Masks are vectors of 0 / all-ones lanes (AVX2 has no mask registers). */
-STYLOS_AVX2_INLINE __m256 select(__m256 no, __m256 yes, __m256 mask) { return _mm256_blendv_ps(no, yes, mask); }
+STYLOS_AVX2_INLINE __m256 select(__m256 no, __m256 yes, __m256 mask)
+{
+    return _mm256_blendv_ps(no, yes, mask);
+}
 
 STYLOS_AVX2_INLINE __m256i select(__m256i no, __m256i yes, __m256 mask)
 {
     return _mm256_castps_si256(_mm256_blendv_ps(_mm256_castsi256_ps(no), _mm256_castsi256_ps(yes), mask));
 }
 
-STYLOS_AVX2_INLINE __m256 asMask(__m256i lanes) { return _mm256_castsi256_ps(lanes); }
+STYLOS_AVX2_INLINE __m256 asMask(__m256i lanes)
+{
+    return _mm256_castsi256_ps(lanes);
+}
 
 /** Metres between pixels whose keys differ by @p delta (HorizonSweep.h). */
 STYLOS_AVX2_INLINE __m256 distance(__m256i delta, __m256 along, __m256 across)
@@ -50,21 +56,27 @@ struct Cache {
     __m256i below, count;
 };
 
-/** Lanes @p dry (bits, and the same as a mask) take up to kRefill vertices from the list. */
-STYLOS_AVX2_INLINE void refill(Cache& cache, unsigned dry, __m256 dryMask, const HullList& list, int first)
+/**
+ * Lanes @p dry take up to kRefill vertices from the list (refillLane), each value broadcast and blended
+ * into its lane: no round trip through memory, whose narrow stores a wide load cannot forward.
+ */
+STYLOS_AVX2_INLINE void refill(Cache& cache, unsigned dry, const HullList& list, int first)
 {
-    alignas(32) float heights[kRefill][kWidth], slopes[kRefill][kWidth];
-    alignas(32) std::int32_t keys[kRefill][kWidth], below[kWidth], counts[kWidth];
+    alignas(32) std::int32_t below[kWidth];
     _mm256_store_si256(reinterpret_cast<__m256i*>(below), cache.below);
-    refillFromList(list, dry, first, kWidth, heights[0], slopes[0], keys[0], below, counts);
-    const __m256i lanes = _mm256_castps_si256(dryMask);
-    for (int l = 0; l < kRefill; ++l) {
-        cache.height[l] = select(cache.height[l], _mm256_maskload_ps(heights[l], lanes), dryMask);
-        cache.slope[l] = select(cache.slope[l], _mm256_maskload_ps(slopes[l], lanes), dryMask);
-        cache.key[l] = select(cache.key[l], _mm256_maskload_epi32(keys[l], lanes), dryMask);
+    const __m256i lanes = _mm256_setr_epi32(0, 1, 2, 3, 4, 5, 6, 7);
+    for (unsigned bits = dry; bits != 0; bits &= bits - 1) {
+        const int j = __builtin_ctz(bits);
+        const LaneRefill taken = refillLane(list, std::size_t(first + j), below[j]);
+        const __m256 lane = asMask(_mm256_cmpeq_epi32(lanes, _mm256_set1_epi32(j)));
+        for (int l = 0; l < kRefill; ++l) {
+            cache.height[l] = select(cache.height[l], _mm256_set1_ps(taken.heights[l]), lane);
+            cache.slope[l] = select(cache.slope[l], _mm256_set1_ps(taken.slopes[l]), lane);
+            cache.key[l] = select(cache.key[l], _mm256_set1_epi32(taken.keys[l]), lane);
+        }
+        cache.below = select(cache.below, _mm256_set1_epi32(taken.below), lane);
+        cache.count = select(cache.count, _mm256_set1_epi32(taken.count), lane);
     }
-    cache.below = _mm256_load_si256(reinterpret_cast<const __m256i*>(below));
-    cache.count = select(cache.count, _mm256_maskload_epi32(counts, lanes), dryMask);
 }
 
 /** Lanes @p pop drop their top vertex: every level moves up one. */
@@ -150,7 +162,8 @@ STYLOS_AVX2_INLINE void walkStep(Cache& cache, const Walk& c, int s, int first)
             h = _mm256_loadu_ps(cell);
             valid = _mm256_cmp_ps(h, h, _CMP_ORD_Q);
         } else {
-            const __m256i lanes = _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(inside)), c.laneBits), c.laneBits);
+            const __m256i lanes =
+                _mm256_cmpeq_epi32(_mm256_and_si256(_mm256_set1_epi32(int(inside)), c.laneBits), c.laneBits);
             h = _mm256_maskload_ps(cell, lanes);
             valid = _mm256_and_ps(asMask(lanes), _mm256_cmp_ps(h, h, _CMP_ORD_Q));
         }
@@ -177,12 +190,12 @@ STYLOS_AVX2_INLINE void walkStep(Cache& cache, const Walk& c, int s, int first)
         next = distance(_mm256_sub_epi32(key, cache.key[1]), c.along, c.across);
         const __m256 dry = _mm256_and_ps(pop, asMask(_mm256_cmpeq_epi32(cache.count, _mm256_setzero_si256())));
         if (const unsigned dryBits = unsigned(_mm256_movemask_ps(dry)); dryBits != 0) {
-            refill(cache, dryBits, dry, c.list, first);
+            refill(cache, dryBits, c.list, first);
             run = distance(_mm256_sub_epi32(key, cache.key[0]), c.along, c.across);
             next = distance(_mm256_sub_epi32(key, cache.key[1]), c.along, c.across);
         }
-        pop = _mm256_and_ps(pop, _mm256_cmp_ps(_mm256_sub_ps(h, cache.height[0]), _mm256_mul_ps(cache.slope[0], run),
-                                               _CMP_GE_OQ));
+        pop = _mm256_and_ps(
+            pop, _mm256_cmp_ps(_mm256_sub_ps(h, cache.height[0]), _mm256_mul_ps(cache.slope[0], run), _CMP_GE_OQ));
     }
 
     // Level 0 is every lane's tangent: one square root and one division for the value and the slope.

@@ -45,14 +45,24 @@ struct Cache {
 
 /**
  * Lanes @p dry have popped every cached vertex: up to kRefill vertices under the cache come up from the
- * list (refillFromList). Inline: a call would make the compiler keep the whole cache in memory.
+ * list (refillLane). Inline: a call would make the compiler keep the whole cache in memory.
  */
 STYLOS_AVX512_INLINE void refill(Cache& cache, __mmask16 dry, const HullList& list)
 {
     alignas(64) float heights[kRefill][kGroupLanes], slopes[kRefill][kGroupLanes];
     alignas(64) std::int32_t keys[kRefill][kGroupLanes], below[kGroupLanes], counts[kGroupLanes];
     _mm512_store_si512(below, cache.below);
-    refillFromList(list, dry, 0, kGroupLanes, heights[0], slopes[0], keys[0], below, counts);
+    for (unsigned bits = dry; bits != 0; bits &= bits - 1) {
+        const int j = __builtin_ctz(bits);
+        const LaneRefill taken = refillLane(list, std::size_t(j), below[j]);
+        for (int l = 0; l < kRefill; ++l) {
+            heights[l][j] = taken.heights[l];
+            slopes[l][j] = taken.slopes[l];
+            keys[l][j] = taken.keys[l];
+        }
+        below[j] = taken.below;
+        counts[j] = taken.count;
+    }
     for (int l = 0; l < kRefill; ++l) {
         cache.height[l] = _mm512_mask_load_ps(cache.height[l], dry, heights[l]);
         cache.slope[l] = _mm512_mask_load_ps(cache.slope[l], dry, slopes[l]);

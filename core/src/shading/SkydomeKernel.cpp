@@ -27,10 +27,14 @@ bool cpuHas(SkydomeKernel kernel)
 std::string_view skydomeKernelName(SkydomeKernel kernel)
 {
     switch (kernel) {
-    case SkydomeKernel::Auto: return "auto";
-    case SkydomeKernel::Portable: return "portable";
-    case SkydomeKernel::Avx2: return "avx2";
-    case SkydomeKernel::Avx512: return "avx512";
+    case SkydomeKernel::Auto:
+        return "auto";
+    case SkydomeKernel::Portable:
+        return "portable";
+    case SkydomeKernel::Avx2:
+        return "avx2";
+    case SkydomeKernel::Avx512:
+        return "avx512";
     }
     return "auto";
 }
@@ -43,7 +47,10 @@ Result<SkydomeKernel> parseSkydomeKernel(std::string_view name)
                  "skydome: kernel '" + std::string(name) + "' is not one of auto, portable, avx2, avx512"};
 }
 
-bool skydomeKernelAvailable(SkydomeKernel kernel) { return cpuHas(kernel); }
+bool skydomeKernelAvailable(SkydomeKernel kernel)
+{
+    return cpuHas(kernel);
+}
 
 Result<SkydomeKernel> resolveSkydomeKernel(SkydomeKernel kernel)
 {
@@ -51,15 +58,15 @@ Result<SkydomeKernel> resolveSkydomeKernel(SkydomeKernel kernel)
         if (const char* named = std::getenv(kEnvironment); named != nullptr && *named != '\0') {
             auto parsed = parseSkydomeKernel(named);
             if (!parsed.ok())
-                return Error{ErrorCode::InvalidArgument, "skydome: " + std::string(kEnvironment) + "=" + named
-                                                             + " is not one of auto, portable, avx2, avx512"};
+                return Error{ErrorCode::InvalidArgument, "skydome: " + std::string(kEnvironment) + "=" + named +
+                                                             " is not one of auto, portable, avx2, avx512"};
             kernel = *parsed;
         }
     }
     if (kernel == SkydomeKernel::Auto) {
         return cpuHas(SkydomeKernel::Avx512) ? SkydomeKernel::Avx512
                : cpuHas(SkydomeKernel::Avx2) ? SkydomeKernel::Avx2
-                                              : SkydomeKernel::Portable;
+                                             : SkydomeKernel::Portable;
     }
     if (!cpuHas(kernel))
         return Error{ErrorCode::InvalidArgument,
@@ -74,10 +81,13 @@ GroupKernel groupKernel(SkydomeKernel kernel)
     assert(kernel != SkydomeKernel::Auto && cpuHas(kernel) && "detail::groupKernel(): kernel not resolved");
     switch (kernel) {
 #if STYLOS_HORIZON_X86_KERNELS
-    case SkydomeKernel::Avx2: return walkGroupAvx2;
-    case SkydomeKernel::Avx512: return walkGroupAvx512;
+    case SkydomeKernel::Avx2:
+        return walkGroupAvx2;
+    case SkydomeKernel::Avx512:
+        return walkGroupAvx512;
 #endif
-    default: return walkGroupScalar;
+    default:
+        return walkGroupScalar;
     }
 }
 
