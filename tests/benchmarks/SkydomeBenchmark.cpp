@@ -1,6 +1,7 @@
 // Skydome speed on a 4096 × 4096 fractal terrain (0.5 mm pixels, 2 m side): the exact hull sweep in
 // ns per pixel·direction (issue target: ≤ 5 ns on 2 cores) against the RVT-like radius-limited ray
-// march (16 directions, 10 px), and how far apart their images are.
+// march (16 directions, 10 px), and how far apart their images are; the portable, AVX2 and AVX-512
+// kernels side by side (BM_SkydomeHullSweep's third argument).
 // stylos_benchmarks --benchmark_filter=Skydome
 #include "stylos/core/shading/SkyViewFactor.h"
 #include "stylos/core/shading/SkydomeShading.h"
@@ -12,6 +13,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdlib>
+#include <string>
 #include <thread>
 #include <vector>
 
@@ -65,15 +67,28 @@ void timed(benchmark::State& state, int directions, Run&& run)
     reportRate(state, seconds, directions);
 }
 
-/** Args: directions, threads (0 = hardware threads). */
+/**
+ * Args: directions, threads (0 = hardware threads), kernel (SkydomeKernel: 0 auto, 1 portable, 2 AVX2,
+ * 3 AVX-512; a kernel this CPU lacks is skipped). The label names the kernel that ran.
+ */
 void BM_SkydomeHullSweep(benchmark::State& state)
 {
     const auto& field = terrain();
-    const SkydomeOptions options{int(state.range(0)), unsigned(state.range(1))};
+    const SkydomeOptions options{int(state.range(0)), unsigned(state.range(1)), SkydomeKernel(state.range(2))};
+    const auto kernel = resolveSkydomeKernel(options.kernel);
+    if (!kernel.ok()) {
+        state.SkipWithError(kernel.error().message.c_str());
+        return;
+    }
+    state.SetLabel(std::string(skydomeKernelName(kernel.value())));
     timed(state, options.directions, [&] { return shadeSkydome(field, options); });
 }
+// Auto first (the fastest of this CPU), then the three kernels side by side at 32 directions, on 2
+// threads and on 1.
 BENCHMARK(BM_SkydomeHullSweep)
-    ->Args({32, 0})->Args({40, 0})->Args({16, 0})->Args({32, 1})
+    ->Args({32, 0, 0})->Args({40, 0, 0})->Args({16, 0, 0})->Args({32, 1, 0})
+    ->Args({32, 0, 1})->Args({32, 0, 2})->Args({32, 0, 3})->Args({32, 1, 1})->Args({32, 1, 2})->Args({32, 1, 3})
+    ->ArgNames({"directions", "threads", "kernel"})
     ->Unit(benchmark::kMillisecond)->UseRealTime()->Iterations(1);
 
 /** Args: directions, radius (px), threads. */

@@ -1,8 +1,10 @@
 // stylos-cli unroll: a generated drum gives a développée whose JSON, image header and sidecar agree;
 // a given axis is kept; usage errors exit 2; a cloud that is no surface of revolution and an image
-// too large exit 1 naming the problem and leave no file.
+// too large exit 1 naming the problem and leave no file; STYLOS_SKYDOME_KERNEL forces each kernel the
+// CPU runs (the same image) and a bad name exits 1.
 #include "CliRunner.h"
 #include "TestSupport.h"
+#include "stylos/core/shading/SkydomeKernel.h"
 
 #include <gtest/gtest.h>
 
@@ -10,12 +12,13 @@
 #include <cmath>
 #include <nlohmann/json.hpp>
 
-#include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <numbers>
 
 using stylos::test::runCli;
 using stylos::test::TempDir;
+using namespace stylos::core::shading;
 namespace fs = std::filesystem;
 
 namespace {
@@ -170,4 +173,29 @@ TEST(CliUnroll, PoctInputUsesTheSamplingSpacingAndAtLeastThreeLeafEdges)
         if (std::string(depth) == "8") EXPECT_DOUBLE_EQ(j["pixel_size"].get<double>(), 3.0 * leafEdge);
         else EXPECT_NEAR(j["pixel_size"].get<double>(), 0.01, 0.002); // the scan's 10 mm, not the 0.6 mm leaves
     }
+}
+
+TEST(CliUnroll, SkydomeKernelForcedByTheEnvironmentGivesTheSameImageAndABadNameExitsOne)
+{
+    TempDir dir;
+    const auto scan = generate(dir, "drum", "0.008");
+    std::vector<std::vector<char>> images;
+    for (const auto kernel : {SkydomeKernel::Portable, SkydomeKernel::Avx2, SkydomeKernel::Avx512}) {
+        if (!skydomeKernelAvailable(kernel)) continue;
+        const std::string name(skydomeKernelName(kernel));
+        setenv("STYLOS_SKYDOME_KERNEL", name.c_str(), 1);
+        const auto out = dir / (name + ".png");
+        const auto run = runCli({"unroll", scan, "-o", out.string(), "--directions", "8", "--raw"});
+        unsetenv("STYLOS_SKYDOME_KERNEL");
+        ASSERT_EQ(run.exitCode, 0) << name << ": " << run.err;
+        images.push_back(stylos::test::readBytes(out));
+    }
+    for (const auto& image : images) EXPECT_EQ(image, images.front()); // same bits, so the same file
+
+    setenv("STYLOS_SKYDOME_KERNEL", "sse9", 1);
+    const auto bad = runCli({"unroll", scan, "-o", (dir / "bad.png").string(), "--directions", "8"});
+    unsetenv("STYLOS_SKYDOME_KERNEL");
+    EXPECT_EQ(bad.exitCode, 1) << bad.err;
+    EXPECT_NE(bad.err.find("STYLOS_SKYDOME_KERNEL=sse9"), std::string::npos) << bad.err;
+    EXPECT_FALSE(fs::exists(dir / "bad.png"));
 }

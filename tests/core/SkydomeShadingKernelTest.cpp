@@ -1,15 +1,19 @@
 // Skydome kernels: deep hulls (long concave profiles broken by spikes, which empty the register caches
-// of the vector kernel) against a brute-force scan of each line; the portable and the vector kernels
-// give the same bits (on a CPU without AVX-512 both runs take the portable one); opposite azimuths
-// walk the same lines; an odd number of directions (no pairs of opposite walks).
+// of the vector kernels) against a brute-force scan of each line, for each kernel the CPU runs (the
+// others skip); the AVX2 and AVX-512 kernels give the portable kernel's bits; how the kernel is chosen
+// (Auto, STYLOS_SKYDOME_KERNEL, a kernel the CPU lacks); opposite azimuths walk the same lines; an odd
+// number of directions (no pairs of opposite walks).
 #include "stylos/core/shading/DirectionRaster.h"
 #include "stylos/core/shading/SkydomeShading.h"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <numbers>
 #include <random>
+#include <string>
+#include <utility>
 #include <vector>
 
 using namespace stylos::core;
@@ -67,11 +71,21 @@ std::vector<double> bruteForceAngles(const HeightField& field, double azimuth)
 
 } // namespace
 
-TEST(ShadingSkydomeKernel, DeepHullsEqualBruteForce)
+/** Each kernel of this build, run where the CPU has it and skipped cleanly where it does not. */
+class ShadingSkydomeEachKernel : public testing::TestWithParam<SkydomeKernel> {
+protected:
+    void SetUp() override
+    {
+        if (!skydomeKernelAvailable(GetParam()))
+            GTEST_SKIP() << "this CPU (or build) does not run the " << skydomeKernelName(GetParam()) << " kernel";
+    }
+};
+
+TEST_P(ShadingSkydomeEachKernel, DeepHullsEqualBruteForce)
 {
     const auto field = domeWithSpikes(160, 120, 5);
     for (const double azimuth : {0.0, pi / 2, 1.5 * pi, pi / 4, 2.0, 3.6, 5.9}) {
-        const auto angles = horizonAngles(field, azimuth, 2);
+        const auto angles = horizonAngles(field, azimuth, 2, nullptr, GetParam());
         ASSERT_TRUE(angles.ok());
         const auto expected = bruteForceAngles(field, azimuth);
         for (std::size_t i = 0; i < expected.size(); ++i)
@@ -79,17 +93,85 @@ TEST(ShadingSkydomeKernel, DeepHullsEqualBruteForce)
     }
 }
 
-TEST(ShadingSkydomeKernel, PortableAndVectorKernelsGiveTheSameBits)
+TEST_P(ShadingSkydomeEachKernel, GivesThePortableKernelsBits)
 {
-    const auto field = domeWithSpikes(200, 150, 9);
-    for (const int directions : {16, 5}) {
-        SkydomeOptions vector{directions, 2, true}, portable{directions, 1, false};
-        const auto a = shadeSkydome(field, vector);
-        const auto b = shadeSkydome(field, portable);
+    // Widths that leave a last band of 1–15 lines (partial halves and registers), D odd and even.
+    for (const auto& [width, height] : {std::pair{200, 150}, std::pair{77, 53}, std::pair{9, 130}}) {
+        const auto field = domeWithSpikes(width, height, 9);
+        for (const int directions : {16, 5}) {
+            const SkydomeOptions vector{directions, 2, GetParam()}, portable{directions, 1, SkydomeKernel::Portable};
+            const auto a = shadeSkydome(field, vector);
+            const auto b = shadeSkydome(field, portable);
+            ASSERT_TRUE(a.ok() && b.ok());
+            EXPECT_EQ(a->values, b->values) << width << " x " << height << ", " << directions << " directions";
+            EXPECT_EQ(a->coverage, b->coverage);
+        }
+        // The slopes of one azimuth (HorizonValue::Slope, a single forward walk) as well.
+        const auto a = horizonAngles(field, 2.0, 2, nullptr, GetParam());
+        const auto b = horizonAngles(field, 2.0, 1, nullptr, SkydomeKernel::Portable);
         ASSERT_TRUE(a.ok() && b.ok());
-        EXPECT_EQ(a->values, b->values) << directions << " directions";
-        EXPECT_EQ(a->coverage, b->coverage);
+        EXPECT_EQ(a.value(), b.value()) << width << " x " << height;
     }
+}
+
+INSTANTIATE_TEST_SUITE_P(Kernels, ShadingSkydomeEachKernel,
+                         testing::Values(SkydomeKernel::Portable, SkydomeKernel::Avx2, SkydomeKernel::Avx512),
+                         [](const auto& info) { return std::string(skydomeKernelName(info.param)); });
+
+TEST(ShadingSkydomeKernel, AutoTakesTheFastestKernelOfTheCpu)
+{
+    const auto resolved = resolveSkydomeKernel(SkydomeKernel::Auto);
+    ASSERT_TRUE(resolved.ok());
+    const SkydomeKernel expected = skydomeKernelAvailable(SkydomeKernel::Avx512) ? SkydomeKernel::Avx512
+                                   : skydomeKernelAvailable(SkydomeKernel::Avx2) ? SkydomeKernel::Avx2
+                                                                                 : SkydomeKernel::Portable;
+    EXPECT_EQ(resolved.value(), expected);
+    EXPECT_EQ(resolveSkydomeKernel(SkydomeKernel::Portable).value(), SkydomeKernel::Portable);
+}
+
+TEST(ShadingSkydomeKernel, NamesRoundTripAndUnknownNamesAreRefused)
+{
+    for (const auto kernel : {SkydomeKernel::Auto, SkydomeKernel::Portable, SkydomeKernel::Avx2, SkydomeKernel::Avx512})
+        EXPECT_EQ(parseSkydomeKernel(skydomeKernelName(kernel)).value(), kernel);
+    const auto unknown = parseSkydomeKernel("sse9");
+    ASSERT_FALSE(unknown.ok());
+    EXPECT_EQ(unknown.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(unknown.error().message.find("'sse9'"), std::string::npos) << unknown.error().message;
+}
+
+TEST(ShadingSkydomeKernel, EnvironmentVariableForcesTheAutoKernel)
+{
+    const auto field = domeWithSpikes(40, 30, 3);
+    ASSERT_EQ(setenv("STYLOS_SKYDOME_KERNEL", "portable", 1), 0);
+    const auto forced = resolveSkydomeKernel(SkydomeKernel::Auto);
+    const auto explicitKernel = resolveSkydomeKernel(SkydomeKernel::Portable);
+    ASSERT_EQ(setenv("STYLOS_SKYDOME_KERNEL", "fastest", 1), 0);
+    const auto bad = shadeSkydome(field, {8, 1});
+    const auto badAngles = horizonAngles(field, 1.0, 1);
+    const auto unaffected = shadeSkydome(field, {8, 1, SkydomeKernel::Portable}); // only Auto reads it
+    unsetenv("STYLOS_SKYDOME_KERNEL");
+    ASSERT_TRUE(forced.ok());
+    EXPECT_EQ(forced.value(), SkydomeKernel::Portable);
+    EXPECT_EQ(explicitKernel.value(), SkydomeKernel::Portable);
+    ASSERT_FALSE(bad.ok());
+    EXPECT_EQ(bad.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(bad.error().message.find("STYLOS_SKYDOME_KERNEL=fastest"), std::string::npos) << bad.error().message;
+    ASSERT_FALSE(badAngles.ok());
+    EXPECT_TRUE(unaffected.ok());
+}
+
+TEST(ShadingSkydomeKernel, AKernelTheCpuLacksIsRefused)
+{
+    int refused = 0;
+    for (const auto kernel : {SkydomeKernel::Avx2, SkydomeKernel::Avx512}) {
+        if (skydomeKernelAvailable(kernel)) continue;
+        ++refused;
+        const auto image = shadeSkydome(domeWithSpikes(20, 20, 1), {4, 1, kernel});
+        ASSERT_FALSE(image.ok());
+        EXPECT_EQ(image.error().code, ErrorCode::InvalidArgument);
+        EXPECT_NE(image.error().message.find(std::string(skydomeKernelName(kernel))), std::string::npos);
+    }
+    if (refused == 0) GTEST_SKIP() << "this CPU runs every kernel: nothing to refuse";
 }
 
 TEST(ShadingSkydomeKernel, OddDirectionCountEqualsBruteForce)

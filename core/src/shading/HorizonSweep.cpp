@@ -1,65 +1,14 @@
-#include "HorizonSweep.h"
+#include "HorizonKernelParts.h"
 
 #include <cmath>
 #include <cstdint>
 #include <limits>
 
-// Same bits as the vector kernel: no contraction of a · b + c into a fused multiply-add.
-#if defined(__clang__)
-#pragma clang fp contract(off)
-#elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
-#endif
-
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
-#define STYLOS_HORIZON_AVX512 1
-#endif
-
 namespace stylos::core::shading::detail {
 
-#if STYLOS_HORIZON_AVX512
-void walkGroupAvx512(const GroupWalk& walk, HullStacks& stacks); // HorizonSweepAvx512.cpp
-#endif
-
-namespace {
-
-/** Metres between two pixels of a lane whose keys differ by @p delta ≥ 0 (HorizonSweep.h). */
-inline float distance(std::int32_t delta, float along, float across)
-{
-    const float steps = float(delta & 0xFFFF), moves = float(delta >> 16);
-    return steps * along + moves * across;
-}
-
-/** Steps ahead for the prefetches of the source and of the sum. */
-constexpr int kAhead = 8;
-
-/** Prefetches the cache lines of elements [e − 15, e] of @p base (an address, never dereferenced). */
-inline void prefetchLine(const float* base, std::int64_t e)
-{
-#if defined(__GNUC__) || defined(__clang__)
-    const auto address = reinterpret_cast<std::uintptr_t>(base) + std::uintptr_t(e) * sizeof(float);
-    __builtin_prefetch(reinterpret_cast<const void*>(address));
-    __builtin_prefetch(reinterpret_cast<const void*>(address - 60));
-#else
-    (void)base;
-    (void)e;
-#endif
-}
-
-bool cpuHasAvx512()
-{
-#if STYLOS_HORIZON_AVX512
-    static const bool has = __builtin_cpu_supports("avx512f");
-    return has;
-#else
-    return false;
-#endif
-}
-
-} // namespace
-
 // The lanes one after the other at each step, each with its stack level by level; the pop loop and
-// the arithmetic are those of the vector kernel (HorizonSweepAvx512.cpp), in the same order.
+// the arithmetic are those of the vector kernels (HorizonSweepAvx2.cpp, HorizonSweepAvx512.cpp), in the
+// same order.
 void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
 {
     constexpr int L = kGroupLanes;
@@ -83,12 +32,7 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
         float* heights = walk.heights + std::size_t(s) * L;
         float* values = walk.values + std::size_t(s) * L;
         const std::int64_t offset = walk.offsets[s];
-        const int ahead = walk.reverse ? s - kAhead : s + kAhead;
-        if (ahead >= 0 && ahead < n) { // each step is a new row: prefetch the rows kAhead steps ahead
-            const std::int64_t next = walk.offsets[ahead] + (L - 1); // lanes 0 … 15: one or two lines
-            if (walk.fromSource) prefetchLine(walk.source, next);
-            if (walk.output != WalkOutput::Values) prefetchLine(walk.sum, next);
-        }
+        prefetchAhead(walk, s);
         if (walk.fromSource) {
             const unsigned inside = walk.inside[s];
             for (int j = 0; j < L; ++j) {
@@ -109,7 +53,7 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
             float run;
             for (;;) {
                 v = std::size_t(c) * L + std::size_t(j);
-                run = distance(key - stackK[v], walk.along, walk.across);
+                run = keyDistance(key - stackK[v], walk.along, walk.across);
                 if (!(h - stackH[v] >= stackS[v] * run)) break; // NaN slopes never pop
                 --c;
             }
@@ -132,15 +76,6 @@ void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks)
             tops[j] = c;
         }
     }
-}
-
-GroupKernel groupKernel(bool simd)
-{
-#if STYLOS_HORIZON_AVX512
-    if (simd && cpuHasAvx512()) return walkGroupAvx512;
-#endif
-    (void)simd;
-    return walkGroupScalar;
 }
 
 } // namespace stylos::core::shading::detail

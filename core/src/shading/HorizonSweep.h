@@ -1,11 +1,13 @@
 #pragma once
 // Internal to the skydome: the linear-time horizon of every pixel of 16 rasterised lines walked together.
+#include "stylos/core/shading/SkydomeKernel.h"
+
 #include <cstdint>
 #include <vector>
 
 namespace stylos::core::shading::detail {
 
-/** Lines walked together by one kernel call (one AVX-512 register of floats). */
+/** Lines walked together by one kernel call (one AVX-512 register of floats, two AVX2 ones). */
 constexpr int kGroupLanes = 16;
 
 /**
@@ -96,7 +98,15 @@ using GroupKernel = void (*)(const GroupWalk& walk, HullStacks& stacks);
 /** Portable kernel: the lanes one after the other at each step. */
 void walkGroupScalar(const GroupWalk& walk, HullStacks& stacks);
 
-/** The best kernel this CPU runs (AVX-512 where available), or the portable one when !simd. */
-GroupKernel groupKernel(bool simd);
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define STYLOS_HORIZON_X86_KERNELS 1
+/** AVX2 kernel (HorizonSweepAvx2.cpp): only on a CPU with AVX2. */
+void walkGroupAvx2(const GroupWalk& walk, HullStacks& stacks);
+/** AVX-512 kernel (HorizonSweepAvx512.cpp): only on a CPU with AVX-512F. */
+void walkGroupAvx512(const GroupWalk& walk, HullStacks& stacks);
+#endif
+
+/** The kernel for @p kernel, resolved first (resolveSkydomeKernel: not Auto, and available). */
+GroupKernel groupKernel(SkydomeKernel kernel);
 
 } // namespace stylos::core::shading::detail

@@ -6,7 +6,7 @@
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
 
-#include "HorizonSweep.h"
+#include "HorizonKernelParts.h"
 
 #if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
 
@@ -14,12 +14,6 @@
 
 #include <cmath>
 #include <limits>
-
-#if defined(__clang__)
-#pragma clang fp contract(off)
-#elif defined(__GNUC__)
-#pragma GCC optimize("fp-contract=off")
-#endif
 
 #define STYLOS_AVX512 __attribute__((target("avx512f")))
 #define STYLOS_AVX512_INLINE __attribute__((target("avx512f"), always_inline)) inline
@@ -29,10 +23,6 @@ namespace {
 
 /** Levels of each stack cached in registers (6: ~0.25 refills per step of 16 pixels, 3 levels each). */
 constexpr int kLevels = 6;
-/** Vertices a dry cache takes from the list at once. */
-constexpr int kRefill = 3;
-/** Steps ahead for the prefetches of the source and of the sum (a step takes ~50 ns). */
-constexpr int kAhead = 8;
 
 /** Metres between pixels whose keys differ by @p delta (HorizonSweep.h). */
 STYLOS_AVX512_INLINE __m512 distance(__m512i delta, __m512 along, __m512 across)
@@ -53,65 +43,25 @@ struct Cache {
     __m512i below, count;
 };
 
-/** Constants of a walk that the cache refill needs. */
-struct Walk {
-    const float* heights;
-    const std::uint16_t* links;
-    const std::int32_t* keys;
-    int steps;
-    std::int32_t sign, firstKey, sentinel; ///< key · sign − firstKey is a step (& 0xFFFF); the sentinel's key
-    float along, across;
-};
-
 /**
  * Lanes @p dry have popped every cached vertex: up to kRefill vertices under the cache come up from the
- * list, each slope computed again exactly as at its push. ~1 lane in 4 steps: scalar, but inline (a
- * call would make the compiler keep the whole cache in memory).
+ * list (refillLane). Inline: a call would make the compiler keep the whole cache in memory.
  */
-STYLOS_AVX512_INLINE void refill(Cache& cache, __mmask16 dry, const Walk& walk)
+STYLOS_AVX512_INLINE void refill(Cache& cache, __mmask16 dry, const HullList& list)
 {
     alignas(64) float heights[kRefill][kGroupLanes], slopes[kRefill][kGroupLanes];
     alignas(64) std::int32_t keys[kRefill][kGroupLanes], below[kGroupLanes], counts[kGroupLanes];
     _mm512_store_si512(below, cache.below);
     for (unsigned bits = dry; bits != 0; bits &= bits - 1) {
         const int j = __builtin_ctz(bits);
-        std::int32_t vertex = below[j];
-        int level = 0;
-        for (; level < kRefill; ++level) {
-            keys[level][j] = vertex;
-            if (vertex == walk.sentinel) {
-                heights[level][j] = -std::numeric_limits<float>::infinity();
-                slopes[level][j] = std::numeric_limits<float>::quiet_NaN();
-                ++level;
-                break;
-            }
-            const std::size_t at =
-                std::size_t((walk.sign * vertex - walk.firstKey) & 0xFFFF) * kGroupLanes + std::size_t(j);
-            const float height = walk.heights[at];
-            const unsigned link = walk.links[at];
-            heights[level][j] = height;
-            if (link >= unsigned(walk.steps)) { // the first vertex: its tangent is the sentinel
-                slopes[level][j] = std::numeric_limits<float>::quiet_NaN();
-                vertex = walk.sentinel;
-                continue;
-            }
-            const std::int32_t under = walk.sign * walk.keys[link];
-            const float lower = walk.heights[std::size_t(link) * kGroupLanes + std::size_t(j)];
-            const std::int32_t delta = vertex - under;
-            const float run = float(delta & 0xFFFF) * walk.along + float(delta >> 16) * walk.across;
-            const float rise = lower - height, num = height - lower;
-            const float hyp = std::sqrt(rise * rise + run * run);
-            const float inverse = 1.0f / (hyp * run);
-            slopes[level][j] = num * hyp * inverse;
-            vertex = under;
+        const LaneRefill taken = refillLane(list, std::size_t(j), below[j]);
+        for (int l = 0; l < kRefill; ++l) {
+            heights[l][j] = taken.heights[l];
+            slopes[l][j] = taken.slopes[l];
+            keys[l][j] = taken.keys[l];
         }
-        below[j] = vertex;
-        counts[j] = level;
-        for (int l = level; l < kRefill; ++l) { // levels past the sentinel: never read, but defined
-            heights[l][j] = -std::numeric_limits<float>::infinity();
-            slopes[l][j] = std::numeric_limits<float>::quiet_NaN();
-            keys[l][j] = walk.sentinel;
-        }
+        below[j] = taken.below;
+        counts[j] = taken.count;
     }
     for (int l = 0; l < kRefill; ++l) {
         cache.height[l] = _mm512_mask_load_ps(cache.height[l], dry, heights[l]);
@@ -173,29 +123,18 @@ STYLOS_AVX512 void walkCached(const GroupWalk& walk, HullStacks& stacks)
     const std::int64_t* const offsets = walk.offsets;
     const auto source = reinterpret_cast<std::uintptr_t>(walk.source);
     const auto sum = reinterpret_cast<std::uintptr_t>(walk.sum);
-    const int ahead = reverse ? -kAhead : kAhead; // prefetch distance, in steps of the walk
     const __m512 along = _mm512_set1_ps(walk.along), across = _mm512_set1_ps(walk.across);
     const __m512 zero = _mm512_setzero_ps(), unit = _mm512_set1_ps(1.0f);
     const __m512 nan = _mm512_set1_ps(std::numeric_limits<float>::quiet_NaN());
-    // A vertex's key gives its step: (sign · key − keys[0]) & 0xFFFF; the sentinel's gives 65535
-    // (forward) or n (reverse), never a step.
-    const Walk constants{heights,
-                         links,
-                         keys,
-                         n,
-                         reverse ? -1 : 1,
-                         keys[0],
-                         (reverse ? -keys[n - 1] : keys[0]) - 1,
-                         walk.along,
-                         walk.across};
-    const __m512i firstKeys = _mm512_set1_epi32(constants.firstKey), stepBits = _mm512_set1_epi32(0xFFFF);
+    const HullList list(walk, stacks);
+    const __m512i firstKeys = _mm512_set1_epi32(list.firstKey), stepBits = _mm512_set1_epi32(0xFFFF);
 
     // Every level starts as the sentinel: height −∞, slope NaN (never popped), one level held.
     Cache cache;
     for (int i = 0; i < kLevels; ++i) {
         cache.height[i] = _mm512_set1_ps(-std::numeric_limits<float>::infinity());
         cache.slope[i] = nan;
-        cache.key[i] = _mm512_set1_epi32(constants.sentinel);
+        cache.key[i] = _mm512_set1_epi32(list.sentinel);
     }
     cache.below = cache.key[0];
     cache.count = _mm512_set1_epi32(1);
@@ -207,17 +146,7 @@ STYLOS_AVX512 void walkCached(const GroupWalk& walk, HullStacks& stacks)
         // Lane j of step s is element offsets[s] + j of the source layout; the lanes outside the grid
         // are masked, so the addresses are formed as integers (they may lie outside the arrays).
         const std::uintptr_t offset = std::uintptr_t(offsets[s]);
-        if (unsigned(s + ahead) < unsigned(n)) {
-            const std::uintptr_t next = std::uintptr_t(offsets[s + ahead]) * 4;
-            if (fromSource) {
-                _mm_prefetch(reinterpret_cast<const char*>(source + next), _MM_HINT_T0);
-                _mm_prefetch(reinterpret_cast<const char*>(source + next + 60), _MM_HINT_T0);
-            }
-            if (output != WalkOutput::Values) {
-                _mm_prefetch(reinterpret_cast<const char*>(sum + next), _MM_HINT_T0);
-                _mm_prefetch(reinterpret_cast<const char*>(sum + next + 60), _MM_HINT_T0);
-            }
-        }
+        prefetchAhead(walk, s);
         __m512 h;
         __mmask16 valid;
         if (fromSource) {
@@ -248,7 +177,7 @@ STYLOS_AVX512 void walkCached(const GroupWalk& walk, HullStacks& stacks)
             next = distance(_mm512_sub_epi32(key, cache.key[1]), along, across);
             const __mmask16 dry = _mm512_mask_cmpeq_epi32_mask(pop, cache.count, _mm512_setzero_si512());
             if (dry != 0) {
-                refill(cache, dry, constants);
+                refill(cache, dry, list);
                 run = distance(_mm512_sub_epi32(key, cache.key[0]), along, across);
                 next = distance(_mm512_sub_epi32(key, cache.key[1]), along, across);
             }

@@ -67,7 +67,9 @@ Result<ShadedImage> shadeSkydome(const HeightField& field, const SkydomeOptions&
         return Error{ErrorCode::InvalidArgument,
                      "skydome: " + std::to_string(options.directions) + " directions is not in [1, 4096]"};
     const unsigned threads = detail::resolveThreads(options.threads);
-    const auto kernel = detail::groupKernel(options.simd);
+    const auto resolved = resolveSkydomeKernel(options.kernel);
+    if (!resolved.ok()) return resolved.error();
+    const auto kernel = detail::groupKernel(resolved.value());
     // With D even, direction k and its opposite k + D/2 walk the same lines (one read, two walks).
     const int D = options.directions;
     const int walked = D % 2 == 0 ? D / 2 : D;
@@ -121,10 +123,12 @@ Result<ShadedImage> shadeSkydome(const HeightField& field, const SkydomeOptions&
 }
 
 Result<std::vector<float>> horizonAngles(const HeightField& field, double azimuth, unsigned threads,
-                                         ProgressSink* progress)
+                                         ProgressSink* progress, SkydomeKernel kernelAsked)
 {
     if (!std::isfinite(azimuth))
         return Error{ErrorCode::InvalidArgument, "skydome: the azimuth is not a finite number"};
+    const auto kernel = resolveSkydomeKernel(kernelAsked);
+    if (!kernel.ok()) return kernel.error();
     threads = detail::resolveThreads(threads);
     const DirectionRaster raster(field.width(), field.height(), azimuth);
     const bool columnMajor = raster.columnMajor();
@@ -142,7 +146,7 @@ Result<std::vector<float>> horizonAngles(const HeightField& field, double azimut
         });
     };
     if (!sweepDirection(source, field.pixelSize(), raster, false, nullptr, detail::HorizonValue::Slope,
-                        detail::groupKernel(true), threads, bands, progress, sink))
+                        detail::groupKernel(kernel.value()), threads, bands, progress, sink))
         return Error{ErrorCode::Cancelled, "skydome: cancelled"};
     if (progress) progress->update(1.0);
     return angles;
