@@ -28,13 +28,14 @@ ply_slice() { # SRC N OUT
                    /^end_header/ { print; exit } keep || !/^(element|property)/ { print }' <<<"$header" > "$dst"
     sed -n '/^end_header/,$p' "$src" | sed -n "2,$((n + 1))p" >> "$dst"
   else
-    stride="$(awk '/^element / { v = ($2 == "vertex") } v && /^property/ {
-        t = $2; s += (t ~ /^(char|uchar|int8|uint8)$/) ? 1 : (t ~ /^(short|ushort|int16|uint16)$/) ? 2 :
-                    (t ~ /^(double|float64)$/) ? 8 : 4 } END { print s }' <<<"$header")"
+    stride="$(awk '/^element / { v = ($2 == "vertex") }
+        v && /^property/ { t = $2; if (t ~ /^(char|uchar|int8|uint8)$/) s += 1; else if (t ~ /^(short|ushort|int16|uint16)$/) s += 2;
+                           else if (t ~ /^(double|float64)$/) s += 8; else s += 4 }
+        END { print s }' <<<"$header")"
     awk -v n="$n" '/^element / { keep = ($2 == "vertex") } /^element vertex/ { print "element vertex " n; next }
                    /^end_header/ { print; exit } keep || !/^(element|property)/ { print }' <<<"$header" > "$dst"
     local skip; skip="$(grep -abo 'end_header' "$src" | head -1 | cut -d: -f1)"
-    tail -c +"$((skip + 12))" "$src" | head -c "$((n * stride))" >> "$dst"
+    dd if="$src" iflag=skip_bytes,count_bytes skip="$((skip + 11))" count="$((n * stride))" bs=64K status=none >> "$dst"
   fi
 }
 

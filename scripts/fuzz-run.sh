@@ -14,7 +14,7 @@ if [ ! -x "$bin/$name" ]; then
   exit 77
 fi
 read -r _ corpus max_len dict < <(grep -E "^$name[[:space:]]" "$here/tests/fuzz/harnesses.txt")
-args=(-max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1
+args=(-max_len="$max_len" -timeout=10 -rss_limit_mb=2048 -print_final_stats=1 -error_exitcode=1
       -artifact_prefix="$work_root/$name-")
 [ "$dict" != "-" ] && args+=(-dict="$here/tests/fuzz/dict/$dict")
 rm -rf "${work_root:?}/$name"

@@ -5,6 +5,8 @@
 
 #include "stylos/core/unroll/UnrollMap.h"
 
+#include <nlohmann/json.hpp>
+
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
     using namespace stylos::core::unroll;
