@@ -20,13 +20,14 @@ for name in "${names[@]}"; do
   [ "$dict" != "-" ] && args+=(-dict="$here/tests/fuzz/dict/$dict")
   mkdir -p "$long/$name"
   start=$(date +%s)
+  touch "$long/.start-$name"
   "$bin/$name" "${args[@]}" "$long/$name" "$corpus/$sub" > "$long/$name.log" 2>&1
   rc=$?
   end=$(date +%s)
   execs=$(grep -o 'stat::number_of_executed_units: *[0-9]*' "$long/$name.log" | grep -o '[0-9]*$')
   speed=$(grep -o 'stat::average_exec_per_sec: *[0-9]*' "$long/$name.log" | grep -o '[0-9]*$')
   files=$(find "$long/$name" -type f | wc -l)
-  crashes=$(find "$long" -maxdepth 1 -name "$name-*" -type f | wc -l)
+  crashes=$(find "$long" -maxdepth 1 -name "$name-*" -type f -newer "$long/.start-$name" | wc -l)  # this run's only
   printf '%-20s %12s %8s %8s %8s %s%s\n' "$name" "${execs:-?}" "${speed:-?}" "$files" "$crashes" "$((end - start))" \
          "$([ $rc -ne 0 ] && echo "  (exit $rc: see $long/$name.log)")"
 done
