@@ -1,5 +1,7 @@
 #!/usr/bin/env bash
 # Installs what Stylos needs to build and test on Debian 12 (bookworm). Run as root or with sudo.
+# clang and libclang-rt-14-dev: the fuzz harnesses (libFuzzer, ASan, UBSan; docs/fuzzing.md); without them the
+# fuzz tests are skipped.
 set -euo pipefail
 SUDO=""
 if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
@@ -11,4 +13,5 @@ DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y --no-install-recommends 
   libeigen3-dev libglm-dev libopenimageio-dev libnanoflann-dev nlohmann-json3-dev \
   libxxhash-dev libcli11-dev libpugixml-dev \
   libgtest-dev libgmock-dev libbenchmark-dev \
+  clang libclang-rt-14-dev \
   xvfb xauth libgl1-mesa-dri

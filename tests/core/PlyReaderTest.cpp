@@ -305,3 +305,26 @@ TEST(PlyReader, BinaryNonFinitePointsAreDroppedWithTheirAttributes)
     EXPECT_EQ(all->points.colors, (std::vector<std::uint8_t>{0, 1, 2, 30, 1, 2}));
     EXPECT_EQ(all->points.scalars[0], (std::vector<double>{100, 103}));
 }
+
+// Found by PlyReaderFuzzer (tests/fuzz): a float colour holding NaN was cast to uchar (undefined behaviour;
+// UBSan: "nan is outside the range of representable values of type 'unsigned char'"). NaN now gives 0, as a
+// negative value does; above the range gives 255 (float colours are 0..1, scaled by 255).
+TEST(PlyReader, FuzzRegressionANanColourIsZeroNotUndefinedBehaviour)
+{
+    TempDir dir;
+    stylos::test::writeText(dir / "c.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                           "property float z\nproperty float red\nproperty float green\n"
+                                           "property float blue\nend_header\n"
+                                           "0 0 0 nan 300 -5\n1 0 0 0.4 254.6 inf\n2 0 0 -nan 1 2\n");
+    auto all = readAll(dir / "c.ply");
+    ASSERT_TRUE(all.ok()) << all.error().message;
+    ASSERT_EQ(all->points.size(), 3u);
+    EXPECT_EQ(all->points.colors, (std::vector<std::uint8_t>{0, 255, 0, 102, 255, 255, 0, 255, 255})); // float: 0..1 × 255
+
+    // The input the fuzzer found: its colours come before the end of the file, which then stops it.
+    const auto found = std::filesystem::path(STYLOS_TEST_DATA) / "fuzz" / "ply" / "nan-colour.ply";
+    auto read = readAll(found);
+    ASSERT_FALSE(read.ok());
+    EXPECT_EQ(read.error().code, ErrorCode::Truncated);
+    EXPECT_EQ(read.error().message, found.string() + ": byte 3122: the file ends inside vertex 24 of 60");
+}

@@ -228,7 +228,7 @@ TEST(UnrollMap, ReadingABadSidecarNamesTheFileAndTheKey)
     auto truncated = UnrollMap::readSidecar(path);
     ASSERT_FALSE(truncated.ok());
     EXPECT_EQ(truncated.error().code, ErrorCode::Malformed);
-    EXPECT_NE(truncated.error().message.find(path.string() + ": byte "), std::string::npos) << truncated.error().message;
+    EXPECT_NE(truncated.error().message.find(path.string() + ": line 1, column "), std::string::npos) << truncated.error().message;
 
     const nlohmann::json good = mapOn(Surface::cylinder(tiltedAxis(), 0.55).value()).toJson();
     struct Case {

@@ -1,6 +1,8 @@
 // The annotation legend: layers, hatches, the default vocabulary and its JSON form.
 #include "stylos/core/annotation/Legend.h"
 
+#include "stylos/core/util/JsonText.h"
+
 #include <nlohmann/json.hpp>
 
 #include <cerrno>
@@ -138,21 +140,9 @@ Result<Legend> Legend::fromJson(const nlohmann::json& json, const std::string& s
 
 Result<Legend> Legend::read(const std::filesystem::path& path)
 {
-    const std::string name = path.string();
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status)) return Error::at(ErrorCode::NotFound, name, {}, "no such file");
-    if (std::filesystem::is_directory(status)) return Error::at(ErrorCode::Unreadable, name, {}, "is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error::at(ErrorCode::Unreadable, name, {}, std::string("cannot open: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return Error::at(ErrorCode::Unreadable, name, {}, "read failed");
-    try {
-        return fromJson(nlohmann::json::parse(text.str()), name);
-    } catch (const nlohmann::json::parse_error& e) {
-        return Error::at(ErrorCode::Malformed, name, "byte " + std::to_string(e.byte), "not valid JSON");
-    }
+    auto json = readJsonFile(path);
+    if (!json) return json.error();
+    return fromJson(json.value(), path.string());
 }
 
 } // namespace stylos::core::annotation

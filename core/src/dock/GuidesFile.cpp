@@ -1,6 +1,7 @@
 #include "stylos/core/dock/GuidesFile.h"
 
 #include "stylos/core/unroll/UnrollMap.h"
+#include "stylos/core/util/JsonText.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -100,17 +101,9 @@ Result<DrumGuides> guidesFromJson(const nlohmann::json& o, const std::string& so
 
 Result<DrumGuides> readGuidesFile(const std::filesystem::path& path)
 {
-    const std::string source = path.string();
-    std::error_code ec;
-    if (!std::filesystem::exists(path, ec)) return Error::at(ErrorCode::NotFound, source, {}, "no such file");
-    if (std::filesystem::is_directory(path, ec)) return Error::at(ErrorCode::Unreadable, source, {}, "is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error::at(ErrorCode::Unreadable, source, {}, "cannot be opened");
-    std::stringstream text;
-    text << in.rdbuf();
-    const nlohmann::json object = nlohmann::json::parse(text.str(), nullptr, false);
-    if (object.is_discarded()) return Error::at(ErrorCode::Malformed, source, {}, "not JSON");
-    return guidesFromJson(object, source);
+    auto json = readJsonFile(path);
+    if (!json) return json.error();
+    return guidesFromJson(json.value(), path.string());
 }
 
 } // namespace stylos::core::dock

@@ -31,7 +31,8 @@ Result<BufferedFile> BufferedFile::open(const fs::path& path, std::size_t buffer
     if (ec)
         return Error::at(ErrorCode::Unreadable, path.string(), "", "cannot get its size: " + ec.message());
     f.m_size = size;
-    f.m_buffer.resize(std::max<std::size_t>(bufferBytes, 4096));
+    // No bigger than the file (a small file does not cost a 1 MiB buffer); fill() grows it when asked for more.
+    f.m_buffer.resize(std::max<std::size_t>(std::min<std::uint64_t>(bufferBytes, size), 4096));
     return f;
 }
 

@@ -83,9 +83,10 @@ std::string_view nextToken(std::string_view& rest)
     return token;
 }
 
+/** 0..255, rounded and clamped; NaN (a float colour can hold one) gives 0 as a negative value does. */
 inline std::uint8_t toColor(double v)
 {
-    return static_cast<std::uint8_t>(std::clamp(v + 0.5, 0.0, 255.0));
+    return v >= 0.0 ? static_cast<std::uint8_t>(std::min(v + 0.5, 255.0)) : std::uint8_t(0);
 }
 
 bool parseNumber(std::string_view token, double& value)

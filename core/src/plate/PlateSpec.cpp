@@ -1,5 +1,6 @@
 // A plate as stated: page, resolution, caption, panels; names, validation and the layout file.
 #include "stylos/core/plate/PlateSpec.h"
+#include "stylos/core/util/JsonText.h"
 #include "stylos/core/util/TextCase.h"
 
 #include <nlohmann/json.hpp>
@@ -237,19 +238,9 @@ Result<PlateSpec> PlateSpec::fromJson(const nlohmann::json& json, const std::str
 
 Result<PlateSpec> PlateSpec::read(const std::string& path)
 {
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status)) return Error::at(ErrorCode::NotFound, path, {}, "no such file");
-    if (std::filesystem::is_directory(status)) return Error::at(ErrorCode::Unreadable, path, {}, "is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error::at(ErrorCode::Unreadable, path, {}, std::string("cannot open: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    try {
-        return fromJson(nlohmann::json::parse(text.str()), path);
-    } catch (const nlohmann::json::parse_error& e) {
-        return Error::at(ErrorCode::Malformed, path, "byte " + std::to_string(e.byte), "not valid JSON");
-    }
+    auto json = readJsonFile(path);
+    if (!json) return json.error();
+    return fromJson(json.value(), path);
 }
 
 } // namespace stylos::core::plate

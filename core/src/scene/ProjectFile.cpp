@@ -1,6 +1,7 @@
 #include "stylos/core/scene/ProjectFile.h"
 
 #include "stylos/core/util/AtomicTextFile.h"
+#include "stylos/core/util/JsonText.h"
 
 #include <nlohmann/json.hpp>
 
@@ -75,22 +76,6 @@ std::filesystem::path projectFolder(const std::filesystem::path& projectPath)
     std::filesystem::path absolute = std::filesystem::absolute(projectPath, ignored);
     if (absolute.empty()) absolute = projectPath;
     return absolute.lexically_normal().parent_path();
-}
-
-/** "line L, column C" of the byte at 1-based offset @p byte of @p text (nlohmann's parse_error::byte). */
-std::string textPosition(std::string_view text, std::size_t byte)
-{
-    const std::size_t end = std::min(byte > 0 ? byte - 1 : 0, text.size());
-    std::size_t line = 1, column = 1;
-    for (std::size_t i = 0; i < end; ++i) {
-        if (text[i] == '\n') {
-            ++line;
-            column = 1;
-        } else {
-            ++column;
-        }
-    }
-    return "line " + std::to_string(line) + ", column " + std::to_string(column);
 }
 
 /** Reads the JSON tree into a scene, naming the file and the key path in every error. */
@@ -366,16 +351,9 @@ Result<LoadedProject> ProjectFile::fromJson(std::string_view text, const std::fi
     const std::string file = projectPath.string();
     if (std::all_of(text.begin(), text.end(), [](char c) { return c == ' ' || c == '\t' || c == '\n' || c == '\r'; }))
         return Error::at(ErrorCode::Empty, file, {}, "the project file is empty");
-    json root;
-    try {
-        root = json::parse(text);
-    } catch (const json::parse_error& e) {
-        std::string detail = e.what();
-        const auto colon = detail.find(": ", detail.find("parse error"));
-        detail = colon == std::string::npos ? std::string("syntax error") : detail.substr(colon + 2);
-        return Error::at(ErrorCode::Malformed, file, textPosition(text, e.byte), "not valid JSON: " + detail);
-    }
-    return SceneReader(file, projectFolder(projectPath)).read(root);
+    auto root = parseJsonText(text, file);
+    if (!root) return root.error();
+    return SceneReader(file, projectFolder(projectPath)).read(root.value());
 }
 
 Status ProjectFile::save(const Scene& scene, const std::filesystem::path& projectPath)

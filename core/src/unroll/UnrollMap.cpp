@@ -3,6 +3,7 @@
 #include "stylos/core/util/AtomicTextFile.h"
 
 #include "stylos/core/shading/HeightField.h"
+#include "stylos/core/util/JsonText.h"
 
 #include <Eigen/Geometry>
 #include <nlohmann/json.hpp>
@@ -169,23 +170,9 @@ Status UnrollMap::writeSidecar(const std::filesystem::path& path) const
 
 Result<UnrollMap> UnrollMap::readSidecar(const std::filesystem::path& path)
 {
-    const std::string name = path.string();
-    std::error_code error;
-    const auto status = std::filesystem::status(path, error);
-    if (!std::filesystem::exists(status)) return Error::at(ErrorCode::NotFound, name, {}, "no such file");
-    if (std::filesystem::is_directory(status)) return Error::at(ErrorCode::Unreadable, name, {}, "is a directory");
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error::at(ErrorCode::Unreadable, name, {}, std::string("cannot open: ") + std::strerror(errno));
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (in.bad()) return Error::at(ErrorCode::Unreadable, name, {}, "read failed");
-    nlohmann::json json;
-    try {
-        json = nlohmann::json::parse(text.str());
-    } catch (const nlohmann::json::parse_error& e) {
-        return Error::at(ErrorCode::Malformed, name, "byte " + std::to_string(e.byte), "not valid JSON");
-    }
-    return fromJson(json, name);
+    auto json = readJsonFile(path);
+    if (!json) return json.error();
+    return fromJson(json.value(), path.string());
 }
 
 } // namespace stylos::core::unroll

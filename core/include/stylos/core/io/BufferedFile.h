@@ -17,7 +17,8 @@ namespace stylos::core::io {
 
 class BufferedFile {
 public:
-    /** Opens @p path. Errors: NotFound, Unreadable (a directory, no permission, I/O error). */
+    /** Opens @p path with a buffer of @p bufferBytes, or of the file's size when smaller (at least 4 KiB).
+     *  Errors: NotFound, Unreadable (a directory, no permission, I/O error). */
     static Result<BufferedFile> open(const std::filesystem::path& path,
                                      std::size_t bufferBytes = std::size_t(1) << 20);
 

@@ -134,8 +134,8 @@ public:
     /** @brief Writes toJson() to @p path atomically (PATH.part, then rename); WriteFailed naming the
      *         path, nothing left behind. */
     Status writeSidecar(const std::filesystem::path& path) const;
-    /** @brief Reads a sidecar: NotFound (no such file), Unreadable, Malformed (not JSON, with the byte
-     *         offset; or a key missing or wrong, as fromJson), each naming the path. */
+    /** @brief Reads a sidecar: NotFound (no such file), Unreadable, Malformed (not JSON, with the line and
+     *         column; or a key missing or wrong, as fromJson), each naming the path. */
     static Result<UnrollMap> readSidecar(const std::filesystem::path& path);
 
 private:
