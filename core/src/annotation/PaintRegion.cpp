@@ -1,9 +1,12 @@
 // The pixel sets of the painting tools: brush segment, polygon, magic wand, enclosed holes.
 #include "stylos/core/annotation/PaintRegion.h"
 
+#include "stylos/core/util/HugePages.h"
+
 #include <algorithm>
 #include <cassert>
 #include <cmath>
+#include <memory>
 
 namespace stylos::core::annotation {
 
@@ -19,7 +22,7 @@ struct Box {
  *  times, in memory order). No list is built: the caller reads the marks inside the returned box, in row-major
  *  order, without sorting. */
 template <typename Inside>
-Box flood(const std::vector<std::uint32_t>& seeds, int width, int height, std::vector<std::uint8_t>& seen, Inside inside)
+Box flood(const std::vector<std::uint32_t>& seeds, int width, int height, std::uint8_t* seen, Inside inside)
 {
     Box box{width, -1, height, -1};
     const std::uint32_t w = std::uint32_t(width);
@@ -36,7 +39,7 @@ Box flood(const std::vector<std::uint32_t>& seeds, int width, int height, std::v
         int left = x, right = x;
         while (left > 0 && open(left - 1, y)) --left;
         while (right + 1 < width && open(right + 1, y)) ++right;
-        std::uint8_t* row = seen.data() + std::size_t(y) * w;
+        std::uint8_t* row = seen + std::size_t(y) * w;
         std::fill(row + left, row + right + 1, std::uint8_t(1));
         box.c0 = std::min(box.c0, left);
         box.c1 = std::max(box.c1, right);
@@ -55,21 +58,39 @@ Box flood(const std::vector<std::uint32_t>& seeds, int width, int height, std::v
     return box;
 }
 
-/** The pixels of @p box whose mark in @p seen is @p wanted, ascending. */
-std::vector<std::uint32_t> marked(const std::vector<std::uint8_t>& seen, Box box, int width, std::uint8_t wanted)
+/** A byte per pixel of a @p width × @p height grid, not initialised, on huge pages where the system gives them. */
+std::unique_ptr<std::uint8_t[]> pixelBytes(int width, int height)
+{
+    const std::size_t n = std::size_t(std::max(0, width)) * std::size_t(std::max(0, height));
+    std::unique_ptr<std::uint8_t[]> bytes(new std::uint8_t[n]);
+    adviseHugePages(bytes.get(), n);
+    return bytes;
+}
+
+/** The pixels of @p box whose mark in @p seen is @p wanted, ascending: counted first (a vectorised pass) so the
+ *  list is allocated once, then written a run at a time (the fills mark spans). */
+std::vector<std::uint32_t> marked(const std::uint8_t* seen, Box box, int width, std::uint8_t wanted)
 {
     std::vector<std::uint32_t> out;
-    // Counted first (a vectorised pass) so the list is allocated once.
     std::size_t count = 0;
     for (int r = box.r0; r <= box.r1; ++r) {
-        const std::uint8_t* row = seen.data() + std::size_t(r) * std::size_t(width);
+        const std::uint8_t* row = seen + std::size_t(r) * std::size_t(width);
         for (int c = box.c0; c <= box.c1; ++c) count += row[c] == wanted;
     }
     out.reserve(count);
+    adviseHugePages(out.data(), count * sizeof(std::uint32_t));
+    out.resize(count);
+    std::uint32_t* next = out.data();
     for (int r = box.r0; r <= box.r1; ++r) {
-        const std::uint32_t row = std::uint32_t(r) * std::uint32_t(width);
-        for (int c = box.c0; c <= box.c1; ++c)
-            if (seen[row + std::uint32_t(c)] == wanted) out.push_back(row + std::uint32_t(c));
+        const std::uint8_t* row = seen + std::size_t(r) * std::size_t(width);
+        const std::uint32_t base = std::uint32_t(r) * std::uint32_t(width);
+        int c = box.c0;
+        while (c <= box.c1) {
+            while (c <= box.c1 && row[c] != wanted) ++c;
+            const int start = c;
+            while (c <= box.c1 && row[c] == wanted) ++c;
+            for (int k = start; k < c; ++k) *next++ = base + std::uint32_t(k);
+        }
     }
     return out;
 }
@@ -135,11 +156,12 @@ std::vector<std::uint32_t> floodFill(std::span<const float> values, std::span<co
     const float reference = values[seed];
     // One byte a pixel, set in a branch-free (vectorised) pass: 0 where the wand may go, 2 where it may not; the
     // fill marks what it takes 1. One array, written once: on large images the time goes to touching memory.
-    std::vector<std::uint8_t> seen(n);
+    const auto seen = pixelBytes(width, height);
+    std::uint8_t* marks = seen.get();
     for (std::size_t q = 0; q < n; ++q)
-        seen[q] = std::uint8_t(2 * !((valid[q] != 0) & (std::abs(values[q] - reference) <= tolerance)));
-    const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, seen, [](std::uint32_t) { return true; });
-    return marked(seen, box, width, 1);
+        marks[q] = std::uint8_t(2 * !((valid[q] != 0) & (std::abs(values[q] - reference) <= tolerance)));
+    const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, marks, [](std::uint32_t) { return true; });
+    return marked(marks, box, width, 1);
 }
 
 std::vector<std::uint32_t> enclosedHoles(std::span<const std::uint8_t> ids, int width, int height, std::uint32_t seed)
@@ -148,7 +170,9 @@ std::vector<std::uint32_t> enclosedHoles(std::span<const std::uint8_t> ids, int 
     assert(ids.size() == n && "enclosedHoles(): one id per pixel");
     if (seed >= n || ids[seed] == 0) return {};
     const std::uint8_t id = ids[seed];
-    std::vector<std::uint8_t> region(n, 0);
+    const auto marks = pixelBytes(width, height);
+    std::uint8_t* region = marks.get();
+    std::fill(region, region + n, std::uint8_t(0));
     const Box box = flood(std::vector<std::uint32_t>{seed}, width, height, region, [&](std::uint32_t q) { return ids[q] == id; });
     const int c0 = box.c0, c1 = box.c1, r0 = box.r0, r1 = box.r1;
     // The region's box, one pixel wider: what is not the region and reaches the frame of that box is outside.
@@ -169,7 +193,7 @@ std::vector<std::uint32_t> enclosedHoles(std::span<const std::uint8_t> ids, int 
     frame.erase(std::unique(frame.begin(), frame.end()), frame.end());
     std::erase_if(frame, [&](std::uint32_t p) { return region[p] != 0; });
     // "seen" = the region, then the outside flooded within the box; the rest of the box is holes.
-    std::vector<std::uint8_t>& seen = region;
+    std::uint8_t* seen = region;
     const auto inBox = [&](std::uint32_t q) {
         const int c = int(q % std::uint32_t(width)), r = int(q / std::uint32_t(width));
         return c >= bc0 && c <= bc1 && r >= br0 && r <= br1;

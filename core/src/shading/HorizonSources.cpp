@@ -1,14 +1,11 @@
 #include "HorizonSources.h"
 
 #include "ParallelChunks.h"
+#include "stylos/core/util/HugePages.h"
 
 #include <algorithm>
 #include <cstdint>
 #include <limits>
-
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
 
 namespace stylos::core::shading::detail {
 namespace {
@@ -37,13 +34,7 @@ void assignZeros(std::vector<float>& buffer, std::size_t count)
 {
     buffer.clear();
     buffer.reserve(count);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    // Before the first touch; only the 2 MiB-aligned middle can be huge; best effort (errors ignored).
-    constexpr std::uintptr_t huge = std::uintptr_t(1) << 21;
-    const auto begin = (reinterpret_cast<std::uintptr_t>(buffer.data()) + huge - 1) & ~(huge - 1);
-    const auto end = reinterpret_cast<std::uintptr_t>(buffer.data() + count) & ~(huge - 1);
-    if (end > begin) madvise(reinterpret_cast<void*>(begin), end - begin, MADV_HUGEPAGE);
-#endif
+    adviseHugePages(buffer.data(), count * sizeof(float)); // before the first touch
     buffer.resize(count, 0.0f);
 }
 
