@@ -1,4 +1,4 @@
-// stylos-cli generate drum|omphalos|fragment -o OUT.ply [--spacing M] [--seed N] [--design-seed N] [--scans K] [--noise M]
+// stylos-cli generate drum|omphalos|fragment -o OUT.ply [--spacing M] [--seed N] [--design-seed N] [--scans K] [--noise M] [--taper M]
 #include "CommandLine.h"
 #include "Commands.h"
 #include "ConsoleProgress.h"
@@ -21,6 +21,7 @@ int runGenerate(const std::vector<std::string>& args)
                     {"design-seed", "N", "seed of the drum's design (flutes, breaks): a drum and a fragment with the same design seed come from the same drum (default: --seed)"},
                     {"scans", "K", "number of overlapping scans (default 3)"},
                     {"noise", "M", "sensor noise sigma in metres (default 0.00033)"},
+                    {"taper", "M", "drum and fragment: how much smaller the radius is at the upper bed, metres (default 0: a cylinder)"},
                     {"normals", "", "also write the true surface normals"},
                     {"json", "", "print one JSON object on stdout"}});
     if (!cl.parse(args)) return usageError(cl, cl.error());
@@ -38,7 +39,7 @@ int runGenerate(const std::vector<std::string>& args)
     long long seed = static_cast<long long>(options.seed), scans = options.scans, designSeed = 0;
     if (!cl.number("spacing", options.spacing) || !cl.integer("seed", seed) || !cl.integer("scans", scans) ||
         !cl.integer("design-seed", designSeed) ||
-        !cl.number("noise", options.noise))
+        !cl.number("noise", options.noise) || !cl.number("taper", options.taper))
         return usageError(cl, cl.error());
     if (!(options.spacing > 0)) return usageError(cl, "--spacing must be a positive number of metres");
     if (!(options.noise >= 0)) return usageError(cl, "--noise must be zero or a positive number of metres");

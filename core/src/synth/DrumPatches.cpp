@@ -2,6 +2,7 @@
 
 #include "stylos/core/synth/DrumShape.h"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <utility>
@@ -52,7 +53,9 @@ bool DrumLateralPatch::contains(double, double, const Eigen::Vector3d& p) const
 DrumBedPatch::DrumBedPatch(const DrumShape& drum, bool top, DrumPatchRange range, Eigen::Vector2d scanCentre,
                            PointClip clip)
     : m_drum(drum), m_top(top), m_range(range), m_scanCentre(scanCentre), m_centred(scanCentre.isZero()),
-      m_clip(std::move(clip)), m_clear(drum.parameters().radius - drum.maxLateralDepth())
+      m_clip(std::move(clip)),
+      m_clear((drum.parameters().radius - drum.maxLateralDepth()) *
+              std::min(drum.scaleAt(0.0), drum.scaleAt(drum.parameters().height)))
 {
     // ∂p/∂a × ∂p/∂b = e_θ × e_ρ = -e_z: outward for the lower bed, inward for the upper one.
     m_orientation = top ? -1.0 : 1.0;

@@ -33,6 +33,7 @@ DrumParameters DrumParameters::fromOptions(const SyntheticOptions& options, Rand
     p.height = options.height;
     p.grooves = options.grooves;
     p.grooveDepth = options.grooveDepth;
+    p.taper = options.taper;
     const double h = p.height;
     p.clawMin = 0.84 * h;
     p.clawMax = 0.92 * h;
@@ -52,6 +53,8 @@ std::string DrumParameters::problem() const
 {
     if (!(radius > 0.0) || !(height > 0.0) || !std::isfinite(radius) || !std::isfinite(height))
         return "drum radius and height must be positive";
+    if (!std::isfinite(taper) || std::fabs(taper) > 0.2 * radius)
+        return "the taper must lie within a fifth of the radius (" + std::to_string(0.2 * radius) + " m)";
     if (grooves == 0) return {};
     if (grooves < 3 || grooves > 1000) return "groove count must be 0 or between 3 and 1000";
     if (!(filletFraction >= 0.0 && filletFraction < 1.0)) return "fillet fraction must be in [0, 1)";
@@ -121,7 +124,7 @@ double DrumShape::cavityRadius(double theta, double z) const
 
 double DrumShape::lateralRadius(double theta, double z) const
 {
-    return std::min(fluteRadius(theta) - clawMarks(theta, z), cavityRadius(theta, z));
+    return scaleAt(z) * std::min(fluteRadius(theta) - clawMarks(theta, z), cavityRadius(theta, z));
 }
 
 double DrumShape::bedDepth(double x, double y, bool top) const
@@ -153,6 +156,8 @@ nlohmann::json DrumShape::drumTruth() const
     json t;
     t["radius"] = m_p.radius;
     t["height"] = m_p.height;
+    t["taper"] = m_p.taper;
+    t["radiusTop"] = m_p.radius - m_p.taper;
     t["maxLateralDepth"] = maxLateralDepth();
     t["grooves"] = {{"count", m_p.grooves},        {"depth", m_p.grooves > 0 ? m_p.grooveDepth : 0.0},
                     {"phase", m_p.groovePhase},    {"pitch", m_pitch},

@@ -46,6 +46,9 @@ struct DrumParameters {
     double recess = 0.002;         ///< depth of the recessed centre of a bed face, metres
     double bedRoughness = 0.0004;  ///< amplitude of the point-dressing in the recess, metres
     std::uint64_t noiseSeed = 1;   ///< seed of the fracture and dressing noise
+    /** Radius lost from the lower bed to the upper one, metres (a tapering drum: a cone's frustum whose
+     *  cross-section at height z is the lower bed's scaled by scaleAt(z)); 0: a cylinder. */
+    double taper = 0.0;
 
     /** Defaults scaled to the options' radius, height, groove count and depth, random phase and broken
      *  region drawn from @p random. Does not validate. */
@@ -66,6 +69,8 @@ public:
     double fluteRadius(double theta) const;
     /** Radius of the lateral surface (flutes, claw marks, broken region) at (θ, z), metres. */
     double lateralRadius(double theta, double z) const;
+    /** The cross-section's scale at height z: 1 − taper · z / (radius · height) (1 at the lower bed). */
+    double scaleAt(double z) const { return 1.0 - m_p.taper * z / (m_p.radius * m_p.height); }
     /** How far below its plane (into the drum) a bed face lies at (x, y), metres (≥ 0). */
     double bedDepth(double x, double y, bool top) const;
     /** Deepest the lateral surface goes below the fillet circle anywhere, metres. */

@@ -42,6 +42,9 @@ struct SyntheticOptions {
     double height = 0.5;           ///< drum height between the bed faces, metres
     int grooves = 48;              ///< flutes (grooves); 0: a plain cylinder
     double grooveDepth = 0.008;    ///< from the fillet circle to the bottom of a flute, metres
+    /** How much smaller the radius is at the upper bed than at the lower one, metres (a column's taper;
+     *  0: a cylinder). The whole cross-section, flutes included, scales with the height. */
+    double taper = 0.0;
 };
 
 struct SyntheticReport {
