@@ -65,4 +65,16 @@ struct AoOptions {
 Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,
                                                    ProgressSink* progress = nullptr);
 
+/**
+ * @brief Per-receiver values in [0, 1], in the order of @p receivers (e.g. leafReceivers: the leaves),
+ *        with @p occluders' cells as the only occluders (DepthMap only). A receiver at any point of its
+ *        cell, with its own normal n, is hidden toward d by the cell the depth map holds on its line when
+ *        that cell lies ahead and its centre is more than ½(|nx| + |ny| + |nz|) + bias edges above the
+ *        receiver's tangent plane — the farthest a cube that the plane cuts can reach, plus bias: a
+ *        receiver never shadows itself on an open face of any slope. Failure modes: as above, and
+ *        InvalidArgument for the Slices method.
+ */
+Result<std::vector<float>> computeAmbientOcclusion(const AoCells& occluders, const AoReceivers& receivers,
+                                                   const AoOptions& options, ProgressSink* progress = nullptr);
+
 } // namespace stylos::core::ao

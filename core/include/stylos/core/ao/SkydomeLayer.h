@@ -21,6 +21,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace stylos::core::ao {
 
@@ -32,6 +33,9 @@ enum class SkydomeOutput {
 struct SkydomeLayerOptions {
     AoOptions ao;              ///< directions, method, bias, weighting, threads
     std::optional<int> level;  ///< the level of the cells; default closedSurfaceLevel(octree)
+    /** DepthMap: measure every leaf at its own centre and normal against the level's cells (AoReceivers);
+     *  false: measure each cell at its centre and give its value to the leaves under it. */
+    bool leafReceivers = false;
     SkydomeOutput output = SkydomeOutput::Poct;
 };
 
@@ -44,6 +48,14 @@ struct SkydomeLayerReport {
     double aoSeconds = 0.0;
     double writeSeconds = 0.0;
 };
+
+/**
+ * @brief The skydome's value of every leaf of @p octree (leaf order), without writing anything: what
+ *        computeSkydomeLayer writes. Fills @p report (when given) except writeSeconds. Progress: reading
+ *        the cells to 0.1, the skydome to 1.
+ */
+Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree, const SkydomeLayerOptions& options = {},
+                                              ProgressSink* progress = nullptr, SkydomeLayerReport* report = nullptr);
 
 /** @brief Computes the skydome of @p octree and writes it to @p output (see the file comment). */
 Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,
