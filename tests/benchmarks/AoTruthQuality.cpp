@@ -108,7 +108,7 @@ Settings parse(int argc, char** argv)
         else if (a == "--depth") s.depth = std::stoi(next());
         else if (a == "--level") s.level = std::stoi(next());
         else if (a == "--directions") s.ao.directions = std::stoi(next());
-        else if (a == "--bias") s.ao.bias = std::stod(next());
+        else if (a == "--bias") s.ao.bias = s.ao.receiverBias = std::stod(next());
         else if (a == "--method") {
             const auto m = ao::aoMethodFromName(next());
             if (!m) fail("unknown method");
@@ -393,7 +393,7 @@ int main(int argc, char** argv)
     out["scan"] = {{"kind", s.kindName}, {"file", ply.string()}, {"spacing", s.scan.spacing},
                    {"noise", s.scan.noise}, {"seed", s.scan.seed}, {"depth", octree.depth()}};
     out["method"] = {{"name", ao::aoMethodName(s.ao.method)}, {"level", report.level}, {"cells", report.cells},
-                     {"edgeMetres", cells.edge}, {"leaves", report.leaves}, {"bias", s.ao.bias},
+                     {"edgeMetres", cells.edge}, {"leaves", report.leaves}, {"bias", layer.leafReceivers ? s.ao.receiverBias : s.ao.bias},
                      {"directions", s.ao.directions}, {"seconds", methodSeconds},
                      {"receivers", layer.leafReceivers && s.ao.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
                      {"skydomeSeconds", report.aoSeconds}};

@@ -70,7 +70,7 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
     if (options.directions < 1 || options.directions > 65536)
         return Error::at(ErrorCode::InvalidArgument, "skydome", "",
                          "the number of directions must be 1..65536, not " + std::to_string(options.directions));
-    if (!(options.bias >= 0.0))
+    if (!(options.bias >= 0.0) || !(options.receiverBias >= 0.0))
         return Error::at(ErrorCode::InvalidArgument, "skydome", "", "the bias must be ≥ 0");
 
     if (receivers && options.method != AoMethod::DepthMap)

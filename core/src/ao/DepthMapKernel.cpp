@@ -50,7 +50,7 @@ public:
     DepthMapKernel(const PreparedCells& cells, const PreparedCells* receivers, const AoOptions& options,
                    const DepthMapPasses& passes)
         : m_cells(cells), m_receivers(receivers ? *receivers : cells), m_offLattice(receivers != nullptr),
-          m_bias(float(options.bias)), m_cosine(options.cosineWeighted), m_passes(passes),
+          m_bias(float(receivers ? options.receiverBias : options.bias)), m_cosine(options.cosineWeighted), m_passes(passes),
           m_scratch(std::make_unique<DepthMapScratch>())
     {
         // The cells' own box (not the grid's from 0): the map covers only its projection.

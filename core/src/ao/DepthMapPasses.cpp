@@ -142,7 +142,7 @@ STYLOS_DEPTHMAP_INLINE void testImpl(const DepthMapFrame& f, const PreparedCells
 // stored occluder's centre rebuilt exactly (the estimate receiver + Δ is within 0.1 of the lattice of
 // cell centres, so rounding it to the nearest centre gives that cell), and the rule for a receiver at any
 // point of its cell: hidden iff the occluder lies ahead and its centre is more than the cube's half-extent
-// along n, ½(|nx| + |ny| + |nz|), plus `bias` above the receiver's tangent plane. A cube that the
+// along n, ½(|nx| + |ny| + |nz|), plus the bias (AoOptions::receiverBias) above the receiver's tangent plane. A cube that the
 // receiver's tangent plane cuts never hides it (an open flat face reads 1), whatever the plane's slope.
 STYLOS_DEPTHMAP_INLINE void testOffLatticeImpl(const DepthMapFrame& f, const PreparedCells& cells,
                                                const std::int32_t* map, const std::uint8_t* facing, float bias,
