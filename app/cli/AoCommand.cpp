@@ -1,5 +1,5 @@
 // stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
-//               [--upper-hemisphere] [--cosine] [--bias B] [--depth N] [--threads N] [--columns LAYOUT] [--scan N]
+//               [--upper-hemisphere] [--cosine] [--bias B] [--receivers leaves|cells] [--depth N] [--threads N] [--columns LAYOUT] [--scan N]
 //               [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 #include "CommandLine.h"
 
@@ -52,7 +52,7 @@ bool sameFile(const fs::path& a, const fs::path& b)
 
 struct AoRequest {
     std::string input, output;
-    bool poctInput = false, plyOutput = false, json = false;
+    bool poctInput = false, plyOutput = false, json = false, leafReceivers = true;
     std::optional<int> level;
     ao::AoOptions options;
     oct::BuildOptions build;
@@ -73,6 +73,7 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
     r.json = cl.flag("json");
 
     long long directions = r.options.directions, threads = 0, depth = r.build.depth, level = -1;
+    const bool biasGiven = cl.value("bias").has_value();
     double bias = r.options.bias;
     if (!cl.integer("directions", directions) || !cl.integer("threads", threads) || !cl.integer("depth", depth) ||
         !cl.integer("level", level) || !cl.number("bias", bias))
@@ -87,7 +88,12 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
     }
     r.options.directions = int(directions);
     r.options.threads = unsigned(threads);
-    r.options.bias = bias;
+    if (const auto receivers = cl.value("receivers")) {
+        if (*receivers != "leaves" && *receivers != "cells")
+            return problem = "--receivers must be leaves or cells, not \"" + *receivers + "\"", false;
+        r.leafReceivers = *receivers == "leaves";
+    }
+    if (biasGiven) r.options.bias = r.options.receiverBias = bias;
     r.options.upperHemisphere = cl.flag("upper-hemisphere");
     r.options.cosineWeighted = cl.flag("cosine");
 
@@ -131,7 +137,8 @@ int runAo(const std::vector<std::string>& args)
                                            ao::aoMethodName(ao::AoOptions{}.method) + ")"},
                     {"upper-hemisphere", "", "only directions above the world's horizon (z > 0), as CloudCompare's PCV"},
                     {"cosine", "", "weight each direction by the cosine to the normal (irradiance)"},
-                    {"bias", "B", "cell edges above a cell's tangent plane before a cell occludes it (default 1)"},
+                    {"bias", "B", "self-shadowing tolerance in cell edges: with leaf receivers beyond the occluder cube's reach along the leaf's normal (default 0.5); with cell receivers above the cell's tangent plane (default 1)"},
+                    {"receivers", "WHERE", "leaves (default: each leaf at its own centre and normal, against the level's cells; depthmap) or cells (each cell's value spread to its leaves)"},
                     {"depth", "N", "point-file input: leaf level of the octree built first, 1..21 (default 12)"},
                     {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
                     scanOption(),
@@ -177,6 +184,7 @@ int runAo(const std::vector<std::string>& args)
     ao::SkydomeLayerOptions layer;
     layer.ao = r.options;
     layer.level = level;
+    layer.leafReceivers = r.leafReceivers;
     layer.output = r.plyOutput ? ao::SkydomeOutput::Ply : ao::SkydomeOutput::Poct;
     ao::SkydomeLayerReport made;
     {
@@ -204,7 +212,8 @@ int runAo(const std::vector<std::string>& args)
                          {"method", ao::aoMethodName(r.options.method)},
                          {"upper_hemisphere", r.options.upperHemisphere},
                          {"cosine", r.options.cosineWeighted},
-                         {"bias", r.options.bias},
+                         {"bias", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? r.options.receiverBias : r.options.bias},
+                         {"receivers", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
                          {"threads", threads},
                          {"mean_ambient", mean},
                          {"octree_built", built.has_value()},

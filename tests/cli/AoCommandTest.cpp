@@ -258,12 +258,16 @@ TEST(CliAo, InPlaceKeepsTheCellsAndReplacesTheLayer)
 
 TEST(CliAo, LevelSpreadsEachCellsValueToItsLeaves)
 {
+    // With --receivers cells (before issue 17 the only way): each cell's value goes to all its leaves.
     TempDir dir;
     const auto poct = drumOctree(dir);
     const auto out = dir / "l3.ply";
-    const auto run = runCli({"ao", poct.string(), "-o", out.string(), "--level", "3", "--directions", "32", "--json"});
+    const auto run = runCli({"ao", poct.string(), "-o", out.string(), "--level", "3", "--directions", "32", "--json",
+                             "--receivers", "cells"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["receivers"], "cells");
+    EXPECT_EQ(j["bias"], 1.0);
     const auto octree = openPoct(poct);
     EXPECT_EQ(j["level"], 3);
     EXPECT_EQ(j["cells"], octree.cellCount(3));
@@ -275,6 +279,34 @@ TEST(CliAo, LevelSpreadsEachCellsValueToItsLeaves)
     for (std::size_t c = 0; c < cells->size(); ++c)
         for (auto leaf = cells->leafBegin[c]; leaf < cells->leafBegin[c + 1]; ++leaf)
             ASSERT_EQ(values[leaf], values[cells->leafBegin[c]]) << "cell " << c;
+}
+
+TEST(CliAo, LeafReceiversByDefaultGiveLeavesTheirOwnValues)
+{
+    // The default: every leaf measured at its own centre and normal against the level's cells, so the
+    // leaves of one cell may differ (they do on a drum at level 3: cells of an eighth of its box).
+    TempDir dir;
+    const auto poct = drumOctree(dir);
+    const auto out = dir / "l3.ply";
+    const auto run = runCli({"ao", poct.string(), "-o", out.string(), "--level", "3", "--directions", "32", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    EXPECT_EQ(j["receivers"], "leaves");
+    EXPECT_EQ(j["bias"], 0.5);
+    const auto octree = openPoct(poct);
+    const auto cells = stylos::core::ao::cellsAtLevel(octree, 3);
+    ASSERT_TRUE(cells.ok());
+    const auto values = readAoPly(out).scalars[0];
+    ASSERT_EQ(values.size(), cells->leafBegin.back());
+    std::size_t varied = 0;
+    for (std::size_t c = 0; c < cells->size(); ++c)
+        for (auto leaf = cells->leafBegin[c]; leaf < cells->leafBegin[c + 1]; ++leaf)
+            varied += values[leaf] != values[cells->leafBegin[c]];
+    EXPECT_GT(varied, 0u);
+    for (const float v : values) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+    const auto bad = runCli({"ao", poct.string(), "-o", out.string(), "--receivers", "points"});
+    EXPECT_EQ(bad.exitCode, 2);
+    EXPECT_NE(bad.err.find("--receivers"), std::string::npos) << bad.err;
 }
 
 /** Runs each case: exit 2, the message (with @p needle) and the usage on stderr, nothing on stdout. */

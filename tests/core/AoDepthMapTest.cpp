@@ -514,22 +514,25 @@ TEST(AoDepthMap, EveryInstructionSetGivesTheSameBits)
     for (const Vec& d : fibonacciDirections(7, false)) {
         const DepthMapFrame f = makeDepthMapFrame({float(d[0]), float(d[1]), float(d[2])}, lo, hi);
         std::vector<std::int32_t> firstMap;
-        std::vector<float> firstSeen, firstTotal;
+        std::vector<float> firstSeen, firstTotal, firstOffLattice;
         for (const DepthMapPasses& passes : variants) {
             std::vector<std::int32_t> map(std::size_t(f.width) * std::size_t(f.height), 0);
-            Accumulator sums(cells.size());
+            Accumulator sums(cells.size()), offLattice(cells.size());
             passes.splat(f, cells, map.data(), *scratch);
             passes.test(f, cells, map.data(), facing.data(), 1.0f, true, sums, *scratch);
+            passes.testOffLattice(f, cells, map.data(), facing.data(), 0.25f, true, offLattice, *scratch);
             if (firstMap.empty()) {
                 firstMap = map;
                 firstSeen = sums.seen;
                 firstTotal = sums.total;
+                firstOffLattice = offLattice.seen;
                 EXPECT_GT(std::count_if(map.begin(), map.end(), [](std::int32_t e) { return e != 0; }), 1000);
                 continue;
             }
             EXPECT_EQ(map, firstMap) << passes.isa;
             EXPECT_EQ(sums.seen, firstSeen) << passes.isa;
             EXPECT_EQ(sums.total, firstTotal) << passes.isa;
+            EXPECT_EQ(offLattice.seen, firstOffLattice) << passes.isa;
         }
     }
 }

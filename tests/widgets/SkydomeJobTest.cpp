@@ -66,7 +66,8 @@ QByteArray fileBytes(const QString& path)
     return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
 }
 
-/** The core's own chain (as `stylos-cli ao`): per-leaf values of @p path's octree. */
+/** The core's own chain (as `stylos-cli ao`: leaf receivers against the level's cells): per-leaf values
+ *  of @p path's octree. */
 std::vector<float> coreValues(const QString& path, const SkydomeOptions& options, int* level = nullptr)
 {
     auto octree = PackedOctree::open(path.toStdString());
@@ -75,9 +76,11 @@ std::vector<float> coreValues(const QString& path, const SkydomeOptions& options
     if (level) *level = l;
     auto cells = ao::cellsAtLevel(*octree, l);
     if (!cells) return {};
-    auto values = ao::computeAmbientOcclusion(*cells, options.aoOptions());
+    auto receivers = ao::leafReceivers(*octree, *cells);
+    if (!receivers) return {};
+    auto values = ao::computeAmbientOcclusion(*cells, *receivers, options.aoOptions());
     if (!values) return {};
-    return ao::valuesPerLeaf(*cells, *values);
+    return std::move(values).value();
 }
 
 /** The "ambient" layer of @p octree as floats (empty without one). */

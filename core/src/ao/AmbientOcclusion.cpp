@@ -44,18 +44,42 @@ PreparedCells prepareCells(const AoCells& cells)
     return p;
 }
 
+PreparedCells prepareReceivers(const AoReceivers& receivers)
+{
+    PreparedCells p;
+    const std::size_t n = receivers.size();
+    for (auto* v : {&p.x, &p.y, &p.z, &p.nx, &p.ny, &p.nz}) v->resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+        p.x[i] = receivers.positions[i][0];
+        p.y[i] = receivers.positions[i][1];
+        p.z[i] = receivers.positions[i][2];
+        p.nx[i] = receivers.normals[i][0];
+        p.ny[i] = receivers.normals[i][1];
+        p.nz[i] = receivers.normals[i][2];
+    }
+    return p;
+}
+
 } // namespace detail
 
-Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,
-                                                   ProgressSink* progress)
+namespace {
+
+Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* receivers, const AoOptions& options,
+                                      ProgressSink* progress)
 {
     if (options.directions < 1 || options.directions > 65536)
         return Error::at(ErrorCode::InvalidArgument, "skydome", "",
                          "the number of directions must be 1..65536, not " + std::to_string(options.directions));
-    if (!(options.bias >= 0.0))
+    if (!(options.bias >= 0.0) || !(options.receiverBias >= 0.0))
         return Error::at(ErrorCode::InvalidArgument, "skydome", "", "the bias must be ≥ 0");
 
+    if (receivers && options.method != AoMethod::DepthMap)
+        return Error::at(ErrorCode::InvalidArgument, "skydome", "",
+                         "receivers off the cells (leaves) need the depthmap method");
     const detail::PreparedCells prepared = detail::prepareCells(cells);
+    const detail::PreparedCells preparedReceivers =
+        receivers ? detail::prepareReceivers(*receivers) : detail::PreparedCells{};
+    const std::size_t measured = receivers ? preparedReceivers.size() : prepared.size();
     const std::vector<Direction> directions = fibonacciDirections(options.directions, options.upperHemisphere);
     const unsigned threads =
         std::max(1u, std::min<unsigned>(shading::detail::resolveThreads(options.threads), unsigned(directions.size())));
@@ -66,12 +90,13 @@ Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const A
     // and binary visibility, whose sums are small integers).
     std::vector<detail::Accumulator> sums;
     sums.reserve(threads);
-    for (unsigned t = 0; t < threads; ++t) sums.emplace_back(prepared.size());
+    for (unsigned t = 0; t < threads; ++t) sums.emplace_back(measured);
     std::atomic<std::size_t> done{0};
     const bool finished = shading::detail::parallelChunks(
         threads, 1, threads, progress, [&](std::size_t worker, std::size_t, unsigned) {
             auto kernel = options.method == AoMethod::Slices ? detail::makeSliceKernel(prepared, options)
-                                                             : detail::makeDepthMapKernel(prepared, options);
+                                                             : detail::makeDepthMapKernel(prepared, options,
+                                                                                          receivers ? &preparedReceivers : nullptr);
             for (std::size_t k = worker; k < directions.size(); k += threads) {
                 if (progress && progress->isCancelRequested()) return;
                 const auto& d = directions[k];
@@ -83,7 +108,7 @@ Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const A
     if (!finished || (progress && progress->isCancelRequested()))
         return Error::at(ErrorCode::Cancelled, "skydome", "", "skydome cancelled");
 
-    std::vector<float> values(prepared.size(), 0.0f);
+    std::vector<float> values(measured, 0.0f);
     for (std::size_t i = 0; i < values.size(); ++i) {
         double seen = 0.0, total = 0.0;
         for (const auto& s : sums) {
@@ -93,6 +118,20 @@ Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const A
         values[i] = total > 0.0 ? float(std::clamp(seen / total, 0.0, 1.0)) : 0.0f;
     }
     return values;
+}
+
+} // namespace
+
+Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,
+                                                   ProgressSink* progress)
+{
+    return runSkydome(cells, nullptr, options, progress);
+}
+
+Result<std::vector<float>> computeAmbientOcclusion(const AoCells& occluders, const AoReceivers& receivers,
+                                                   const AoOptions& options, ProgressSink* progress)
+{
+    return runSkydome(occluders, &receivers, options, progress);
 }
 
 } // namespace stylos::core::ao

@@ -61,6 +61,36 @@ Result<AoCells> cellsAtLevel(const octree::PackedOctree& octree, int level, Prog
     return cells;
 }
 
+Result<AoReceivers> leafReceivers(const octree::PackedOctree& octree, const AoCells& occluders, ProgressSink* progress)
+{
+    const int depth = octree.depth();
+    const std::uint64_t count = octree.cellCount(depth);
+    // A leaf with coordinates c spans [c, c + 1] / 2^(depth − level) occluder edges.
+    const double scale = 1.0 / double(std::uint64_t{1} << (depth - occluders.level));
+    AoReceivers receivers;
+    receivers.positions.reserve(count);
+    receivers.normals.reserve(count);
+    constexpr std::uint64_t kCheckEvery = 64 * 1024;
+    bool cancelled = false;
+    octree.forEachCell(depth, [&](const octree::CellView& leaf) {
+        if (leaf.index % kCheckEvery == 0 && progress) {
+            if (progress->isCancelRequested()) {
+                cancelled = true;
+                return false;
+            }
+            progress->update(double(leaf.index) / double(count));
+        }
+        receivers.positions.push_back({float((leaf.coords[0] + 0.5) * scale), float((leaf.coords[1] + 0.5) * scale),
+                                       float((leaf.coords[2] + 0.5) * scale)});
+        receivers.normals.push_back(leaf.normal);
+        return true;
+    });
+    if (cancelled)
+        return Error::at(ErrorCode::Cancelled, octree.path().string(), "", "skydome cancelled while reading the leaves");
+    if (progress) progress->update(1.0);
+    return receivers;
+}
+
 int closedSurfaceLevel(const octree::PackedOctree& octree)
 {
     constexpr double kClosedRatio = 3.0;

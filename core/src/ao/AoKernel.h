@@ -21,6 +21,8 @@ struct PreparedCells {
 };
 
 PreparedCells prepareCells(const AoCells& cells);
+/** Receivers in the same layout (positions as x, y, z; opacity and extent unused). */
+PreparedCells prepareReceivers(const AoReceivers& receivers);
 
 /** Sums over the directions one worker ran: seen[i] = Σ w·v, total[i] = Σ w. */
 struct Accumulator {
@@ -44,7 +46,9 @@ public:
     virtual void run(const std::array<float, 3>& d, Accumulator& sums) = 0;
 };
 
-std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options);
+/** With @p receivers, pass 2 measures them (AoReceivers, off the cells' lattice) instead of the cells. */
+std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options,
+                                                    const PreparedCells* receivers = nullptr);
 std::unique_ptr<DirectionKernel> makeSliceKernel(const PreparedCells& cells, const AoOptions& options);
 
 } // namespace stylos::core::ao::detail

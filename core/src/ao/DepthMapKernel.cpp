@@ -47,8 +47,10 @@ namespace {
 
 class DepthMapKernel final : public DirectionKernel {
 public:
-    DepthMapKernel(const PreparedCells& cells, const AoOptions& options, const DepthMapPasses& passes)
-        : m_cells(cells), m_bias(float(options.bias)), m_cosine(options.cosineWeighted), m_passes(passes),
+    DepthMapKernel(const PreparedCells& cells, const PreparedCells* receivers, const AoOptions& options,
+                   const DepthMapPasses& passes)
+        : m_cells(cells), m_receivers(receivers ? *receivers : cells), m_offLattice(receivers != nullptr),
+          m_bias(float(receivers ? options.receiverBias : options.bias)), m_cosine(options.cosineWeighted), m_passes(passes),
           m_scratch(std::make_unique<DepthMapScratch>())
     {
         // The cells' own box (not the grid's from 0): the map covers only its projection.
@@ -71,7 +73,8 @@ public:
             const Cone& c = m_cones[b];
             m_facing[b] = c.axis[0] * d[0] + c.axis[1] * d[1] + c.axis[2] * d[2] >= -c.sine - 1e-4;
         }
-        m_passes.test(f, m_cells, m_map.data(), m_facing.data(), m_bias, m_cosine, sums, *m_scratch);
+        (m_offLattice ? m_passes.testOffLattice : m_passes.test)(f, m_receivers, m_map.data(), m_facing.data(), m_bias,
+                                                                 m_cosine, sums, *m_scratch);
     }
 
 private:
@@ -89,22 +92,23 @@ private:
     void makeNormalCones()
     {
         constexpr std::size_t kBlock = DepthMapScratch::kBlock;
-        const std::size_t n = m_cells.size();
+        const PreparedCells& r = m_receivers;
+        const std::size_t n = r.size();
         m_cones.resize((n + kBlock - 1) / kBlock);
         m_facing.resize(m_cones.size());
         for (std::size_t b = 0; b < m_cones.size(); ++b) {
             const std::size_t first = b * kBlock, last = std::min(n, first + kBlock);
             double m[3] = {0, 0, 0};
             for (std::size_t i = first; i < last; ++i) {
-                m[0] += m_cells.nx[i];
-                m[1] += m_cells.ny[i];
-                m[2] += m_cells.nz[i];
+                m[0] += r.nx[i];
+                m[1] += r.ny[i];
+                m[2] += r.nz[i];
             }
             const double length = std::sqrt(m[0] * m[0] + m[1] * m[1] + m[2] * m[2]);
             if (!(length > 1e-9)) continue;
             double cosine = 1.0; // the smallest cosine between the axis and a normal of the block
             for (std::size_t i = first; i < last; ++i) {
-                const double nx = m_cells.nx[i], ny = m_cells.ny[i], nz = m_cells.nz[i];
+                const double nx = r.nx[i], ny = r.ny[i], nz = r.nz[i];
                 const double norm = std::sqrt(nx * nx + ny * ny + nz * nz);
                 cosine = norm > 0.0 ? std::min(cosine, (nx * m[0] + ny * m[1] + nz * m[2]) / (length * norm)) : cosine;
             }
@@ -116,7 +120,9 @@ private:
         }
     }
 
-    const PreparedCells& m_cells;
+    const PreparedCells& m_cells;     ///< the occluders (pass 1)
+    const PreparedCells& m_receivers; ///< pass 2: the cells themselves, or receivers off their lattice
+    const bool m_offLattice;
     const float m_bias;
     const bool m_cosine;
     const DepthMapPasses m_passes;
@@ -129,10 +135,11 @@ private:
 
 } // namespace
 
-std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options)
+std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options,
+                                                    const PreparedCells* receivers)
 {
     static const DepthMapPasses fastest = depthMapPassVariants().front();
-    return std::make_unique<DepthMapKernel>(cells, options, fastest);
+    return std::make_unique<DepthMapKernel>(cells, receivers, options, fastest);
 }
 
 } // namespace stylos::core::ao::detail

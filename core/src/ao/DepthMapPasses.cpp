@@ -138,6 +138,70 @@ STYLOS_DEPTHMAP_INLINE void testImpl(const DepthMapFrame& f, const PreparedCells
     }
 }
 
+// Pass 2 for receivers off the cells' lattice (leaves, AoCells.h's AoReceivers): the same map read, the
+// stored occluder's centre rebuilt exactly (the estimate receiver + Δ is within 0.1 of the lattice of
+// cell centres, so rounding it to the nearest centre gives that cell), and the rule for a receiver at any
+// point of its cell: hidden iff the occluder lies ahead and its centre is more than the cube's half-extent
+// along n, ½(|nx| + |ny| + |nz|), plus the bias (AoOptions::receiverBias) above the receiver's tangent plane. A cube that the
+// receiver's tangent plane cuts never hides it (an open flat face reads 1), whatever the plane's slope.
+STYLOS_DEPTHMAP_INLINE void testOffLatticeImpl(const DepthMapFrame& f, const PreparedCells& cells,
+                                               const std::int32_t* map, const std::uint8_t* facing, float bias,
+                                               bool cosine, Accumulator& sums, DepthMapScratch& scratch)
+{
+    std::uint32_t* index = scratch.index;
+    std::int32_t* ownKey = scratch.ownKey;
+    std::int32_t* entry = scratch.entry;
+    float* toPixelU = scratch.toPixel[0];
+    float* toPixelV = scratch.toPixel[1];
+    const std::uint32_t width = std::uint32_t(f.width);
+    const float e10 = f.e1[0], e11 = f.e1[1], e12 = f.e1[2], e20 = f.e2[0], e21 = f.e2[1], e22 = f.e2[2];
+    const float d0 = f.d[0], d1 = f.d[1], d2 = f.d[2], u0 = f.u0, v0 = f.v0;
+    const float keyMin = f.keyMin, keyScale = f.keyScale, inverse = f.keyInverse;
+    constexpr float kRound = 12582912.0f;
+    for (std::size_t first = 0; first < cells.size(); first += kBlock) {
+        if (!facing[first / kBlock]) continue;
+        const std::size_t count = std::min(kBlock, cells.size() - first);
+        const float* x = cells.x.data() + first;
+        const float* y = cells.y.data() + first;
+        const float* z = cells.z.data() + first;
+        const float* nx = cells.nx.data() + first;
+        const float* ny = cells.ny.data() + first;
+        const float* nz = cells.nz.data() + first;
+        for (std::size_t k = 0; k < count; ++k) {
+            const float u = x[k] * e10 + y[k] * e11 + z[k] * e12 + u0;
+            const float v = x[k] * e20 + y[k] * e21 + z[k] * e22 + v0;
+            const float key = x[k] * d0 + y[k] * d1 + z[k] * d2;
+            ownKey[k] = std::int32_t((key - keyMin) * keyScale) + 1;
+            const std::int32_t ju = std::int32_t(u), jv = std::int32_t(v);
+            index[k] = std::uint32_t(ju) + std::uint32_t(jv) * width;
+            toPixelU[k] = float(ju) + 0.5f - u;
+            toPixelV[k] = float(jv) + 0.5f - v;
+        }
+        for (std::size_t k = 0; k < count; ++k)
+            entry[k] = map[index[k]];
+        float* seen = sums.seen.data() + first;
+        float* total = sums.total.data() + first;
+        for (std::size_t k = 0; k < count; ++k) {
+            const std::int32_t p = entry[k];
+            const std::int32_t ahead = (p >> 8) - ownKey[k];
+            const float along = float(ahead) * inverse;
+            const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
+            const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
+            // The occluder's centre c = receiver + Δ lies at (integer + ½) on every axis.
+            const float cx = ((x[k] + (along * d0 + across1 * e10 + across2 * e20) - 0.5f + kRound) - kRound) + 0.5f;
+            const float cy = ((y[k] + (along * d1 + across1 * e11 + across2 * e21) - 0.5f + kRound) - kRound) + 0.5f;
+            const float cz = ((z[k] + (along * d2 + across1 * e12 + across2 * e22) - 0.5f + kRound) - kRound) + 0.5f;
+            const float above = (cx - x[k]) * nx[k] + (cy - y[k]) * ny[k] + (cz - z[k]) * nz[k];
+            const float reach = 0.5f * (std::abs(nx[k]) + std::abs(ny[k]) + std::abs(nz[k])) + bias;
+            const bool hidden = (p != 0) & (ahead > 0) & (above > reach);
+            const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
+            const float weight = directionWeight(nd, cosine);
+            total[k] += weight;
+            seen[k] += hidden ? 0.0f : weight;
+        }
+    }
+}
+
 void splatPortable(const DepthMapFrame& f, const PreparedCells& cells, std::int32_t* map, DepthMapScratch& s)
 {
     splatImpl(f, cells, map, s);
@@ -146,6 +210,11 @@ void testPortable(const DepthMapFrame& f, const PreparedCells& cells, const std:
                   const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums, DepthMapScratch& s)
 {
     testImpl(f, cells, map, facing, bias, cosine, sums, s);
+}
+void testOffLatticePortable(const DepthMapFrame& f, const PreparedCells& cells, const std::int32_t* map,
+                            const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums, DepthMapScratch& s)
+{
+    testOffLatticeImpl(f, cells, map, facing, bias, cosine, sums, s);
 }
 
 #if defined(__x86_64__) && defined(__GNUC__)
@@ -161,6 +230,12 @@ __attribute__((target("avx2"))) void testAvx2(const DepthMapFrame& f, const Prep
 {
     testImpl(f, cells, map, facing, bias, cosine, sums, s);
 }
+__attribute__((target("avx2"))) void testOffLatticeAvx2(const DepthMapFrame& f, const PreparedCells& cells,
+                                                        const std::int32_t* map, const std::uint8_t* facing, float bias,
+                                                        bool cosine, Accumulator& sums, DepthMapScratch& s)
+{
+    testOffLatticeImpl(f, cells, map, facing, bias, cosine, sums, s);
+}
 // 256-bit vectors: as fast here as 512-bit ones, without their clock penalty on some processors.
 #define STYLOS_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq,avx512bw,prefer-vector-width=256")))
 STYLOS_AVX512 void splatAvx512(const DepthMapFrame& f, const PreparedCells& cells, std::int32_t* map,
@@ -174,6 +249,12 @@ STYLOS_AVX512 void testAvx512(const DepthMapFrame& f, const PreparedCells& cells
 {
     testImpl(f, cells, map, facing, bias, cosine, sums, s);
 }
+STYLOS_AVX512 void testOffLatticeAvx512(const DepthMapFrame& f, const PreparedCells& cells, const std::int32_t* map,
+                                        const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums,
+                                        DepthMapScratch& s)
+{
+    testOffLatticeImpl(f, cells, map, facing, bias, cosine, sums, s);
+}
 #endif
 
 } // namespace
@@ -184,10 +265,10 @@ std::vector<DepthMapPasses> depthMapPassVariants()
 #ifdef STYLOS_DEPTHMAP_VARIANTS
     if (__builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq") &&
         __builtin_cpu_supports("avx512bw"))
-        variants.push_back({splatAvx512, testAvx512, "avx512"});
-    if (__builtin_cpu_supports("avx2")) variants.push_back({splatAvx2, testAvx2, "avx2"});
+        variants.push_back({splatAvx512, testAvx512, testOffLatticeAvx512, "avx512"});
+    if (__builtin_cpu_supports("avx2")) variants.push_back({splatAvx2, testAvx2, testOffLatticeAvx2, "avx2"});
 #endif
-    variants.push_back({splatPortable, testPortable, "portable"});
+    variants.push_back({splatPortable, testPortable, testOffLatticePortable, "portable"});
     return variants;
 }
 

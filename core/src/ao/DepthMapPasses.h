@@ -31,6 +31,11 @@ struct DepthMapPasses {
     void (*splat)(const DepthMapFrame& f, const PreparedCells& cells, std::int32_t* map, DepthMapScratch& scratch);
     void (*test)(const DepthMapFrame& f, const PreparedCells& cells, const std::int32_t* map,
                  const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums, DepthMapScratch& scratch);
+    /** Pass 2 for receivers anywhere in their cells (AoReceivers), not at the cells' centres: the
+     *  occluder's centre rebuilt from the map, hidden beyond the cube's half-extent along n + bias. */
+    void (*testOffLattice)(const DepthMapFrame& f, const PreparedCells& receivers, const std::int32_t* map,
+                           const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums,
+                           DepthMapScratch& scratch);
     const char* isa; ///< "avx512", "avx2" or "portable"
 };
 

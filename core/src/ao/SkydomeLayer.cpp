@@ -12,8 +12,8 @@
 
 namespace stylos::core::ao {
 
-Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,
-                                               const SkydomeLayerOptions& options, ProgressSink* progress)
+Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree, const SkydomeLayerOptions& options,
+                                              ProgressSink* progress, SkydomeLayerReport* out)
 {
     SkydomeLayerReport report;
     report.level = options.level.value_or(closedSurfaceLevel(octree));
@@ -36,22 +36,50 @@ Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octre
     start = Clock::now();
     std::vector<float> perLeaf;
     {
-        SubProgress step(progress, 0.1, 0.9);
-        auto values = computeAmbientOcclusion(cells, options.ao, &step);
-        if (!values) return values.error();
-        perLeaf = valuesPerLeaf(cells, *values);
+        if (options.leafReceivers && options.ao.method == AoMethod::DepthMap) {
+            AoReceivers receivers;
+            {
+                SubProgress step(progress, 0.1, 0.15);
+                auto read = leafReceivers(octree, cells, &step);
+                if (!read) return read.error();
+                receivers = std::move(read).value();
+            }
+            SubProgress step(progress, 0.15, 1.0);
+            auto values = computeAmbientOcclusion(cells, receivers, options.ao, &step);
+            if (!values) return values.error();
+            perLeaf = std::move(values).value();
+        } else {
+            SubProgress step(progress, 0.1, 1.0);
+            auto values = computeAmbientOcclusion(cells, options.ao, &step);
+            if (!values) return values.error();
+            perLeaf = valuesPerLeaf(cells, *values);
+        }
     }
-    cells = {};
     report.leaves = perLeaf.size();
     report.meanAmbient =
         perLeaf.empty() ? 0.0 : std::accumulate(perLeaf.begin(), perLeaf.end(), 0.0) / double(perLeaf.size());
     report.aoSeconds = secondsSince(start);
+    if (out) *out = report;
+    return perLeaf;
+}
+
+Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,
+                                               const SkydomeLayerOptions& options, ProgressSink* progress)
+{
+    SkydomeLayerReport report;
+    std::vector<float> perLeaf;
+    {
+        SubProgress step(progress, 0.0, 0.9);
+        auto values = computeLeafSkydome(octree, options, &step, &report);
+        if (!values) return values.error();
+        perLeaf = std::move(values).value();
+    }
 
     // The last moment a cancel leaves the output as it was.
     if (progress) progress->update(0.9);
     if (progress && progress->isCancelRequested())
         return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled");
-    start = Clock::now();
+    const auto start = Clock::now();
     {
         SubProgress step(progress, 0.9, 1.0);
         auto written = options.output == SkydomeOutput::Ply ? writeAmbientPly(octree, perLeaf, output, &step)

@@ -145,6 +145,15 @@ double DrumShape::maxLateralDepth() const
     return std::max(flutes, cavity);
 }
 
+bool DrumShape::inside(const Eigen::Vector3d& p) const
+{
+    if (!(p.z() > 0.0 && p.z() < m_p.height)) return false;
+    const double rho = std::hypot(p.x(), p.y());
+    if (rho >= m_p.radius) return false;
+    if (!(p.z() > bedDepth(p.x(), p.y(), false) && p.z() < m_p.height - bedDepth(p.x(), p.y(), true))) return false;
+    return rho < lateralRadius(std::atan2(p.y(), p.x()), p.z());
+}
+
 std::vector<const SurfacePatch*> DrumShape::patches() const
 {
     return {m_lateral.get(), m_bottom.get(), m_top.get()};

@@ -76,6 +76,14 @@ Eigen::Affine3d randomPose(std::uint64_t seed)
 
 } // namespace
 
+std::unique_ptr<SyntheticObject> makeSyntheticObject(SyntheticKind kind, const SyntheticOptions& options)
+{
+    Random random(options.seed);
+    return makeObject(kind, options, random);
+}
+
+Eigen::Affine3d syntheticPose(const SyntheticOptions& options) { return randomPose(options.seed); }
+
 std::optional<SyntheticKind> syntheticKindFromName(std::string_view name)
 {
     if (name == "drum") return SyntheticKind::Drum;

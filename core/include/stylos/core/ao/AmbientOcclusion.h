@@ -32,7 +32,7 @@
  * Multithreaded over directions (each thread its own accumulators, directions dealt by a fixed stride):
  * the same thread count gives the same bits; another differs by float rounding at most (not at all for
  * DepthMap with uniform weights, whose sums are small integers). Progress: the fraction of directions done; cancel is checked between directions.
- * Thread-safety: reentrant. Failure modes: InvalidArgument (directions outside 1..65536, bias < 0),
+ * Thread-safety: reentrant. Failure modes: InvalidArgument (directions outside 1..65536, bias or receiverBias < 0),
  * Cancelled.
  */
 #include "stylos/core/ao/AoCells.h"
@@ -58,11 +58,26 @@ struct AoOptions {
     bool cosineWeighted = false;      ///< weight each direction by n·d (irradiance) instead of 1 (solid angle)
     bool upperHemisphere = false;     ///< only directions with z > 0 (the sky above the world's horizon), as PCV
     double bias = 1.0;                ///< cell edges above the tangent plane before a cell occludes
+    /** With receivers off the cells (leaves): edges beyond the occluder cube's half-extent along the
+     *  receiver's normal before a cell occludes it (measured best on generated drums: see the overload). */
+    double receiverBias = 0.5;
     unsigned threads = 0;             ///< 0: hardware concurrency
 };
 
 /** @brief Per-cell values in [0, 1], in the order of @p cells. */
 Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,
                                                    ProgressSink* progress = nullptr);
+
+/**
+ * @brief Per-receiver values in [0, 1], in the order of @p receivers (e.g. leafReceivers: the leaves),
+ *        with @p occluders' cells as the only occluders (DepthMap only). A receiver at any point of its
+ *        cell, with its own normal n, is hidden toward d by the cell the depth map holds on its line when
+ *        that cell lies ahead and its centre is more than ½(|nx| + |ny| + |nz|) + receiverBias edges above the
+ *        receiver's tangent plane — the farthest a cube that the plane cuts can reach, plus bias: a
+ *        receiver never shadows itself on an open face of any slope. Failure modes: as above, and
+ *        InvalidArgument for the Slices method.
+ */
+Result<std::vector<float>> computeAmbientOcclusion(const AoCells& occluders, const AoReceivers& receivers,
+                                                   const AoOptions& options, ProgressSink* progress = nullptr);
 
 } // namespace stylos::core::ao

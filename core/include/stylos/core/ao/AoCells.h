@@ -51,6 +51,27 @@ Result<AoCells> cellsAtLevel(const octree::PackedOctree& octree, int level, Prog
  */
 int closedSurfaceLevel(const octree::PackedOctree& octree);
 
+/**
+ * @brief Where the skydome is measured when it is not at the cells' centres: receivers with their own
+ *        position and normal (the leaves under the cells: LeafReceivers), tested against the cells as
+ *        occluders (computeAmbientOcclusion with receivers, AmbientOcclusion.h). Positions are in cell
+ *        edges of the occluders' level from their grid corner (a cell with coordinates c spans [c, c + 1]).
+ * Memory: 24 bytes per receiver.
+ */
+struct AoReceivers {
+    std::vector<std::array<float, 3>> positions;
+    std::vector<std::array<float, 3>> normals; ///< unit
+    std::size_t size() const { return positions.size(); }
+};
+
+/**
+ * @brief The leaves of @p octree as receivers for the cells @p occluders (of the same octree): each leaf's
+ *        centre and normal, in leaf order. Progress: the fraction of leaves read; cancel every 64 Ki.
+ * @return the receivers, or Cancelled.
+ */
+Result<AoReceivers> leafReceivers(const octree::PackedOctree& octree, const AoCells& occluders,
+                                  ProgressSink* progress = nullptr);
+
 /** @brief Spreads per-cell @p values to the leaves under each cell (leafBegin.back() values). */
 std::vector<float> valuesPerLeaf(const AoCells& cells, std::span<const float> values);
 

@@ -2,13 +2,15 @@
 /** @file
  * @brief The 3D skydome of a packed octree as one call, for every caller (stylos-cli ao, the workbench's
  *        Compute skydome, the demo): the cells of the level (default closedSurfaceLevel: the deepest whose
- *        cells still close the surface), the ambient occlusion of each (computeAmbientOcclusion), spread to
- *        the leaves (valuesPerLeaf), written as the octree's "ambient" layer (.poct, atomically; the output
+ *        cells still close the surface) as occluders, every leaf measured at its own centre and normal
+ *        against them (DepthMap, leafReceivers; or, with leafReceivers off or Slices, each cell measured
+ *        at its centre and its value spread to its leaves, valuesPerLeaf), written as the octree's "ambient" layer (.poct, atomically; the output
  *        may be the octree's own file) or as a PLY of leaf centres with an "ambient" property.
  *
- * Progress: reading the cells to 0.1, the skydome to 0.9, writing to 1. A cancel is honoured until the
+ * Progress: reading the cells (and leaves) to about 0.1, the skydome to 0.9, writing to 1. A cancel is honoured until the
  * write starts (the last moment that leaves the output as it was); the writer then finishes or fails.
- * Memory: the cells of the level (AoCells) and one float a leaf. Units: directions over the unit sphere;
+ * Memory: the cells of the level (AoCells), one float a leaf, and with leaf receivers 24 + 28 bytes a
+ * leaf and 8 bytes a leaf per thread (the sums). Units: directions over the unit sphere;
  * values are fractions of the sky in [0, 1]. Thread-safety: reentrant (the octree is only read).
  * Failure modes: InvalidArgument (a level outside 0..depth, options out of range), the writer's errors
  * (Unwritable, OutOfBudget), Cancelled.
@@ -21,6 +23,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <optional>
+#include <vector>
 
 namespace stylos::core::ao {
 
@@ -32,6 +35,9 @@ enum class SkydomeOutput {
 struct SkydomeLayerOptions {
     AoOptions ao;              ///< directions, method, bias, weighting, threads
     std::optional<int> level;  ///< the level of the cells; default closedSurfaceLevel(octree)
+    /** DepthMap: measure every leaf at its own centre and normal against the level's cells (AoReceivers);
+     *  false: measure each cell at its centre and give its value to the leaves under it. */
+    bool leafReceivers = true;
     SkydomeOutput output = SkydomeOutput::Poct;
 };
 
@@ -44,6 +50,14 @@ struct SkydomeLayerReport {
     double aoSeconds = 0.0;
     double writeSeconds = 0.0;
 };
+
+/**
+ * @brief The skydome's value of every leaf of @p octree (leaf order), without writing anything: what
+ *        computeSkydomeLayer writes. Fills @p report (when given) except writeSeconds. Progress: reading
+ *        the cells to 0.1, the skydome to 1.
+ */
+Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree, const SkydomeLayerOptions& options = {},
+                                              ProgressSink* progress = nullptr, SkydomeLayerReport* report = nullptr);
 
 /** @brief Computes the skydome of @p octree and writes it to @p output (see the file comment). */
 Result<SkydomeLayerReport> computeSkydomeLayer(const octree::PackedOctree& octree, const std::filesystem::path& output,

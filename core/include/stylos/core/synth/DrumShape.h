@@ -75,6 +75,9 @@ public:
     double bedDepth(double x, double y, bool top) const;
     /** Deepest the lateral surface goes below the fillet circle anywhere, metres. */
     double maxLateralDepth() const;
+    /** Whether @p p (drum frame) lies strictly inside the solid: bedDepth(x, y, false) < z <
+     *  height − bedDepth(x, y, true) and hypot(x, y) < lateralRadius(atan2(y, x), z). */
+    bool inside(const Eigen::Vector3d& p) const;
 
     std::vector<const SurfacePatch*> patches() const override;
     Eigen::Vector3d scanCentre() const override { return {0.0, 0.0, 0.5 * m_p.height}; }

@@ -34,7 +34,7 @@ struct FragmentParameters {
 class FragmentShape final : public SyntheticObject {
 public:
     /** The faces of the piece. */
-    enum class Face { Outer, Top, SideLow, SideHigh, Inner, Bottom };
+    enum class Face { Outer, Top, SideLow, SideHigh, Inner, Bottom, None /* no face: all are tested */ };
 
     FragmentShape(const DrumParameters& drum, const FragmentParameters& fragment);
     FragmentShape(const FragmentShape&) = delete; // its patches refer to it
@@ -47,6 +47,11 @@ public:
     /** Whether @p p (drum frame) lies inside the piece, ignoring the face @p except (the one @p p was
      *  generated on, so rounding cannot drop it). */
     bool inside(const Eigen::Vector3d& p, Face except) const;
+    /** Whether @p p (drum frame) lies inside the piece: inside every face (the solid of the analytic
+     *  skydome, AnalyticSkydome.h). */
+    bool inside(const Eigen::Vector3d& p) const { return inside(p, Face::None); }
+    /** Radius of the nominal inner fracture face, metres. */
+    double innerRadius() const { return m_drum.parameters().radius - m_f.thickness; }
     /** A point of fracture face @p face (SideLow, SideHigh, Inner or Bottom) at parameters (a, b). */
     Eigen::Vector3d fracturePoint(Face face, double a, double b) const;
     /** Largest displacement of a fracture face from its nominal surface, metres. */
@@ -60,7 +65,6 @@ public:
 
 private:
     class FracturePatch;
-    double innerRadius() const { return m_drum.parameters().radius - m_f.thickness; }
 
     DrumShape m_drum;
     FragmentParameters m_f;

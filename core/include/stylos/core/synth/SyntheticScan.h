@@ -9,8 +9,11 @@
 #include "stylos/core/util/Progress.h"
 #include "stylos/core/util/Result.h"
 
+#include <Eigen/Geometry>
+
 #include <cstdint>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string_view>
 
@@ -65,6 +68,15 @@ std::filesystem::path truthPathFor(const std::filesystem::path& output);
  *        (0, π]; a drum whose flutes cannot be concave arcs), WriteFailed, Cancelled (no file is left).
  *        Thread-safe: calls share no state.
  */
+class SyntheticObject;
+
+/** @brief The object generateScan() samples for @p kind and @p options (same design, same fragment
+ *         sector and noise), e.g. to compare a method with the exact solid (AnalyticSkydome.h). Does
+ *         not validate the options (generateScan does). */
+std::unique_ptr<SyntheticObject> makeSyntheticObject(SyntheticKind kind, const SyntheticOptions& options);
+/** @brief The pose (object frame → output frame) generateScan() gives the scan of @p options. */
+Eigen::Affine3d syntheticPose(const SyntheticOptions& options);
+
 Result<SyntheticReport> generateScan(SyntheticKind kind, const SyntheticOptions& options,
                                      const std::filesystem::path& output, ProgressSink* progress = nullptr);
 
