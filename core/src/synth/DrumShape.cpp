@@ -149,7 +149,7 @@ bool DrumShape::inside(const Eigen::Vector3d& p) const
 {
     if (!(p.z() > 0.0 && p.z() < m_p.height)) return false;
     const double rho = std::hypot(p.x(), p.y());
-    if (rho >= m_p.radius) return false;
+    if (rho >= m_p.radius * std::max(scaleAt(0.0), scaleAt(m_p.height))) return false; // a quick test (taper < 0 widens)
     if (!(p.z() > bedDepth(p.x(), p.y(), false) && p.z() < m_p.height - bedDepth(p.x(), p.y(), true))) return false;
     return rho < lateralRadius(std::atan2(p.y(), p.x()), p.z());
 }
