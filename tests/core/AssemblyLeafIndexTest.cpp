@@ -63,7 +63,8 @@ AssemblyLeafIndex handMade()
     std::vector<std::int64_t> drum(25);
     for (int l = 0; l < 24; ++l) drum[std::size_t(l)] = l;
     drum[24] = -1;
-    return AssemblyLeafIndex::build(6, 4, at, {{0, drum}, {7, {8, 9, 14, 15, 15, 3}}});
+    return AssemblyLeafIndex::build(6, 4, at, {{0, drum, Eigen::Isometry3d::Identity(), "drum"},
+                                                    {7, {8, 9, 14, 15, 15, 3}, Eigen::Isometry3d::Identity(), "fragment"}});
 }
 
 TEST(AssemblyLeafIndexTest, EachPieceKeepsTheLeavesOfThePixelsItShows)
@@ -80,6 +81,7 @@ TEST(AssemblyLeafIndexTest, EachPieceKeepsTheLeavesOfThePixelsItShows)
     EXPECT_EQ(fragment->index.mappedLeafCount(), 5u); // leaf 5 (pixel 3) is under the drum's pixel
     EXPECT_EQ(index.find(0)->index.mappedLeafCount(), 20u); // the 4 drum leaves under the fragment are hidden
     EXPECT_EQ(index.find(3), nullptr);
+    EXPECT_EQ(fragment->source, "fragment");
 
     const std::vector<std::uint32_t> stroke{2, 3, 8, 9, 9, 10};
     const auto groups = index.split(stroke);

@@ -57,6 +57,8 @@ AssemblyLeafIndex AssemblyLeafIndex::build(int width, int height, std::shared_pt
         }
         Piece piece;
         piece.id = p.id;
+        piece.pose = p.pose;
+        piece.source = std::move(p.source);
         if (right < 0) { // shows nowhere
             piece.index = PixelLeafIndex::build(p.pixels, 0, 0);
         } else {

@@ -28,6 +28,7 @@
 #include <cstdint>
 #include <memory>
 #include <span>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -45,11 +46,15 @@ public:
         int left = 0;         ///< the window's first column in the image
         int top = 0;          ///< the window's first row
         PixelLeafIndex index; ///< on the window (its width × height); leafCount() is the octree's
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity(); ///< what it was indexed with (piece → drum frame)
+        std::string source;   ///< the octree it was indexed from (for a stale check)
     };
     /** @brief Input of build(): a piece's id and posedLeafPixels() (consumed). */
     struct PieceLeaves {
         std::uint64_t id = 0;
         std::vector<std::int64_t> pixels;
+        Eigen::Isometry3d pose = Eigen::Isometry3d::Identity();
+        std::string source;
     };
 
     AssemblyLeafIndex() = default;
