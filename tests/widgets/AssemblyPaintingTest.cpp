@@ -33,6 +33,7 @@
 #include <cmath>
 #include <fstream>
 #include <numbers>
+#include <map>
 #include <set>
 
 using namespace stylos;
@@ -170,6 +171,9 @@ void AssemblyPaintingTest::init()
     m_result = *made;
     QVERIFY(m_result.assemblyIndex);
     QCOMPARE(m_result.assemblyIndex->pieces().size(), std::size_t(2));
+    for (const auto& piece : m_result.assemblyIndex->pieces()) // for the record: what the index holds
+        qInfo("piece %llu: %zu leaves, %zu on its shown pixels, window %d x %d", (unsigned long long)piece.id,
+              piece.index.leafCount(), piece.index.mappedLeafCount(), piece.index.width(), piece.index.height());
 
     // Each leaf's pixel, computed here: the drum's by leafPixels (identity), the fragment's through the pose.
     const auto& map = *m_result.map;
