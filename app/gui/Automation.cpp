@@ -535,66 +535,6 @@ void grabPlateWhenReady(MainWindow& window, const QString& path, const QString& 
     });
 }
 
-void grabAssemblyPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs)
-{
-    window.resize(1500, 950);
-    dockSecondFragment(window, timeoutMs, [&window, path, timeoutMs](quint64 piece) {
-        const core::scene::Fragment* fragment = window.document().fragment(piece);
-        if (!fragment || !window.document().assembly(fragment->assembly)) {
-            std::fprintf(stderr, "stylos: --dock --paint: the second fragment is in no assembly\n");
-            QApplication::exit(1);
-            return;
-        }
-        widgets::DeveloppeeView& view = *window.developpeePanel().view();
-        auto* shown = new QMetaObject::Connection;
-        *shown = QObject::connect(&view, &widgets::DeveloppeeView::developpeeChanged, &window,
-                                  [&window, &view, piece, shown, path, timeoutMs] {
-            if (!view.assemblyIndex()) return; // the fragment's own, or the index not yet set
-            QObject::disconnect(*shown);
-            delete shown;
-            // The fragment's box in the image; marble over its left part and the drum beside it, plaster across its
-            // right part onto the drum on the other side.
-            using core::annotation::AnnotationLayer;
-            using core::annotation::GridPoint;
-            const int w = view.image().width(), h = view.image().height();
-            int left = w, right = -1, top = h, bottom = -1;
-            for (int r = 0; r < h; ++r)
-                for (int c = 0; c < w; ++c)
-                    if (view.pieceAt(c, r) == piece) left = std::min(left, c), right = std::max(right, c),
-                                                     top = std::min(top, r), bottom = std::max(bottom, r);
-            if (right < 0) {
-                std::fprintf(stderr, "stylos: --dock --paint: the fragment does not show in its assembly's développée\n");
-                QApplication::exit(1);
-                return;
-            }
-            const double fw = right - left, fh = bottom - top;
-            const auto polygon = [w, h](std::initializer_list<std::pair<double, double>> corners) {
-                std::vector<GridPoint> points;
-                for (const auto& [x, y] : corners) points.push_back({x, y});
-                return core::annotation::polygonPixels(points, w, h);
-            };
-            paintStroke(window, view, AnnotationLayer::Material, 1,
-                        polygon({{left - 0.6 * fw, top + 0.1 * fh}, {left + 0.45 * fw, top + 0.05 * fh},
-                                 {left + 0.5 * fw, bottom - 0.1 * fh}, {left - 0.5 * fw, bottom + 0.05 * fh}}));
-            paintStroke(window, view, AnnotationLayer::Material, 3,
-                        polygon({{left + 0.6 * fw, top + 0.3 * fh}, {right + 0.6 * fw, top + 0.25 * fh},
-                                 {right + 0.55 * fw, top + 0.65 * fh}, {left + 0.62 * fw, top + 0.7 * fh}}));
-            window.annotator().setActive(AnnotationLayer::Material, 1);
-            view.setTool(widgets::PaintTool::Brush);
-            // Zoomed on the fragment and its surroundings.
-            const double zoom = std::min(view.width() / (2.6 * fw), view.height() / (1.6 * fh));
-            view.setTransform(zoom, QPointF(view.width() / 2.0, view.height() / 2.0) -
-                                        zoom * QPointF(0.5 * (left + right), 0.5 * (top + bottom)));
-            window.legendDock().raise();
-            grabWhenReady(window, path, timeoutMs);
-        });
-        if (!window.developpeeLink().computeAssembly(fragment->assembly)) {
-            std::fprintf(stderr, "stylos: --dock --paint: the assembly's développée cannot start\n");
-            QApplication::exit(1);
-        }
-    });
-}
-
 void orbitWhenReady(MainWindow& window, int frames, int timeoutMs)
 {
     benchmarkWhenReady(window, "--orbit-benchmark", timeoutMs, [frames](widgets::ViewportWidget& viewport) {
