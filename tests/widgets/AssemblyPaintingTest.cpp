@@ -310,9 +310,13 @@ void AssemblyPaintingTest::theOverlayFollowsLabelsChangedElsewhere()
     const auto& index = *m_result.assemblyIndex;
     const auto* piece = index.find(m_fragment);
     QVERIFY(piece && piece->index.mappedLeafCount() > 100);
-    std::vector<std::uint32_t> leaves;
-    for (std::uint32_t l = 0; l < piece->index.leafCount() && leaves.size() < 50; ++l)
-        if (piece->index.pixelOf(l) >= 0) leaves.push_back(l);
+    // All the leaves of the first 20 pixels the fragment shows, and one more leaf elsewhere (not a majority there).
+    std::vector<std::uint32_t> shown;
+    for (std::uint32_t p = 0; p < std::uint32_t(m_view->image().width() * m_view->image().height()) && shown.size() < 21; ++p)
+        if (index.shownAt(p) == m_fragment && !index.leavesOf(m_fragment, std::vector<std::uint32_t>{p}).empty()) shown.push_back(p);
+    QCOMPARE(shown.size(), std::size_t(21));
+    std::vector<std::uint32_t> leaves = index.leavesOf(m_fragment, std::span(shown).first(20));
+    leaves.push_back(index.leavesOf(m_fragment, std::vector<std::uint32_t>{shown[20]}).front());
     QVERIFY(m_document->setLabels(m_fragment, AnnotationLayer::Material, leaves, 3, CommandText([] { return QStringLiteral("lasso"); })));
     const std::vector<std::uint32_t> pixels = index.pixelsOf(m_fragment, leaves);
     QVERIFY(!pixels.empty());
@@ -325,7 +329,8 @@ void AssemblyPaintingTest::theOverlayFollowsLabelsChangedElsewhere()
         const auto best = std::max_element(counts.begin(), counts.end(), [](auto a, auto b) { return a.second < b.second; });
         QCOMPARE(m_view->overlay().idAt(int(p % w), int(p / w)), best->first);
     }
-    QVERIFY(std::any_of(pixels.begin(), pixels.end(), [&](std::uint32_t p) { return m_view->overlay().idAt(int(p % w), int(p / w)) == 3; }));
+    QCOMPARE(pixels.size(), std::size_t(21));
+    for (std::size_t i = 0; i < 20; ++i) QCOMPARE(m_view->overlay().idAt(int(shown[i] % w), int(shown[i] / w)), std::uint8_t(3));
 }
 
 void AssemblyPaintingTest::aStaleDeveloppeeRefusesToPaint()
@@ -336,8 +341,7 @@ void AssemblyPaintingTest::aStaleDeveloppeeRefusesToPaint()
     const int steps = m_document->undoStack()->count();
 
     // Re-posed against the drum: 1 mm out.
-    core::scene::Pose moved = m_document->worldPose(m_fragment);
-    moved.translation[0] += 0.001;
+    const core::scene::Pose moved = core::scene::Pose::translation({0.001, 0.0, 0.0}) * m_document->worldPose(m_fragment);
     QVERIFY(m_document->setFragmentWorldPose(m_fragment, moved));
     QVERIFY(m_annotator->staleReason().contains(QStringLiteral("“fragment” was moved")));
     stroke(m_row, m_edge - 10, m_edge + 10);
