@@ -189,16 +189,8 @@
         <translation>το --annotation πάει μόνο με το --grab</translation>
     </message>
     <message>
-        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer).</source>
-        <translation>Με --grab: πρώτα υπολογίζει την ανάπτυξη του πρώτου θραύσματος και βάφει πάνω της μερικές περιοχές σχολιασμού (μάρμαρο, θραυσμένο μάρμαρο, γύψος· μια περιοχή οδοντωτής σμίλης στο στρώμα ιχνών εργαλείων).</translation>
-    </message>
-    <message>
         <source>--paint goes with --grab</source>
         <translation>το --paint χρησιμοποιείται με το --grab</translation>
-    </message>
-    <message>
-        <source>--paint does not go with --dock, --gizmo or --annotation</source>
-        <translation>το --paint δεν συνδυάζεται με --dock, --gizmo ή --annotation</translation>
     </message>
     <message>
         <source>With --grab: paint as --paint, then write the first fragment&apos;s plate (its développée and front view at 1:N) to BASE.pdf and BASE.png, and grab the Export plate dialog.</source>
@@ -207,6 +199,14 @@
     <message>
         <source>--plate goes with --grab alone</source>
         <translation>Το --plate πάει μόνο με το --grab</translation>
+    </message>
+    <message>
+        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer). With --dock too: after the dock, the développée of the second fragment&apos;s assembly, painted across the drum and the fragment.</source>
+        <translation>Με --grab: πρώτα υπολογισμός της ανάπτυξης του πρώτου θραύσματος και βαφή μερικών περιοχών σχολιασμού σε αυτήν (μάρμαρο, θραυσμένο μάρμαρο, γύψος· μια περιοχή οδοντωτής σμίλης στο επίπεδο ιχνών εργαλείου). Και με --dock: μετά την προσάρτηση, η ανάπτυξη της συναρμολόγησης του δεύτερου θραύσματος, βαμμένη πάνω στον σπόνδυλο και στο θραύσμα.</translation>
+    </message>
+    <message>
+        <source>--paint does not go with --gizmo or --annotation</source>
+        <translation>Το --paint δεν συνδυάζεται με --gizmo ή --annotation</translation>
     </message>
 </context>
 <context>
@@ -1120,6 +1120,30 @@
     <message>
         <source>Paint “%1”</source>
         <translation>Βάψιμο «%1»</translation>
+    </message>
+    <message>
+        <source>Not painted: the développée of the assembly is out of date (%1). Compute it again to paint.</source>
+        <translation>Δεν βάφτηκε τίποτα: η ανάπτυξη της συναρμολόγησης δεν είναι πια ενημερωμένη (%1). Υπολογίστε την ξανά για να βάψετε.</translation>
+    </message>
+    <message>
+        <source>its drum was removed</source>
+        <translation>ο σπόνδυλός της αφαιρέθηκε</translation>
+    </message>
+    <message>
+        <source>a fragment was removed</source>
+        <translation>ένα θραύσμα αφαιρέθηκε</translation>
+    </message>
+    <message>
+        <source>“%1” is no longer in the assembly</source>
+        <translation>το «%1» δεν ανήκει πια στη συναρμολόγηση</translation>
+    </message>
+    <message>
+        <source>“%1” was moved</source>
+        <translation>το «%1» μετακινήθηκε</translation>
+    </message>
+    <message>
+        <source>the octree of “%1” changed</source>
+        <translation>το οκταδικό δέντρο του «%1» άλλαξε</translation>
     </message>
 </context>
 <context>

@@ -189,15 +189,7 @@
         <translation></translation>
     </message>
     <message>
-        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer).</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>--paint goes with --grab</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
-        <source>--paint does not go with --dock, --gizmo or --annotation</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
@@ -206,6 +198,14 @@
     </message>
     <message>
         <source>--plate goes with --grab alone</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer). With --dock too: after the dock, the développée of the second fragment&apos;s assembly, painted across the drum and the fragment.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>--paint does not go with --gizmo or --annotation</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1119,6 +1119,30 @@
     </message>
     <message>
         <source>Paint “%1”</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Not painted: the développée of the assembly is out of date (%1). Compute it again to paint.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>its drum was removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>a fragment was removed</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” is no longer in the assembly</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>“%1” was moved</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>the octree of “%1” changed</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -189,16 +189,8 @@
         <translation>--annotation va avec --grab seul</translation>
     </message>
     <message>
-        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer).</source>
-        <translation>Avec --grab : calculer d’abord la développée du premier fragment et y peindre quelques régions d’annotation (marbre, marbre fracturé, plâtre ; une zone de gradine dans la couche des traces d’outil).</translation>
-    </message>
-    <message>
         <source>--paint goes with --grab</source>
         <translation>--paint s’emploie avec --grab</translation>
-    </message>
-    <message>
-        <source>--paint does not go with --dock, --gizmo or --annotation</source>
-        <translation>--paint ne va ni avec --dock, ni avec --gizmo, ni avec --annotation</translation>
     </message>
     <message>
         <source>With --grab: paint as --paint, then write the first fragment&apos;s plate (its développée and front view at 1:N) to BASE.pdf and BASE.png, and grab the Export plate dialog.</source>
@@ -207,6 +199,14 @@
     <message>
         <source>--plate goes with --grab alone</source>
         <translation>--plate va avec --grab seul</translation>
+    </message>
+    <message>
+        <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer). With --dock too: after the dock, the développée of the second fragment&apos;s assembly, painted across the drum and the fragment.</source>
+        <translation>Avec --grab : calculer d&apos;abord la développée du premier fragment et y peindre quelques régions d&apos;annotation (marbre, marbre fracturé, plâtre ; une zone de gradine dans la couche des traces d&apos;outil). Avec --dock aussi : après l&apos;accostage, la développée de l&apos;assemblage du deuxième fragment, peinte à travers le tambour et le fragment.</translation>
+    </message>
+    <message>
+        <source>--paint does not go with --gizmo or --annotation</source>
+        <translation>--paint ne va pas avec --gizmo ni --annotation</translation>
     </message>
 </context>
 <context>
@@ -1120,6 +1120,30 @@
     <message>
         <source>Paint “%1”</source>
         <translation>Peindre « %1 »</translation>
+    </message>
+    <message>
+        <source>Not painted: the développée of the assembly is out of date (%1). Compute it again to paint.</source>
+        <translation>Rien n&apos;est peint : la développée de l&apos;assemblage n&apos;est plus à jour (%1). Calculez-la à nouveau pour peindre.</translation>
+    </message>
+    <message>
+        <source>its drum was removed</source>
+        <translation>son tambour a été supprimé</translation>
+    </message>
+    <message>
+        <source>a fragment was removed</source>
+        <translation>un fragment a été supprimé</translation>
+    </message>
+    <message>
+        <source>“%1” is no longer in the assembly</source>
+        <translation>« %1 » n&apos;est plus dans l&apos;assemblage</translation>
+    </message>
+    <message>
+        <source>“%1” was moved</source>
+        <translation>« %1 » a été déplacé</translation>
+    </message>
+    <message>
+        <source>the octree of “%1” changed</source>
+        <translation>l&apos;octree de « %1 » a changé</translation>
     </message>
 </context>
 <context>

@@ -234,11 +234,14 @@ void grabAnnotationWhenReady(MainWindow& window, const QString& path, int timeou
     });
 }
 
-void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+namespace {
+
+/** Once ready: fits the first fragment's drum guides (unless it has flute guides), makes it the docking drum, selects
+ *  the second fragment and docks it to the flutes; @p then(piece) once docked. Exit 1 on failure. */
+void dockSecondFragment(MainWindow& window, int timeoutMs, std::function<void(quint64)> then)
 {
     window.setErrorDialogsEnabled(false);
-    window.resize(1400, 900);
-    whenReady(window, timeoutMs, [&window, path, timeoutMs] {
+    whenReady(window, timeoutMs, [&window, then] {
         const auto& fragments = window.document().scene().fragments();
         if (fragments.size() < 2) {
             std::fprintf(stderr, "stylos: --dock needs two fragments\n");
@@ -252,25 +255,7 @@ void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
             return std::any_of(guides.begin(), guides.end(),
                                [](const core::scene::Guide& g) { return g.kind == core::scene::GuideKind::Groove; });
         };
-        // Once the contact readout of the docked fragment is in: the picture.
-        QObject::connect(&docking.docker(), &widgets::DockRunner::docked, &window, [&window, &docking, path, timeoutMs] {
-            auto* waiting = new QMetaObject::Connection;
-            *waiting = QObject::connect(&docking.contact(), &widgets::ContactMonitor::changed, &window,
-                                        [&window, &docking, path, timeoutMs, waiting] {
-                if (docking.contact().state() != widgets::ContactMonitor::State::Ready) return;
-                QObject::disconnect(*waiting);
-                delete waiting;
-                // The picture: the readout in view, the log's line of the dock under the 3D view.
-                if (auto* developpee = window.findChild<QDockWidget*>(QStringLiteral("developpeeDock"))) developpee->hide();
-                window.logDock().raise();
-                window.resizeDocks({&window.logDock()}, {140}, Qt::Vertical);
-                if (window.viewport()) window.viewport()->fitToSelection();
-                QTimer::singleShot(300, &window, [&window, path, timeoutMs] {
-                    window.propertiesDock().showContactReadout();
-                    grabWhenReady(window, path, timeoutMs);
-                });
-            });
-        });
+        QObject::connect(&docking.docker(), &widgets::DockRunner::docked, &window, [then, piece] { then(piece); });
         QObject::connect(&docking.docker(), &widgets::DockRunner::failed, &window, [](quint64, const QString& message) {
             std::fprintf(stderr, "stylos: %s\n", qPrintable(message));
             QApplication::exit(1);
@@ -295,6 +280,33 @@ void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
             QObject::disconnect(*fitted);
             delete fitted;
             dock();
+        });
+    });
+}
+
+} // namespace
+
+void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.resize(1400, 900);
+    dockSecondFragment(window, timeoutMs, [&window, path, timeoutMs](quint64) {
+        DockingActions& docking = window.docking();
+        // Once the contact readout of the docked fragment is in: the picture.
+        auto* waiting = new QMetaObject::Connection;
+        *waiting = QObject::connect(&docking.contact(), &widgets::ContactMonitor::changed, &window,
+                                    [&window, &docking, path, timeoutMs, waiting] {
+            if (docking.contact().state() != widgets::ContactMonitor::State::Ready) return;
+            QObject::disconnect(*waiting);
+            delete waiting;
+            // The picture: the readout in view, the log's line of the dock under the 3D view.
+            if (auto* developpee = window.findChild<QDockWidget*>(QStringLiteral("developpeeDock"))) developpee->hide();
+            window.logDock().raise();
+            window.resizeDocks({&window.logDock()}, {140}, Qt::Vertical);
+            if (window.viewport()) window.viewport()->fitToSelection();
+            QTimer::singleShot(300, &window, [&window, path, timeoutMs] {
+                window.propertiesDock().showContactReadout();
+                grabWhenReady(window, path, timeoutMs);
+            });
         });
     });
 }
@@ -372,6 +384,66 @@ void grabPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs)
         });
         window.sceneDock().selectFragment(id);
         window.developpeeLink().compute();
+    });
+}
+
+void grabAssemblyPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs)
+{
+    window.resize(1500, 950);
+    dockSecondFragment(window, timeoutMs, [&window, path, timeoutMs](quint64 piece) {
+        const core::scene::Fragment* fragment = window.document().fragment(piece);
+        if (!fragment || !window.document().assembly(fragment->assembly)) {
+            std::fprintf(stderr, "stylos: --dock --paint: the second fragment is in no assembly\n");
+            QApplication::exit(1);
+            return;
+        }
+        widgets::DeveloppeeView& view = *window.developpeePanel().view();
+        auto* shown = new QMetaObject::Connection;
+        *shown = QObject::connect(&view, &widgets::DeveloppeeView::developpeeChanged, &window,
+                                  [&window, &view, piece, shown, path, timeoutMs] {
+            if (!view.assemblyIndex()) return; // the fragment's own, or the index not yet set
+            QObject::disconnect(*shown);
+            delete shown;
+            // The fragment's box in the image; marble over its left part and the drum beside it, plaster across its
+            // right part onto the drum on the other side.
+            using core::annotation::AnnotationLayer;
+            using core::annotation::GridPoint;
+            const int w = view.image().width(), h = view.image().height();
+            int left = w, right = -1, top = h, bottom = -1;
+            for (int r = 0; r < h; ++r)
+                for (int c = 0; c < w; ++c)
+                    if (view.pieceAt(c, r) == piece) left = std::min(left, c), right = std::max(right, c),
+                                                     top = std::min(top, r), bottom = std::max(bottom, r);
+            if (right < 0) {
+                std::fprintf(stderr, "stylos: --dock --paint: the fragment does not show in its assembly's développée\n");
+                QApplication::exit(1);
+                return;
+            }
+            const double fw = right - left, fh = bottom - top;
+            const auto polygon = [w, h](std::initializer_list<std::pair<double, double>> corners) {
+                std::vector<GridPoint> points;
+                for (const auto& [x, y] : corners) points.push_back({x, y});
+                return core::annotation::polygonPixels(points, w, h);
+            };
+            paintStroke(window, view, AnnotationLayer::Material, 1,
+                        polygon({{left - 0.6 * fw, top + 0.1 * fh}, {left + 0.45 * fw, top + 0.05 * fh},
+                                 {left + 0.5 * fw, bottom - 0.1 * fh}, {left - 0.5 * fw, bottom + 0.05 * fh}}));
+            paintStroke(window, view, AnnotationLayer::Material, 3,
+                        polygon({{left + 0.6 * fw, top + 0.3 * fh}, {right + 0.6 * fw, top + 0.25 * fh},
+                                 {right + 0.55 * fw, top + 0.65 * fh}, {left + 0.62 * fw, top + 0.7 * fh}}));
+            window.annotator().setActive(AnnotationLayer::Material, 1);
+            view.setTool(widgets::PaintTool::Brush);
+            // Zoomed on the fragment and its surroundings.
+            const double zoom = std::min(view.width() / (2.6 * fw), view.height() / (1.6 * fh));
+            view.setTransform(zoom, QPointF(view.width() / 2.0, view.height() / 2.0) -
+                                        zoom * QPointF(0.5 * (left + right), 0.5 * (top + bottom)));
+            window.legendDock().raise();
+            grabWhenReady(window, path, timeoutMs);
+        });
+        if (!window.developpeeLink().computeAssembly(fragment->assembly)) {
+            std::fprintf(stderr, "stylos: --dock --paint: the assembly's développée cannot start\n");
+            QApplication::exit(1);
+        }
     });
 }
 

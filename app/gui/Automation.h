@@ -52,6 +52,14 @@ void grabDockWhenReady(MainWindow& window, const QString& path, int timeoutMs = 
  *        areas are measured, grabs. Status 1 as above, or when there is no fragment or it cannot be painted.
  */
 void grabPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
+/**
+ * @brief As grabDockWhenReady() up to the dock, then the développée of the second fragment's assembly (its drum with
+ *        the docked fragment at its place), painted through the view's painting signals across the drum and the
+ *        fragment (preserved marble over the fragment's left part and the drum beside it, plaster across its right
+ *        part onto the drum), zoomed on the fragment; grabs once ready. Status 1 as above, or when the fragment is in
+ *        no assembly or does not show in its développée.
+ */
+void grabAssemblyPaintWhenReady(MainWindow& window, const QString& path, int timeoutMs = 15 * 60 * 1000);
 /** @brief As grabPaintWhenReady, then the demo plate (développée and front view of the first fragment, its material
  *         layer in colour and in hatches) written to BASE.pdf (300 dpi) and BASE.png (200 dpi) and kept in the
  *         project; the Export plate dialog with its preview grabbed into @p path. */

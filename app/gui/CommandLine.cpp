@@ -57,7 +57,8 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     const QCommandLineOption paint(QStringLiteral("paint"),
                                    tr("With --grab: first compute the first fragment's développée and paint a few "
                                       "annotation regions on it (marble, fractured marble, plaster; a claw-chisel "
-                                      "area in the tool-mark layer)."));
+                                      "area in the tool-mark layer). With --dock too: after the dock, the développée "
+                                      "of the second fragment's assembly, painted across the drum and the fragment."));
     parser.addOption(paint);
     const QCommandLineOption plate(QStringLiteral("plate"),
                                    tr("With --grab: paint as --paint, then write the first fragment's plate (its "
@@ -88,8 +89,8 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
         usageError(tr("--annotation goes with --grab alone"));
     result.grabPaint = parser.isSet(paint);
     if (result.grabPaint && result.grabPath.isEmpty()) usageError(tr("--paint goes with --grab"));
-    if (result.grabPaint && (result.grabDock || result.grabGizmo || result.grabAnnotation))
-        usageError(tr("--paint does not go with --dock, --gizmo or --annotation"));
+    if (result.grabPaint && (result.grabGizmo || result.grabAnnotation))
+        usageError(tr("--paint does not go with --gizmo or --annotation"));
     result.plateBase = parser.value(plate);
     if (!result.plateBase.isEmpty() && (result.grabPath.isEmpty() || result.grabPaint || result.grabDock ||
                                         result.grabGizmo || result.grabAnnotation))

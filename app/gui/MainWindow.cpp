@@ -128,6 +128,8 @@ void MainWindow::createDocks()
     widgets::DeveloppeeView& developpeeView = *m_developpeeDock->panel().view();
     m_annotator = new widgets::DeveloppeeAnnotator(*m_document, developpeeView, this);
     m_developpeeDock->panel().setPaintBar(new widgets::PaintToolBar(*m_document, *m_annotator, developpeeView));
+    // A stroke on an assembly's développée that is out of date: say why (the status bar and the log).
+    connect(m_annotator, &widgets::DeveloppeeAnnotator::refused, this, [this](const QString& message) { report(message, false); });
     m_measures = new widgets::ClassMeasures(*m_document, this);
     m_legendDock = new LegendDock(*m_document, m_measures, this);
     addDockWidget(Qt::RightDockWidgetArea, m_legendDock); // beside the 3D view: the classes with their figures

@@ -30,6 +30,8 @@ int main(int argc, char* argv[])
     else if (!options.grabPath.isEmpty() && options.grabGizmo) stylos::app::grabGizmoWhenReady(window, options.grabPath);
     else if (!options.grabPath.isEmpty() && options.grabAnnotation)
         stylos::app::grabAnnotationWhenReady(window, options.grabPath);
+    else if (!options.grabPath.isEmpty() && options.grabPaint && options.grabDock)
+        stylos::app::grabAssemblyPaintWhenReady(window, options.grabPath);
     else if (!options.grabPath.isEmpty() && options.grabPaint) stylos::app::grabPaintWhenReady(window, options.grabPath);
     else if (!options.grabPath.isEmpty() && options.grabDock) stylos::app::grabDockWhenReady(window, options.grabPath);
     else if (!options.grabPath.isEmpty()) stylos::app::grabWhenReady(window, options.grabPath);

@@ -2,9 +2,12 @@
 
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/developpee/AssemblyDeveloppee.h"
+#include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include "tasks/JobResult.h"
+
+#include <QFileInfo>
 
 #include <utility>
 
@@ -40,7 +43,7 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
     core::developpee::DeveloppeeOptions options = m_settings.options();
     options.axis = m_axis;
     options.radius = m_settings.radius; // the drum guides' leading radius, when known
-    core::SubProgress computing(progress, 0.2, 0.97);
+    core::SubProgress computing(progress, 0.2, 0.9);
     auto made = core::developpee::computeAssemblyDeveloppee(*drum, pieces, options, progress ? &computing : nullptr);
     if (!made) return made.error();
     DeveloppeeResult result;
@@ -56,9 +59,36 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
     result.heights = std::make_shared<const core::shading::HeightField>(std::move(made->developpee.field));
     result.shaded = std::make_shared<const core::shading::ShadedImage>(std::move(made->developpee.shaded));
     result.map = std::move(made->developpee.map);
-    result.pieceAt = std::make_shared<const std::vector<std::uint64_t>>(std::move(made->pieceAt));
+    auto pieceAt = std::make_shared<const std::vector<std::uint64_t>>(std::move(made->pieceAt));
+    result.pieceAt = pieceAt;
+    core::SubProgress indexing(progress, 0.9, 1.0);
+    auto index = leafIndex(*result.map, std::move(pieceAt), progress ? &indexing : nullptr);
+    if (!index && index.error().code == core::ErrorCode::Cancelled) return index.error();
+    if (index) result.assemblyIndex = std::make_shared<const core::annotation::AssemblyLeafIndex>(std::move(index).value());
     if (progress) progress->update(1.0);
     return result;
+}
+
+core::Result<core::annotation::AssemblyLeafIndex>
+AssemblyDeveloppeeJob::leafIndex(const core::unroll::UnrollMap& map, std::shared_ptr<const std::vector<std::uint64_t>> pieceAt,
+                                 core::ProgressSink* progress) const
+{
+    // The drum (id 0 in pieceAt) and each fragment: their leaves, posed into the drum's frame, on the shared map.
+    std::vector<core::annotation::AssemblyLeafIndex::PieceLeaves> pieces;
+    const std::size_t count = m_pieces.size() + 1;
+    for (std::size_t k = 0; k < count; ++k) {
+        const QString path = k == 0 ? m_drumPath : m_pieces[k - 1].octreePath;
+        if (QFileInfo(path).suffix().compare(QStringLiteral("poct"), Qt::CaseInsensitive) != 0)
+            return core::Error{core::ErrorCode::Unsupported, path.toStdString() + ": not an octree, no leaves to paint"};
+        auto octree = core::octree::PackedOctree::open(path.toStdString());
+        if (!octree) return octree.error();
+        const Eigen::Isometry3d pose = k == 0 ? Eigen::Isometry3d::Identity() : m_pieces[k - 1].toDrum;
+        core::SubProgress part(progress, double(k) / double(count), double(k + 1) / double(count));
+        auto pixels = core::annotation::posedLeafPixels(*octree, pose, map, progress ? &part : nullptr);
+        if (!pixels) return pixels.error();
+        pieces.push_back({k == 0 ? 0 : m_pieces[k - 1].fragmentId, std::move(pixels).value(), pose, path.toStdString()});
+    }
+    return core::annotation::AssemblyLeafIndex::build(map.width(), map.height(), std::move(pieceAt), std::move(pieces));
 }
 
 void AssemblyDeveloppeeJob::operator()(QPromise<DeveloppeeResult>& promise, core::ProgressSink& progress) const

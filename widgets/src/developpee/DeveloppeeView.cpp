@@ -68,6 +68,7 @@ void DeveloppeeView::setDeveloppee(quint64 fragmentId, const QImage& image,
     m_leafIndex = leafIndex && leafIndex->width() == image.width() && leafIndex->height() == image.height()
                       ? std::move(leafIndex)
                       : nullptr;
+    m_assemblyIndex.reset();
     resetPainting();
     setPieces(nullptr);
     fitToWindow();
@@ -137,7 +138,15 @@ bool DeveloppeeView::setResult(const DeveloppeeResult& result)
     if (!result.ok() || !result.heights) return false;
     setDeveloppee(result.fragmentId, result.image, result.heights, *result.map, result.leafIndex);
     setPieces(result.pieceAt);
+    if (result.assemblyIndex) setAssemblyIndex(result.assemblyIndex);
     return true;
+}
+
+void DeveloppeeView::setAssemblyIndex(std::shared_ptr<const core::annotation::AssemblyLeafIndex> index)
+{
+    if (!m_map || !index || index->width() != m_image.width() || index->height() != m_image.height()) return;
+    m_assemblyIndex = std::move(index);
+    Q_EMIT developpeeChanged(); // the overlay is made again, now from the pieces' labels
 }
 
 void DeveloppeeView::setPieces(std::shared_ptr<const std::vector<std::uint64_t>> pieceAt)
@@ -184,6 +193,7 @@ void DeveloppeeView::clear()
     m_pieceAt.reset();
     m_outline = {};
     m_leafIndex.reset();
+    m_assemblyIndex.reset();
     resetPainting();
     m_autoFit = true;
     setReadout({});

@@ -12,6 +12,13 @@
  *   and the overlay follows from labelsChanged like any other edit (an undo, the 3D lasso).
  * - The active layer and class: setActive(); the tool bar and the Legend dock follow activeChanged().
  * The labels must belong to the développée's octree (same leaf count); otherwise nothing is shown or painted.
+ *
+ * An assembly's développée (DeveloppeeView::assemblyIndex()): the overlay shows, at each pixel, the label of the
+ * piece shown there (the majority of that piece's leaves at the pixel); a stroke's pixels are split by the piece
+ * shown at each and each piece's leaves at its own pixels get the class — the drum's and every fragment's edits of
+ * one stroke are one undo step. Before painting, the index is checked against the document: a piece removed or
+ * moved out of the assembly, re-posed against the drum, or whose octree changed since the développée was made
+ * makes it stale, and then nothing is painted and refused() says why (once a stroke) until it is computed again.
  * GUI thread only.
  */
 #include "stylos/core/annotation/Legend.h"
@@ -20,6 +27,7 @@
 #include <QPointer>
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace stylos::widgets {
@@ -42,8 +50,14 @@ public:
     /** @brief Chooses the layer shown and painted and its class (0 or a class the layer lacks: its first). */
     void setActive(AnnotationLayer layer, std::uint8_t classId);
 
+    /** @brief Why painting on the shown assembly's développée is refused now (translated); empty when it is not
+     *         one or its index still matches the document. */
+    QString staleReason() const;
+
 Q_SIGNALS:
     void activeChanged(stylos::core::annotation::AnnotationLayer layer, std::uint8_t classId);
+    /** @brief A stroke was not painted: @p message (translated) says why and what to do. */
+    void refused(const QString& message);
 
 private:
     /** The labels of the shown fragment's active layer when they fit the view's index; else null. */
@@ -53,12 +67,20 @@ private:
     void labelsChanged(quint64 fragment, int layer, const std::vector<std::uint32_t>& leaves);
     void legendChanged();
     void paint(const std::vector<std::uint32_t>& pixels, std::uint8_t classId);
+    // An assembly's développée.
+    /** The fragment of piece @p piece (0: the drum, the view's fragment). */
+    quint64 fragmentOf(std::uint64_t piece) const;
+    /** The piece of fragment @p fragment in the shown assembly's index; nullopt when none. */
+    std::optional<std::uint64_t> pieceOf(quint64 fragment) const;
+    void rebuildAssembly();
+    void paintAssembly(const std::vector<std::uint32_t>& pixels, std::uint8_t classId, const QString& text);
 
     SceneDocument& m_document;
     QPointer<DeveloppeeView> m_view;
     AnnotationLayer m_layer = AnnotationLayer::Material;
     std::uint8_t m_class = 0;
     quint64 m_stroke = 0;
+    bool m_refusedThisStroke = false;
 };
 
 } // namespace stylos::widgets

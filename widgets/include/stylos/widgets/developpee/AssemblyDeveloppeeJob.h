@@ -4,7 +4,9 @@
  *        as one point per leaf, the fragments carried into the drum's frame by where they stand in the scene,
  *        and core::developpee::computeAssemblyDeveloppee about the drum's axis guide. The result is the
  *        drum's DeveloppeeResult (its octree's frame; fragmentId the drum) with pieceAt saying which fragment
- *        each pixel shows. Thread-safety: the job is a value; run() is reentrant and touches no widget.
+ *        each pixel shows, and assemblyIndex: the leaves of the drum and of each fragment at the pixels each shows
+ *        (core::annotation::AssemblyLeafIndex, made here in the background; painting goes through it). Memory of
+ *        the index: about 8 bytes a leaf. Thread-safety: the job is a value; run() is reentrant and touches no widget.
  */
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
 
@@ -36,6 +38,12 @@ public:
     core::Result<DeveloppeeResult> run(core::ProgressSink* progress = nullptr) const;
 
 private:
+    /** The pixel ↔ leaf index of the drum and every piece on @p map (the développée's); Unsupported for a
+     *  source that is not a `.poct`, the octree's errors, Cancelled. */
+    core::Result<core::annotation::AssemblyLeafIndex> leafIndex(const core::unroll::UnrollMap& map,
+                                                                std::shared_ptr<const std::vector<std::uint64_t>> pieceAt,
+                                                                core::ProgressSink* progress) const;
+
     QString m_drumPath;
     quint64 m_drumId;
     core::unroll::Axis m_axis;

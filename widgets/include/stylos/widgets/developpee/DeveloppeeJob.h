@@ -13,6 +13,7 @@
  * Thread-safety: the job is a value; run() and operator() are reentrant and touch no widget.
  * Everything in the result is in the octree's frame (the fragment's own), metres.
  */
+#include "stylos/core/annotation/AssemblyLeafIndex.h"
 #include "stylos/core/annotation/PixelLeafIndex.h"
 #include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/shading/HeightField.h"
@@ -59,6 +60,9 @@ struct DeveloppeeResult {
     /** The pixel ↔ leaf index of the fragment's octree on this développée's grid (annotation painting and its
      *  overlay); null when the source is not a `.poct` or for an assembly's développée. */
     std::shared_ptr<const core::annotation::PixelLeafIndex> leafIndex;
+    /** An assembly's développée: the pixel ↔ leaf index of each piece (the drum as id 0, each fragment by its id, as
+     *  in pieceAt) with the pose and octree each was indexed with; null for one fragment's or without octrees. */
+    std::shared_ptr<const core::annotation::AssemblyLeafIndex> assemblyIndex;
     DeveloppeeTimings timings;
     double heightNoise = 0.0;     ///< skydome: σ of the height noise measured, metres
     double smoothing = 0.0;       ///< skydome: the Gaussian σ the heights were smoothed with, metres (0: raw)

@@ -10,7 +10,8 @@
  * pointPicked(fragmentId, map.worldAtPixel(c + 0.5, r + 0.5, h)) — the centre of pixel (c, r) at its
  * height h — and marks that pixel; setMarker(point) draws a marker where map.pixelOf(point) lands.
  *
- * Annotation (docs/annotation.md): with a pixel ↔ leaf index (DeveloppeeResult::leafIndex) the view paints. It
+ * Annotation (docs/annotation.md): with a pixel ↔ leaf index (DeveloppeeResult::leafIndex, or an assembly's
+ * DeveloppeeResult::assemblyIndex) the view paints. It
  * draws a LabelOverlay (class ids per pixel in the legend's colours, at overlayOpacity()) that someone else
  * fills (DeveloppeeAnnotator, from the document's labels), and with a paint tool (setTool(); keys B brush,
  * E eraser, L polygon / lasso, W magic wand, H fill holes, N navigate) a left press paints: it emits
@@ -26,6 +27,7 @@
  * [c, c + 1) × [r, r + 1), row 0 at the top); "widget" positions are logical pixels of this widget;
  * widget = offset + zoom · image. GUI thread only.
  */
+#include "stylos/core/annotation/AssemblyLeafIndex.h"
 #include "stylos/core/annotation/PixelLeafIndex.h"
 #include "stylos/core/shading/HeightField.h"
 #include "stylos/core/unroll/UnrollMap.h"
@@ -87,7 +89,12 @@ public:
     const std::shared_ptr<const core::shading::HeightField>& heights() const { return m_heights; }
     /** @brief The pixel ↔ leaf index of the shown développée; null when it cannot be painted. */
     const std::shared_ptr<const core::annotation::PixelLeafIndex>& leafIndex() const { return m_leafIndex; }
-    bool canPaint() const { return m_leafIndex != nullptr; }
+    /** @brief An assembly's développée: the leaves of each piece at the pixels it shows (DeveloppeeResult::
+     *         assemblyIndex); null for one fragment's. Painting there splits the pixels by the piece shown. */
+    const std::shared_ptr<const core::annotation::AssemblyLeafIndex>& assemblyIndex() const { return m_assemblyIndex; }
+    /** @brief Sets it after setDeveloppee() (the same grid, else ignored); makes the view paintable. */
+    void setAssemblyIndex(std::shared_ptr<const core::annotation::AssemblyLeafIndex> index);
+    bool canPaint() const { return m_leafIndex != nullptr || m_assemblyIndex != nullptr; }
 
     // Annotation overlay (filled from outside; see the file comment).
     LabelOverlay& overlay() { return m_overlay; }
@@ -232,6 +239,7 @@ private:
     bool m_cursorInside = false;
 
     std::shared_ptr<const core::annotation::PixelLeafIndex> m_leafIndex;
+    std::shared_ptr<const core::annotation::AssemblyLeafIndex> m_assemblyIndex;
     LabelOverlay m_overlay;
     double m_overlayOpacity = 0.6;
     PaintTool m_tool = PaintTool::Navigate;

@@ -1,0 +1,135 @@
+// The pixel ↔ leaf index of an assembly's développée: one windowed PixelLeafIndex per piece, on the pixels it shows.
+#include "stylos/core/annotation/AssemblyLeafIndex.h"
+
+#include <algorithm>
+#include <cassert>
+#include <cmath>
+#include <limits>
+
+namespace stylos::core::annotation {
+
+Result<std::vector<std::int64_t>> posedLeafPixels(const octree::PackedOctree& octree, const Eigen::Isometry3d& pose,
+                                                  const unroll::UnrollMap& map, ProgressSink* progress)
+{
+    const std::uint64_t leaves = octree.cellCount(octree.depth());
+    std::vector<std::int64_t> pixels(leaves, -1);
+    bool cancelled = false;
+    octree.forEachCell(octree.depth(), [&](const octree::CellView& cell) {
+        const Eigen::Vector3d centre = pose * Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]);
+        if (const auto hit = map.pixelOf(centre)) {
+            const double c = std::floor(hit->column), r = std::floor(hit->row);
+            if (c >= 0 && r >= 0 && c < map.width() && r < map.height())
+                pixels[cell.index] = std::int64_t(r) * map.width() + std::int64_t(c);
+        }
+        if (progress && (cell.index & 0xFFFF) == 0) {
+            progress->update(double(cell.index) / double(std::max<std::uint64_t>(leaves, 1)));
+            if (progress->isCancelRequested()) return !(cancelled = true);
+        }
+        return true;
+    });
+    if (cancelled) return Error::at(ErrorCode::Cancelled, octree.path().string(), {}, "cancelled");
+    return pixels;
+}
+
+AssemblyLeafIndex AssemblyLeafIndex::build(int width, int height, std::shared_ptr<const std::vector<std::uint64_t>> pieceAt,
+                                           std::vector<PieceLeaves> pieces)
+{
+    assert(pieceAt && pieceAt->size() == std::size_t(width) * std::size_t(height) &&
+           "AssemblyLeafIndex::build(): pieceAt is not width × height");
+    AssemblyLeafIndex out;
+    out.m_width = width;
+    out.m_height = height;
+    out.m_pieceAt = std::move(pieceAt);
+    const auto& at = *out.m_pieceAt;
+    for (PieceLeaves& p : pieces) {
+        assert(!out.find(p.id) && "AssemblyLeafIndex::build(): two pieces of one id");
+        // Keep the leaves on the pixels this piece shows; their bounding window.
+        int left = width, top = height, right = -1, bottom = -1;
+        for (std::int64_t& pixel : p.pixels) {
+            if (pixel < 0) continue;
+            assert(std::size_t(pixel) < at.size() && "AssemblyLeafIndex::build(): pixel outside the image");
+            if (at[std::size_t(pixel)] != p.id) {
+                pixel = -1; // hidden under another piece
+                continue;
+            }
+            const int c = int(pixel % width), r = int(pixel / width);
+            left = std::min(left, c), right = std::max(right, c), top = std::min(top, r), bottom = std::max(bottom, r);
+        }
+        Piece piece;
+        piece.id = p.id;
+        piece.pose = p.pose;
+        piece.source = std::move(p.source);
+        if (right < 0) { // shows nowhere
+            piece.index = PixelLeafIndex::build(p.pixels, 0, 0);
+        } else {
+            piece.left = left;
+            piece.top = top;
+            const int w = right - left + 1;
+            for (std::int64_t& pixel : p.pixels)
+                if (pixel >= 0) pixel = (pixel / width - top) * w + (pixel % width - left);
+            piece.index = PixelLeafIndex::build(p.pixels, w, bottom - top + 1);
+        }
+        std::vector<std::int64_t>().swap(p.pixels); // peak memory: one piece's pixels at a time
+        out.m_pieces.push_back(std::move(piece));
+    }
+    return out;
+}
+
+const AssemblyLeafIndex::Piece* AssemblyLeafIndex::find(std::uint64_t id) const
+{
+    const auto it = std::find_if(m_pieces.begin(), m_pieces.end(), [id](const Piece& p) { return p.id == id; });
+    return it == m_pieces.end() ? nullptr : &*it;
+}
+
+std::uint64_t AssemblyLeafIndex::shownAt(std::uint32_t pixel) const
+{
+    return m_pieceAt && pixel < m_pieceAt->size() ? (*m_pieceAt)[pixel] : 0;
+}
+
+std::int64_t AssemblyLeafIndex::localPixel(const Piece& piece, std::uint32_t pixel) const
+{
+    if (m_width <= 0) return -1;
+    const int c = int(pixel % std::uint32_t(m_width)) - piece.left, r = int(pixel / std::uint32_t(m_width)) - piece.top;
+    if (c < 0 || r < 0 || c >= piece.index.width() || r >= piece.index.height()) return -1;
+    return std::int64_t(r) * piece.index.width() + c;
+}
+
+std::vector<std::pair<std::uint64_t, std::vector<std::uint32_t>>>
+AssemblyLeafIndex::split(std::span<const std::uint32_t> pixels) const
+{
+    std::vector<std::pair<std::uint64_t, std::vector<std::uint32_t>>> out;
+    for (const Piece& piece : m_pieces) {
+        std::vector<std::uint32_t> mine;
+        for (std::uint32_t p : pixels)
+            if (m_pieceAt && p < m_pieceAt->size() && (*m_pieceAt)[p] == piece.id) mine.push_back(p);
+        if (mine.empty()) continue;
+        std::sort(mine.begin(), mine.end());
+        mine.erase(std::unique(mine.begin(), mine.end()), mine.end());
+        out.emplace_back(piece.id, std::move(mine));
+    }
+    return out;
+}
+
+std::vector<std::uint32_t> AssemblyLeafIndex::leavesOf(std::uint64_t id, std::span<const std::uint32_t> pixels) const
+{
+    const Piece* piece = find(id);
+    if (!piece) return {};
+    std::vector<std::uint32_t> local;
+    local.reserve(pixels.size());
+    for (std::uint32_t p : pixels)
+        if (shownAt(p) == id)
+            if (const std::int64_t l = localPixel(*piece, p); l >= 0) local.push_back(std::uint32_t(l));
+    return piece->index.leavesOf(local);
+}
+
+std::vector<std::uint32_t> AssemblyLeafIndex::pixelsOf(std::uint64_t id, std::span<const std::uint32_t> leaves) const
+{
+    const Piece* piece = find(id);
+    if (!piece) return {};
+    std::vector<std::uint32_t> out = piece->index.pixelsOf(leaves); // window pixels, ascending
+    const int w = piece->index.width();
+    for (std::uint32_t& p : out) p = std::uint32_t(piece->top + int(p) / w) * std::uint32_t(m_width) + std::uint32_t(piece->left + int(p) % w);
+    return out; // row-major order is kept: the window's rows map to the image's in order
+}
+
+} // namespace stylos::core::annotation
