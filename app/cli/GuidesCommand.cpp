@@ -102,10 +102,12 @@ int runGuides(const std::vector<std::string>& args)
         std::cout << text << "\n";
     } else {
         const dock::DrumGuides& g = *guides;
-        std::printf("guides of %s in %s: %d flutes %.3f mm deep, phase %.4f deg, leading radius %.3f mm, "
+        char cone[80] = "";
+        if (g.slope != 0.0) std::snprintf(cone, sizeof cone, ", tapering %+.3f mm per metre (a cone)", g.slope * 1e3);
+        std::printf("guides of %s in %s: %d flutes %.3f mm deep, phase %.4f deg, leading radius %.3f mm%s, "
                     "RMS %.3f mm (read %.2f s, guides %.2f s, total %.2f s)\n",
                     r.input.c_str(), r.output.c_str(), g.flutes, g.fluteDepth * 1e3, g.phase * 180.0 / std::numbers::pi,
-                    g.radius * 1e3, g.rms * 1e3, seconds - g.seconds, g.seconds, seconds);
+                    g.radius * 1e3, cone, g.rms * 1e3, seconds - g.seconds, g.seconds, seconds);
     }
     return ExitOk;
 }

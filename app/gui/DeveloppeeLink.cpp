@@ -127,12 +127,16 @@ core::scene::FragmentId DeveloppeeLink::guidesOwner(const core::scene::Fragment&
     return drum && core::scene::firstGuide(*drum, core::scene::GuideKind::Axis) ? drumId : core::scene::NoFragment;
 }
 
-bool DeveloppeeLink::leadingRadius(core::scene::FragmentId owner, std::optional<double>& radius)
+bool DeveloppeeLink::leadingRadius(core::scene::FragmentId owner, widgets::DeveloppeeSettings& settings)
 {
-    radius.reset();
+    settings.radius.reset();
+    settings.radiusSlope.reset();
     if (!m_cache || owner == core::scene::NoFragment || owner == m_fitFailed) return true;
     switch (m_cache->request(owner)) {
-    case widgets::DrumGuidesCache::State::Ready: radius = m_cache->guides(owner)->radius; return true;
+    case widgets::DrumGuidesCache::State::Ready:
+        settings.radius = m_cache->guides(owner)->radius;
+        settings.radiusSlope = m_cache->guides(owner)->slope; // a tapering drum unrolls on its cone
+        return true;
     case widgets::DrumGuidesCache::State::Fitting: return false;
     case widgets::DrumGuidesCache::State::Unavailable: return true;
     }
@@ -158,7 +162,7 @@ void DeveloppeeLink::compute()
     widgets::DeveloppeeSettings settings = m_dock.settings();
     if (settings.axis) {
         const core::scene::FragmentId owner = guidesOwner(*f);
-        if (!leadingRadius(owner, settings.radius)) { // the guides are being fitted: compute when they are in
+        if (!leadingRadius(owner, settings)) { // the guides are being fitted: compute when they are in
             m_waiting = Waiting{owner, id, core::scene::NoAssembly};
             m_dock.setBusy(true);
             return;
@@ -206,7 +210,7 @@ bool DeveloppeeLink::computeAssembly(core::scene::AssemblyId id)
         return false;
     }
     widgets::DeveloppeeSettings settings = m_dock.settings();
-    if (!leadingRadius(drumId, settings.radius)) {
+    if (!leadingRadius(drumId, settings)) {
         m_waiting = Waiting{drumId, core::scene::NoFragment, id};
         m_dock.setBusy(true);
         return true;

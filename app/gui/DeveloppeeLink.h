@@ -27,6 +27,7 @@
 
 namespace stylos::widgets {
 class DeveloppeePanel;
+struct DeveloppeeSettings;
 class DrumGuidesCache;
 struct DeveloppeeResult;
 class SceneDocument;
@@ -76,9 +77,9 @@ private:
     void refreshFragment();
     /** The fragment whose guides give @p fragment's axis: itself with an Axis guide, else its drum; NoFragment. */
     core::scene::FragmentId guidesOwner(const core::scene::Fragment& fragment) const;
-    /** The leading radius for @p owner's guides: set in @p radius, true; false (a fit started, compute again on its
-     *  end: m_waiting) while it is fitted. Without guides to fit, true and no radius. */
-    bool leadingRadius(core::scene::FragmentId owner, std::optional<double>& radius);
+    /** The leading radius and taper of @p owner's guides: set in @p settings (radius, radiusSlope), true; false (a fit
+     *  started, compute again on its end: m_waiting) while it is fitted. Without guides to fit, true and neither. */
+    bool leadingRadius(core::scene::FragmentId owner, widgets::DeveloppeeSettings& settings);
     void guidesArrived(core::scene::FragmentId owner, bool failed);
 
     widgets::SceneDocument& m_document;

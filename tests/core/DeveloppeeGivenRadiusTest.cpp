@@ -41,3 +41,36 @@ TEST(DeveloppeeGivenRadius, ReportsTheLateralSurfacesMisfit)
     EXPECT_GT(off->fit.rmsResidual, 0.005); // the 5 mm offset, with the relief and noise on top of it
     EXPECT_LT(off->fit.rmsResidual, 0.008);
 }
+
+// A tapering drum (6 mm narrower at its top) unrolled on its guides' cone: the surface is that cone, nothing
+// fitted, and the misfit is the noise's; on the cylinder of its lower radius the misfit grows with the taper.
+TEST(DeveloppeeGivenRadius, ATaperingDrumUnrollsOnItsCone)
+{
+    stylos::test::TempDir dir;
+    auto o = stylos::test::coarse(0.004, 9);
+    o.radius = 0.2;
+    o.height = 0.3;
+    o.grooves = 0;
+    o.taper = 0.006;
+    const auto ply = dir / "drum.ply";
+    const auto report = stylos::test::generate(synth::SyntheticKind::Drum, o, ply);
+    std::ifstream truthFile(report.truthPath);
+    const Eigen::Affine3d pose = stylos::test::poseOf(nlohmann::json::parse(truthFile));
+    developpee::DeveloppeeOptions options;
+    options.axis = unroll::Axis{pose.translation(), pose.linear() * Eigen::Vector3d::UnitZ()};
+    options.radius = 0.2;
+    options.radiusSlope = -0.006 / 0.3;
+    options.shading = developpee::Shading::Height;
+    const auto made = developpee::computeDeveloppee(ply, options);
+    ASSERT_TRUE(made.ok()) << made.error().message;
+    EXPECT_EQ(made->fit.surface.kind(), unroll::SurfaceKind::Cone);
+    EXPECT_DOUBLE_EQ(made->fit.surface.slope(), -0.02);
+    EXPECT_DOUBLE_EQ(made->fit.surface.referenceRadius(), 0.2);
+    EXPECT_LT(made->fit.rmsResidual, 0.0015);
+
+    options.radiusSlope = 0.0; // the cylinder of the lower bed's radius: up to 6 mm off at the top
+    const auto cylinder = developpee::computeDeveloppee(ply, options);
+    ASSERT_TRUE(cylinder.ok()) << cylinder.error().message;
+    EXPECT_EQ(cylinder->fit.surface.kind(), unroll::SurfaceKind::Cylinder);
+    EXPECT_GT(cylinder->fit.rmsResidual, 0.002);
+}

@@ -7,6 +7,8 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 
 namespace stylos::core::dock {
 namespace {
@@ -52,6 +54,38 @@ TEST(DockRegistrationTest, DocksFromPerturbedStarts)
         auto docked = dockFragment(fragment.cloud, guides(), truth);
         ASSERT_TRUE(docked.ok());
         EXPECT_NEAR(docked->rms / atTruth->rms, 1.0, 0.05) << docked->rms << " vs " << atTruth->rms;
+    }
+}
+
+TEST(DockRegistrationTest, DocksAgainstATaperingDrum)
+{
+    // A drum 6 mm narrower at its top and a fragment of the same design: the guides' cone, the fragment
+    // registered against the scaled profile at its own height.
+    auto drumOptions = test::allRound(0.003, 101, 48);
+    drumOptions.designSeed = test::kDockDesign;
+    drumOptions.taper = 0.006;
+    const auto& drum = test::generatedScan("dock-drum-taper", synth::SyntheticKind::Drum, drumOptions);
+    auto fitted = fitDrumGuides(drum.cloud);
+    ASSERT_TRUE(fitted.ok()) << fitted.error().message;
+    ASSERT_NE(fitted->slope, 0.0);
+    const DrumFrame frame(*fitted);
+    auto fragmentOptions = test::allRound(0.003, 5, 48);
+    fragmentOptions.designSeed = test::kDockDesign;
+    fragmentOptions.taper = 0.006;
+    const auto& fragment = test::generatedScan("dock-fragment-taper", synth::SyntheticKind::Fragment, fragmentOptions);
+    const Eigen::Isometry3d truth = test::truePose(fragment, drum);
+    const Eigen::Vector3d centre = test::cloudCentre(fragment.cloud);
+    for (const auto& [theta, tilt, radial] : {std::tuple{3.0, 5.0, 0.015}, std::tuple{-3.0, -5.0, -0.015}}) {
+        const Eigen::Isometry3d start = test::perturbed(truth, frame, truth * centre, theta * std::numbers::pi / 180.0,
+                                                        tilt * std::numbers::pi / 180.0, radial);
+        auto result = dockFragment(fragment.cloud, *fitted, start);
+        ASSERT_TRUE(result.ok()) << result.error().message;
+        const auto e = test::dockErrors(result->pose, truth, frame, centre);
+        std::printf("[ measured ] tapering drum: theta %.4f deg, tilt %.4f deg, radial %.4f mm, rms %.3f mm\n",
+                    e.thetaDeg, e.tiltDeg, e.radialMm, result->rms * 1e3);
+        EXPECT_LT(e.thetaDeg, 0.01);
+        EXPECT_LT(e.tiltDeg, 0.02);
+        EXPECT_LT(e.radialMm, 0.05);
     }
 }
 

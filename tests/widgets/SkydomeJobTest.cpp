@@ -76,6 +76,11 @@ std::vector<float> coreValues(const QString& path, const SkydomeOptions& options
     if (level) *level = l;
     auto cells = ao::cellsAtLevel(*octree, l);
     if (!cells) return {};
+    if (options.method == ao::AoMethod::Slices) { // the slices measure the cells, each leaf gets its cell's value
+        auto values = ao::computeAmbientOcclusion(*cells, options.aoOptions());
+        if (!values) return {};
+        return ao::valuesPerLeaf(*cells, *values);
+    }
     auto receivers = ao::leafReceivers(*octree, *cells);
     if (!receivers) return {};
     auto values = ao::computeAmbientOcclusion(*cells, *receivers, options.aoOptions());

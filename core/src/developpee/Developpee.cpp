@@ -28,7 +28,7 @@ struct Split {
 /** The surface about the given axis at the given unrolling radius: a cylinder as it is (its RMS over the robust
  *  band of the lateral surface, as the fitter reports it), a cone or a revolution fitted, then measured at @p radius. */
 Result<unroll::FitReport> givenSurface(const cloud::PointCloud& cloud, const unroll::FitOptions& fitOptions,
-                                       double radius, ProgressSink* progress)
+                                       double radius, double slope, ProgressSink* progress)
 {
     if (fitOptions.kind != unroll::SurfaceKind::Cylinder) {
         auto fit = unroll::fitSurface(cloud, fitOptions, progress);
@@ -41,17 +41,19 @@ Result<unroll::FitReport> givenSurface(const cloud::PointCloud& cloud, const unr
         return fit;
     }
     const auto start = Clock::now();
-    auto surface = unroll::Surface::cylinder(*fitOptions.axis, radius);
+    auto surface = slope == 0.0 ? unroll::Surface::cylinder(*fitOptions.axis, radius)
+                                : unroll::Surface::cone(*fitOptions.axis, radius, slope, radius);
     if (!surface) return surface.error();
     unroll::FitReport report{.surface = std::move(surface).value()};
     const unroll::Axis& axis = *fitOptions.axis;
-    // Residuals h = ρ − R, then the fitter's robust band (SurfaceFit.h): the fixed point of
+    // Residuals h = ρ − r(t) (R, or R + slope·t on a tapering drum's cone), then the fitter's robust band (SurfaceFit.h): the fixed point of
     // τ = 3 × 1.4826 × median{|h| ≤ τ}, from the unroller's band 0.15 R. The RMS is over that band, so the bed
     // faces and the fracture surfaces (far from the cylinder) do not count as misfit of the lateral surface.
     std::vector<double> h(cloud.size());
     for (std::size_t i = 0; i < cloud.size(); ++i) {
         const Eigen::Vector3d d = cloud.world(i) - axis.point;
-        h[i] = std::abs((d - d.dot(axis.direction) * axis.direction).norm() - radius);
+        const double t = d.dot(axis.direction);
+        h[i] = std::abs((d - t * axis.direction).norm() - (radius + slope * t));
     }
     double tau = 0.15 * radius;
     std::vector<double> within;
@@ -99,7 +101,7 @@ Result<Developpee> develop(const cloud::PointCloud& cloud, const DeveloppeeOptio
         fitOptions.axis = axis;
     }
     SubProgress fitStep(progress, from, split.fit);
-    auto fit = fitOptions.axis && options.radius ? givenSurface(cloud, fitOptions, *options.radius, &fitStep)
+    auto fit = fitOptions.axis && options.radius ? givenSurface(cloud, fitOptions, *options.radius, options.radiusSlope.value_or(0.0), &fitStep)
                                                  : unroll::fitSurface(cloud, fitOptions, &fitStep);
     if (!fit) return fit.error();
     timings.fit = fit->seconds;

@@ -42,15 +42,7 @@ ContactReadout summariseContact(std::vector<double> d)
 
 double profileDistance(const FluteModel& model, const Eigen::Vector3d& p, Eigen::Vector3d* normal)
 {
-    const double rho = std::max(std::hypot(p.x(), p.y()), 1e-12);
-    double slope = 0.0;
-    const double r = model.radius(std::atan2(p.y(), p.x()), &slope);
-    const double k = slope / rho, g = std::sqrt(1.0 + k * k);
-    if (normal) {
-        const Eigen::Vector3d er(p.x() / rho, p.y() / rho, 0.0), ephi(-p.y() / rho, p.x() / rho, 0.0);
-        *normal = (er - k * ephi) / g;
-    }
-    return (rho - r) / g;
+    return model.distance(p, normal);
 }
 
 Result<ContactReadout> measureContact(const cloud::PointCloud& fragment, const DrumGuides& guides,

@@ -58,17 +58,13 @@ struct Problem {
     /** Residual of point @p p and its gradient with respect to p. */
     double residual(Stage stage, const Eigen::Vector3d& p, Eigen::Vector3d& gradient) const
     {
-        const double rho = std::max(std::hypot(p.x(), p.y()), 1e-12);
-        const Eigen::Vector3d er(p.x() / rho, p.y() / rho, 0.0), ephi(-p.y() / rho, p.x() / rho, 0.0);
-        if (stage == Stage::Envelope) {
-            gradient = er;
-            return rho - model.meanRadius();
+        if (stage == Stage::Envelope) { // the cylinder (cone) of the mean radius
+            const double rho = std::max(std::hypot(p.x(), p.y()), 1e-12);
+            const double kZ = model.taper() * model.meanRadius(), g = std::sqrt(1.0 + kZ * kZ);
+            gradient = Eigen::Vector3d(p.x() / rho, p.y() / rho, -kZ) / g;
+            return (rho - model.scaleAt(p.z()) * model.meanRadius()) / g;
         }
-        double slope = 0.0;
-        const double r = model.radius(std::atan2(p.y(), p.x()), &slope);
-        const double k = slope / rho, g = std::sqrt(1.0 + k * k);
-        gradient = (er - k * ephi) / g;
-        return (rho - r) / g;
+        return model.distance(p, &gradient);
     }
 
     /** Residuals at the current placement, weights for width @p tau. */

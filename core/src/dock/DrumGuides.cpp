@@ -28,6 +28,8 @@ constexpr int kMinScan = 12, kMaxScan = 64;
 constexpr double kMinStrength = 30.0;  ///< |S_N| over the noise level (generated drums 200–270, a plain one 11)
 constexpr double kMinOverMedian = 8.0; ///< |S_N| over the scan's median (generated drums 70–110, a plain one 2)
 constexpr std::size_t kCancelEvery = 1u << 14;
+/// Smallest taper taken for a cone: the radius changes by at least this over the lateral points' height, metres.
+constexpr double kMinTaper = 0.0005;
 
 Error invalid(const cloud::PointCloud& cloud, const std::string& problem)
 {
@@ -72,11 +74,71 @@ Result<LateralSamples> lateralSamples(const cloud::PointCloud& cloud, const Fram
         if (t[i] > lo + margin && t[i] < hi - margin) {
             s.theta.push_back(theta[i]);
             s.rho.push_back(rho[i]);
+            s.t.push_back(t[i]);
         }
     return s;
 }
 
+/** The heights of the samples above the folded profile along the axis: medians in kTaperBins bins of t and the
+ *  least-squares line through them. slope = d(radius)/dt; error = its standard error from the bins' scatter. */
+struct TaperLine {
+    double slope = 0.0, error = 0.0, span = 0.0; ///< span: the range of t the bins cover, metres
+};
+
+TaperLine taperLine(const LateralSamples& s, const FluteProfile& profile)
+{
+    constexpr int kTaperBins = 16;
+    constexpr std::size_t kMinPerBin = 50;
+    const auto [lo, hi] = std::minmax_element(s.t.begin(), s.t.end());
+    const double t0 = *lo, width = (*hi - *lo) / kTaperBins;
+    std::vector<std::vector<double>> bins(kTaperBins);
+    for (std::size_t i = 0; i < s.size(); ++i) {
+        const double h = s.rho[i] - profile.at(profile.fold(s.theta[i]));
+        if (!std::isfinite(h) || !(width > 0.0)) continue;
+        bins[std::size_t(std::clamp(int((s.t[i] - t0) / width), 0, kTaperBins - 1))].push_back(h);
+    }
+    std::vector<double> x, y;
+    for (int b = 0; b < kTaperBins; ++b)
+        if (bins[std::size_t(b)].size() >= kMinPerBin) {
+            x.push_back(t0 + (b + 0.5) * width);
+            y.push_back(percentile(bins[std::size_t(b)], 0.5));
+        }
+    TaperLine line;
+    if (x.size() < 4) return line;
+    const double n = double(x.size());
+    double mx = 0.0, my = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k) mx += x[k] / n, my += y[k] / n;
+    double sxx = 0.0, sxy = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k) sxx += (x[k] - mx) * (x[k] - mx), sxy += (x[k] - mx) * (y[k] - my);
+    line.slope = sxy / sxx;
+    double ss = 0.0;
+    for (std::size_t k = 0; k < x.size(); ++k) {
+        const double e = y[k] - my - line.slope * (x[k] - mx);
+        ss += e * e;
+    }
+    line.error = std::sqrt(ss / (n - 2.0) / sxx);
+    line.span = x.back() - x.front() + width;
+    return line;
+}
+
 } // namespace
+
+void placeFluteLines(DrumGuides& g)
+{
+    g.fluteLines.clear();
+    if (g.flutes < 1) return;
+    const Eigen::Vector3d e2 = g.axis.direction.cross(g.reference);
+    const double pitch = kTwoPi / g.flutes;
+    const double bottom = g.radius - g.fluteDepth;
+    for (int k = 0; k < g.flutes; ++k) {
+        const double a = g.phase + k * pitch;
+        const Eigen::Vector3d radial = std::cos(a) * g.reference + std::sin(a) * e2;
+        // On a cone the bottom runs along a generator: its distance from the axis changes by bottom·slope/R a metre.
+        const Eigen::Vector3d direction =
+            g.slope == 0.0 ? g.axis.direction : Eigen::Vector3d((g.axis.direction + (bottom * g.slope / g.radius) * radial).normalized());
+        g.fluteLines.push_back({g.axis.point + bottom * radial, direction});
+    }
+}
 
 Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOptions& options, ProgressSink* progress)
 {
@@ -96,47 +158,85 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
     g.axis = report->surface.axis();
     g.fitRms = report->rmsResidual;
     const double fitted = report->surface.radius();
-    Frame f{g.axis.point - cloud.origin, g.axis.direction, unroll::defaultReferenceDir(g.axis.direction), {}};
-    f.e2 = f.d.cross(f.e1);
-    g.reference = f.e1;
 
-    SubProgress lateralProgress(progress, 0.8, 0.9);
-    auto lateral = lateralSamples(cloud, f, fitted, std::max(0.03 * fitted, 4.0 * g.fitRms),
-                                  progress ? &lateralProgress : nullptr);
-    if (!lateral) return lateral.error();
-    if (lateral->size() < kMinLateral)
-        return invalid(cloud, "too few points on the drum's lateral surface to find its flutes");
-    const LateralSamples& s = *lateral;
-    g.lateralPoints = s.size();
+    // The flutes about an axis: the lateral points, the flute frequency (found, or the count once known), the
+    // phase, and the taper. Done about the cylinder's axis; when the drum tapers and no axis was given, done
+    // again about the cone's (a cylinder fitted to a cone whose scan is not symmetric tilts by a few 0.01°).
+    LateralSamples s, scaled;
+    double phase = 0.0, slope = 0.0;
+    for (int attempt = 0; attempt < 2; ++attempt) {
+        Frame f{g.axis.point - cloud.origin, g.axis.direction, unroll::defaultReferenceDir(g.axis.direction), {}};
+        f.e2 = f.d.cross(f.e1);
+        g.reference = f.e1;
 
-    const double medianRho = percentile(s.rho, 0.5);
-    const int lo = options.flutes ? options.flutes : kMinScan, hi = options.flutes ? options.flutes : kMaxScan;
-    const FluteFrequency freq = strongestFrequency(s, medianRho, lo, hi, kMaxSpectrum);
-    g.strength = freq.noise > 0.0 ? freq.amplitude / freq.noise : 0.0;
-    const bool scanned = options.flutes == 0;
-    if (g.strength < kMinStrength || (scanned && freq.amplitude < kMinOverMedian * freq.medianAmplitude)) {
-        char text[200];
-        if (scanned)
-            std::snprintf(text, sizeof text,
-                          "no flutes found: the strongest of %d..%d flutes stands %.1f times over the noise and "
-                          "%.1f times over the median of the others (at least %.0f and %.0f needed)",
-                          lo, hi, g.strength, freq.amplitude / std::max(freq.medianAmplitude, 1e-300),
-                          kMinStrength, kMinOverMedian);
-        else
-            std::snprintf(text, sizeof text, "no flutes found: %d flutes stand %.1f times over the noise (at least %.0f needed)",
-                          lo, g.strength, kMinStrength);
-        return invalid(cloud, text);
+        SubProgress lateralProgress(progress, attempt == 0 ? 0.8 : 0.9, attempt == 0 ? 0.85 : 0.95);
+        auto lateral = lateralSamples(cloud, f, fitted, std::max(0.03 * fitted, 4.0 * g.fitRms),
+                                      progress ? &lateralProgress : nullptr);
+        if (!lateral) return lateral.error();
+        if (lateral->size() < kMinLateral)
+            return invalid(cloud, "too few points on the drum's lateral surface to find its flutes");
+        s = std::move(lateral).value();
+        g.lateralPoints = s.size();
+
+        const double medianRho = percentile(s.rho, 0.5);
+        const int given = attempt == 0 ? options.flutes : g.flutes;
+        const int lo = given ? given : kMinScan, hi = given ? given : kMaxScan;
+        const FluteFrequency freq = strongestFrequency(s, medianRho, lo, hi, kMaxSpectrum);
+        g.strength = freq.noise > 0.0 ? freq.amplitude / freq.noise : 0.0;
+        const bool scanned = given == 0;
+        if (g.strength < kMinStrength || (scanned && freq.amplitude < kMinOverMedian * freq.medianAmplitude)) {
+            char text[200];
+            if (scanned)
+                std::snprintf(text, sizeof text,
+                              "no flutes found: the strongest of %d..%d flutes stands %.1f times over the noise and "
+                              "%.1f times over the median of the others (at least %.0f and %.0f needed)",
+                              lo, hi, g.strength, freq.amplitude / std::max(freq.medianAmplitude, 1e-300),
+                              kMinStrength, kMinOverMedian);
+            else
+                std::snprintf(text, sizeof text, "no flutes found: %d flutes stand %.1f times over the noise (at least %.0f needed)",
+                              lo, g.strength, kMinStrength);
+            return invalid(cloud, text);
+        }
+        if (progress && progress->isCancelRequested()) return Error{ErrorCode::Cancelled, cloud.source + ": cancelled"};
+
+        g.flutes = freq.count;
+        const double pitch = kTwoPi / g.flutes;
+        phase = freq.phase;
+        const auto refinePhase = [&](const LateralSamples& samples) {
+            for (int round = 0; round < 2; ++round) phase += FluteProfile(samples, g.flutes, phase).bottomOffset();
+            phase -= pitch * std::floor(phase / pitch);
+        };
+        refinePhase(s);
+        // A tapering drum: its cross-section at t is the one at the axis point scaled by 1 + (slope / R)·t. The
+        // heights above the folded profile rise or fall along the axis; while that line is significant, the
+        // samples are scaled back to the axis point's cross-section and the profile made again.
+        scaled = s;
+        slope = 0.0;
+        for (int round = 0; round < 3; ++round) {
+            const FluteProfile current(scaled, g.flutes, phase);
+            const TaperLine line = taperLine(scaled, current);
+            const bool significant = std::abs(line.slope) * line.span >= kMinTaper && std::abs(line.slope) >= 4.0 * line.error;
+            if (round == 0 && !significant) break;
+            slope += line.slope;
+            const double relative = slope / current.leadingRadius();
+            for (std::size_t i = 0; i < s.size(); ++i) scaled.rho[i] = s.rho[i] / (1.0 + relative * s.t[i]);
+            refinePhase(scaled);
+        }
+        if (attempt == 1 || slope == 0.0 || options.axis) break;
+        unroll::FitOptions coneFit = fit;
+        coneFit.kind = unroll::SurfaceKind::Cone;
+        auto cone = unroll::fitSurface(cloud, coneFit); // no progress: the cylinder's share already went by
+        if (!cone) break;                               // keep the cylinder's axis
+        unroll::Axis axis = cone->surface.axis();
+        if (axis.direction.dot(g.axis.direction) < 0.0) axis.direction = -axis.direction;
+        // The same origin along the axis as the cylinder's (the lower end of its points): the foot of that point.
+        axis.point += (g.axis.point - axis.point).dot(axis.direction) * axis.direction;
+        g.axis = axis;
     }
-    if (progress && progress->isCancelRequested()) return Error{ErrorCode::Cancelled, cloud.source + ": cancelled"};
-
-    g.flutes = freq.count;
-    const double pitch = kTwoPi / g.flutes;
-    double phase = freq.phase;
-    for (int round = 0; round < 2; ++round) phase += FluteProfile(s, g.flutes, phase).bottomOffset();
-    phase -= pitch * std::floor(phase / pitch);
-    const FluteProfile profile(s, g.flutes, phase);
+    const FluteProfile profile(scaled, g.flutes, phase);
     g.phase = phase;
     g.radius = profile.leadingRadius();
+    g.slope = slope;
     g.fluteDepth = g.radius - profile.bottomRadius();
     if (!std::isfinite(g.radius) || !(g.fluteDepth > 0.0))
         return invalid(cloud, "the flute profile has no depth (too few points per flute)");
@@ -153,8 +253,8 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
 
     std::vector<double> residual;
     residual.reserve(s.size());
-    for (std::size_t i = 0; i < s.size(); ++i) {
-        const double r = s.rho[i] - profile.at(profile.fold(s.theta[i]));
+    for (std::size_t i = 0; i < scaled.size(); ++i) {
+        const double r = scaled.rho[i] - profile.at(profile.fold(scaled.theta[i]));
         if (std::isfinite(r)) residual.push_back(r);
     }
     std::vector<double> absolute(residual.size());
@@ -166,11 +266,7 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
         if (std::abs(r) <= limit) sum += r * r, ++kept;
     g.rms = kept ? std::sqrt(sum / double(kept)) : 0.0;
 
-    const double bottom = g.radius - g.fluteDepth;
-    for (int k = 0; k < g.flutes; ++k) {
-        const double a = phase + k * pitch;
-        g.fluteLines.push_back({g.axis.point + bottom * (std::cos(a) * f.e1 + std::sin(a) * f.e2), g.axis.direction});
-    }
+    placeFluteLines(g);
     if (progress) progress->update(1.0);
     g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return g;

@@ -42,6 +42,7 @@ Result<FluteModel> FluteModel::fromGuides(const DrumGuides& g)
     m.m_flutes = g.flutes;
     m.m_pitch = 2.0 * std::numbers::pi / g.flutes;
     m.m_phase = g.phase;
+    m.m_taper = g.radius > 0.0 ? g.slope / g.radius : 0.0;
     // The DFT of the bins; bin b's centre at x_b = (b + ½ − bins/2)/bins of a pitch from the bottom.
     double sum = 0.0;
     for (double v : g.profile) sum += v;
@@ -82,6 +83,21 @@ double FluteModel::radius(double phi, double* slope) const
     }
     if (slope) *slope = dr;
     return r;
+}
+
+double FluteModel::distance(const Eigen::Vector3d& p, Eigen::Vector3d* normal) const
+{
+    const double rho = std::max(std::hypot(p.x(), p.y()), 1e-12);
+    double slope = 0.0;
+    const double r = radius(std::atan2(p.y(), p.x()), &slope);
+    const double s = scaleAt(p.z());
+    // F = ρ − s(z)·P(φ); ∇F = e_r − (s·P′(φ) / ρ)·e_φ − τ·P(φ)·e_z.
+    const double kPhi = s * slope / rho, kZ = m_taper * r, g = std::sqrt(1.0 + kPhi * kPhi + kZ * kZ);
+    if (normal) {
+        const Eigen::Vector3d er(p.x() / rho, p.y() / rho, 0.0), ephi(-p.y() / rho, p.x() / rho, 0.0);
+        *normal = (er - kPhi * ephi - Eigen::Vector3d(0.0, 0.0, kZ)) / g;
+    }
+    return (rho - s * r) / g;
 }
 
 } // namespace stylos::core::dock

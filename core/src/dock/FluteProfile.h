@@ -13,6 +13,7 @@ namespace stylos::core::dock {
 struct LateralSamples {
     std::vector<double> theta; ///< radians
     std::vector<double> rho;   ///< metres
+    std::vector<double> t;     ///< along the axis from its point, metres (the taper's fit)
     std::size_t size() const { return theta.size(); }
 };
 

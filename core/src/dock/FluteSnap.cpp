@@ -14,7 +14,7 @@ FluteSnap snapToFlutes(const std::vector<Eigen::Vector3d>& points, const FluteMo
     std::vector<std::pair<double, double>> kept; // (θ, ρ)
     kept.reserve(points.size());
     for (const Eigen::Vector3d& p : points) {
-        const double rho = std::hypot(p.x(), p.y());
+        const double rho = std::hypot(p.x(), p.y()) / model.scaleAt(p.z()); // at the axis point's cross-section
         if (std::abs(rho - model.meanRadius()) > band) continue;
         kept.emplace_back(std::atan2(p.y(), p.x()), rho);
         sumRho += rho;

@@ -50,6 +50,7 @@ nlohmann::json guidesToJson(const DrumGuides& g, double seconds)
     return {{"axis_point", vectorJson(g.axis.point)},
             {"axis_dir", vectorJson(g.axis.direction)},
             {"radius", g.radius},
+            {"radius_slope", g.slope},
             {"flute_depth", g.fluteDepth},
             {"flutes", g.flutes},
             {"flute_lines", std::move(lines)},
@@ -89,13 +90,10 @@ Result<DrumGuides> guidesFromJson(const nlohmann::json& o, const std::string& so
             g.profile.push_back(v.get<double>());
         }
     }
+    if (o.contains("radius_slope") && (!number(o, "radius_slope", g.slope) || !(std::abs(g.slope) < 1.0)))
+        return invalid(source, "radius_slope must be a number between -1 and 1 (metres of radius per metre of axis)");
     g.reference = unroll::defaultReferenceDir(g.axis.direction);
-    const Eigen::Vector3d e2 = g.axis.direction.cross(g.reference);
-    const double bottom = g.radius - g.fluteDepth;
-    for (int k = 0; k < g.flutes; ++k) {
-        const double a = g.phase + k * pitch;
-        g.fluteLines.push_back({g.axis.point + bottom * (std::cos(a) * g.reference + std::sin(a) * e2), g.axis.direction});
-    }
+    placeFluteLines(g);
     return g;
 }
 

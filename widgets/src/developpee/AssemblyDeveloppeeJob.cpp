@@ -43,6 +43,7 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
     core::developpee::DeveloppeeOptions options = m_settings.options();
     options.axis = m_axis;
     options.radius = m_settings.radius; // the drum guides' leading radius, when known
+    if (m_settings.radius) options.radiusSlope = m_settings.radiusSlope; // and their taper
     core::SubProgress computing(progress, 0.2, 0.9);
     auto made = core::developpee::computeAssemblyDeveloppee(*drum, pieces, options, progress ? &computing : nullptr);
     if (!made) return made.error();

@@ -70,6 +70,7 @@ core::developpee::DeveloppeeOptions DeveloppeeSettings::options() const
     o.surface = surface;
     o.axis = axis;
     if (axis) o.radius = radius;
+    if (axis && radius) o.radiusSlope = radiusSlope;
     o.shading = shading;
     o.directions = directions;
     o.light = light;

@@ -51,6 +51,9 @@ struct DeveloppeeOptions {
      *  fitted; the fit report's RMS is that of the distances from it over the robust band of the lateral surface, τ = 3 × 1.4826 × median, as the fitter reports it; inlierFraction the share in the band); a cone or a surface of
      *  revolution is fitted and measures arc length at this radius (its referenceRadius). Ignored without an axis. */
     std::optional<double> radius;
+    /** With a given axis and radius: the guides' taper, d radius / dt along the axis (DrumGuides::slope). A
+     *  cylinder is then the cone of that radius at the axis point and that slope (nothing fitted). */
+    std::optional<double> radiusSlope;
     Shading shading = Shading::Skydome;
     int directions = 40;                     ///< skydome azimuths, [kMinDirections, kMaxDirections]
     bool stretch = true;                     ///< skydome: stretch 1–99 % to [0, 1] (false: the exact Ω / 2π)

@@ -1,8 +1,8 @@
 #pragma once
 /** @file
- * @brief The guides of an intact fluted drum: the axis of its leading cylinder, the leading radius (the
- *        envelope of the fillets between the flutes), the flute count, depth and phase, and each flute's
- *        bottom line, parallel to the axis. The drum the fragments of a ruined one are docked against.
+ * @brief The guides of an intact fluted drum: the axis of its leading cylinder (a cone when the drum
+ *        tapers), the leading radius (the envelope of the fillets between the flutes), the flute count, depth
+ *        and phase, and each flute's bottom line, parallel to the axis (along the cone's generator). The drum the fragments of a ruined one are docked against.
  *
  * Method. The axis comes from the cylinder fit (unroll/SurfaceFit.h), or is the one given (then only the
  * radius is fitted). Azimuths θ are measured about the axis direction d from the reference direction
@@ -19,8 +19,15 @@
  * depth that radius minus the parabola's vertex. Medians make the broken region, the claw band and the
  * registration offsets between scans only shift a few points per bin.
  *
+ * A tapering drum. The heights of the lateral points above the folded profile are binned along the axis
+ * (16 bins, medians) and a line fitted through them; when the radius changes by at least 0.5 mm over the
+ * bins' span and the slope is at least 4 times its standard error, the drum is a cone: each point's ρ is
+ * scaled back to the axis point's cross-section (ρ / (1 + slope·t / R)), the phase and the profile made
+ * again, and the slope refined (3 rounds). A cylinder keeps slope 0 (the line is not significant: generated
+ * drums without taper, their broken region and claw band included, stay below it).
+ *
  * Flute k's bottom line: the point at azimuth φ₀ + k·2π/N, distance radius − depth from the axis, level
- * with the axis point; the axis direction. rms: the RMS of ρ minus the folded profile (interpolated)
+ * with the axis point; the axis direction, or on a cone its generator (leaning by (radius − depth)·slope / R). rms: the RMS of ρ minus the folded profile (interpolated)
  * over the lateral points within 5 robust σ.
  *
  * Failure (InvalidArgument, the message names the cloud's source): the fit refuses the cloud (not a
@@ -65,7 +72,10 @@ struct FluteLine {
 struct DrumGuides {
     unroll::Axis axis;            ///< the leading cylinder's axis; point at the lower bed (as fitted)
     Eigen::Vector3d reference = Eigen::Vector3d::UnitX(); ///< e₁: azimuth 0, unit, ⊥ axis
-    double radius = 0.0;          ///< leading radius: the envelope of the fillets, metres
+    double radius = 0.0;          ///< leading radius at the axis point: the envelope of the fillets, metres
+    /** d(leading radius)/dt along the axis direction: a tapering drum's cone (the cross-section at t is the
+     *  axis point's scaled by 1 + slope·t / radius); 0 for a cylinder. Dimensionless. */
+    double slope = 0.0;
     double fluteDepth = 0.0;      ///< from the leading radius to a flute's bottom, metres
     int flutes = 0;               ///< flute count
     double phase = 0.0;           ///< azimuth of flute 0's bottom from reference, radians, in [0, 2π/flutes)
@@ -81,6 +91,9 @@ struct DrumGuides {
     std::uint64_t lateralPoints = 0; ///< lateral points used
     double seconds = 0.0;         ///< wall time, the fit included
 };
+
+/** @brief Sets @p g's flute lines from its axis, reference, radius, slope, depth, count and phase. */
+void placeFluteLines(DrumGuides& g);
 
 /** @brief Fits the guides of the drum @p cloud (see the file comment). Errors: InvalidArgument naming
  *         the cloud's source, Cancelled, or the normal estimation's OutOfBudget. */

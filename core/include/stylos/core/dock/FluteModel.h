@@ -6,7 +6,9 @@
  *        (DrumGuides::profile) up to harmonic 12 of the flute frequency: smooth, with an exact derivative,
  *        and within the bins' medians by the profile's own detail (a circular-arc flute with fillets is
  *        reproduced within 0.1 mm). Coordinates are the drum frame's (DrumFrame): azimuth from the guides'
- *        reference direction about the axis. Units: metres, radians. Immutable; thread-safe.
+ *        reference direction about the axis, z along it from the axis point. A tapering drum (guides with a
+ *        radius slope) is the cone ρ = (1 + τ·z)·P(φ), τ = slope / radius: the axis point's cross-section
+ *        scaled with the height. Units: metres, radians. Immutable; thread-safe.
  */
 #include "stylos/core/dock/DrumGuides.h"
 #include "stylos/core/util/Result.h"
@@ -44,15 +46,23 @@ public:
     double phase() const { return m_phase; }     ///< azimuth of flute 0's bottom
     double meanRadius() const { return m_mean; } ///< P's mean: the cylinder of the flutes' mean radius
     double depth() const { return m_depth; }     ///< max P − min P
-    /** P(φ) and dP/dφ at azimuth @p phi. */
+    /** P(φ) and dP/dφ at azimuth @p phi: the cross-section at the axis point. */
     double radius(double phi, double* slope = nullptr) const;
+    /** τ: the relative change of the cross-section per metre along the axis (0 for a cylinder). */
+    double taper() const { return m_taper; }
+    /** The cross-section's scale at height @p z: 1 + τ·z. */
+    double scaleAt(double z) const { return 1.0 + m_taper * z; }
+    /** Signed distance of the drum-frame point @p p from the surface ρ = scaleAt(z)·P(φ), to first order
+     *  (the implicit function over its gradient's length), positive outside; @p normal: the unit outward
+     *  normal there. */
+    double distance(const Eigen::Vector3d& p, Eigen::Vector3d* normal = nullptr) const;
     /** Σ P(φ)·e^(−iNφ) over one period, normalised by the sample count: the flutes' fundamental, whose
      *  argument places the bottoms the way a fragment's own sum does (FluteSnap). */
     std::complex<double> fundamental() const { return m_fundamental; }
 
 private:
     int m_flutes = 0;
-    double m_pitch = 0.0, m_phase = 0.0, m_mean = 0.0, m_depth = 0.0;
+    double m_pitch = 0.0, m_phase = 0.0, m_mean = 0.0, m_depth = 0.0, m_taper = 0.0;
     std::vector<std::complex<double>> m_coefficients; ///< c_k, k = 1..Harmonics: P = mean + 2 Re Σ c_k e^(ikN(φ−phase))
     std::complex<double> m_fundamental;
 };

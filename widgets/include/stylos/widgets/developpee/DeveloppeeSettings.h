@@ -43,6 +43,8 @@ public:
     /** With the axis: the unrolling radius (metres), the leading radius of the drum's guides, so that a fragment and
      *  its drum unroll at the same scale (core::developpee::DeveloppeeOptions::radius); not saved. */
     std::optional<double> radius;
+    /** With the radius: the guides' taper (core::developpee::DeveloppeeOptions::radiusSlope); not saved. */
+    std::optional<double> radiusSlope;
 
     /** @brief An empty string when usable; else a translated reason (directions, pixel size or axis out of range). */
     QString problem() const;
