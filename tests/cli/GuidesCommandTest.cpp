@@ -54,7 +54,7 @@ TEST(CliGuides, DrumGivesTheContractKeysAndTheFileEqualsTheJson)
     const auto run = runCli({"guides", scan, "-o", out, "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
-    const std::vector<std::string> keys{"axis_point", "axis_dir", "radius", "flute_depth", "flutes",
+    const std::vector<std::string> keys{"axis_point", "axis_dir", "radius", "radius_slope", "flute_depth", "flutes",
                                         "flute_lines", "phase_deg", "rms", "profile", "seconds"};
     EXPECT_EQ(j.size(), keys.size());
     for (const auto& key : keys) EXPECT_TRUE(j.contains(key)) << key;
@@ -62,6 +62,7 @@ TEST(CliGuides, DrumGivesTheContractKeysAndTheFileEqualsTheJson)
     expectVector3(j["axis_dir"]);
     for (const char* key : {"radius", "flute_depth", "phase_deg", "rms", "seconds"})
         EXPECT_TRUE(j[key].is_number_float()) << key;
+    EXPECT_EQ(j["radius_slope"].get<double>(), 0.0) << "an untapered drum is a cylinder";
     ASSERT_TRUE(j["flutes"].is_number_integer());
     ASSERT_TRUE(j["flute_lines"].is_array());
     EXPECT_EQ(j["flute_lines"].size(), j["flutes"].get<std::size_t>());

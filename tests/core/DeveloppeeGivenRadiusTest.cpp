@@ -13,14 +13,18 @@
 
 using namespace stylos::core;
 
-TEST(DeveloppeeGivenRadius, ReportsTheLateralSurfacesMisfit)
+namespace {
+
+/** A plain generated drum (radius 0.2 m at its lower bed, height 0.3 m, 4 mm spacing) losing @p taper of radius
+ *  to its top, written in @p dir; the options of a développée at radius 0.2 m about its true axis. */
+developpee::DeveloppeeOptions plainDrum(const stylos::test::TempDir& dir, double taper, std::filesystem::path& ply)
 {
-    stylos::test::TempDir dir;
     auto o = stylos::test::coarse(0.004, 9);
     o.radius = 0.2;
     o.height = 0.3;
     o.grooves = 0;
-    const auto ply = dir / "drum.ply";
+    o.taper = taper;
+    ply = dir / "drum.ply";
     const auto report = stylos::test::generate(synth::SyntheticKind::Drum, o, ply);
     std::ifstream truthFile(report.truthPath);
     const Eigen::Affine3d pose = stylos::test::poseOf(nlohmann::json::parse(truthFile));
@@ -28,6 +32,16 @@ TEST(DeveloppeeGivenRadius, ReportsTheLateralSurfacesMisfit)
     options.axis = unroll::Axis{pose.translation(), pose.linear() * Eigen::Vector3d::UnitZ()};
     options.radius = 0.2;
     options.shading = developpee::Shading::Height;
+    return options;
+}
+
+} // namespace
+
+TEST(DeveloppeeGivenRadius, ReportsTheLateralSurfacesMisfit)
+{
+    stylos::test::TempDir dir;
+    std::filesystem::path ply;
+    auto options = plainDrum(dir, 0.0, ply);
     const auto made = developpee::computeDeveloppee(ply, options);
     ASSERT_TRUE(made.ok()) << made.error().message;
     EXPECT_LT(made->fit.rmsResidual, 0.0015);       // the noise and the generator's relief, not the bed faces
@@ -47,20 +61,9 @@ TEST(DeveloppeeGivenRadius, ReportsTheLateralSurfacesMisfit)
 TEST(DeveloppeeGivenRadius, ATaperingDrumUnrollsOnItsCone)
 {
     stylos::test::TempDir dir;
-    auto o = stylos::test::coarse(0.004, 9);
-    o.radius = 0.2;
-    o.height = 0.3;
-    o.grooves = 0;
-    o.taper = 0.006;
-    const auto ply = dir / "drum.ply";
-    const auto report = stylos::test::generate(synth::SyntheticKind::Drum, o, ply);
-    std::ifstream truthFile(report.truthPath);
-    const Eigen::Affine3d pose = stylos::test::poseOf(nlohmann::json::parse(truthFile));
-    developpee::DeveloppeeOptions options;
-    options.axis = unroll::Axis{pose.translation(), pose.linear() * Eigen::Vector3d::UnitZ()};
-    options.radius = 0.2;
+    std::filesystem::path ply;
+    auto options = plainDrum(dir, 0.006, ply);
     options.radiusSlope = -0.006 / 0.3;
-    options.shading = developpee::Shading::Height;
     const auto made = developpee::computeDeveloppee(ply, options);
     ASSERT_TRUE(made.ok()) << made.error().message;
     EXPECT_EQ(made->fit.surface.kind(), unroll::SurfaceKind::Cone);

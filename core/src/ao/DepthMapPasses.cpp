@@ -8,6 +8,7 @@
 #include <cmath>
 
 #define STYLOS_DEPTHMAP_INLINE __attribute__((always_inline)) inline
+#define STYLOS_DEPTHMAP_LAMBDA_INLINE __attribute__((always_inline))
 
 #if defined(__GNUC__) && !defined(__clang__)
 #pragma GCC optimize("fp-contract=off")
@@ -77,9 +78,16 @@ STYLOS_DEPTHMAP_INLINE void splatImpl(const DepthMapFrame& f, const PreparedCell
     }
 }
 
-STYLOS_DEPTHMAP_INLINE void testImpl(const DepthMapFrame& f, const PreparedCells& cells, const std::int32_t* map,
-                                     const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums,
-                                     DepthMapScratch& scratch)
+/**
+ * Pass 2's frame for every facing block: each receiver projected to its pixel (its key along d, the map entry
+ * there, its offset to the pixel centre), then @p hidden decides from the stored occluder, and the direction's
+ * weight is added. @p hidden(k, p, ahead, along, across1, across2) gets, for receiver k of the block, the map
+ * entry p, how many keys the occluder lies ahead and its offset along d and across it (cell edges).
+ */
+template <typename Hidden>
+STYLOS_DEPTHMAP_INLINE void testBlocks(const DepthMapFrame& f, const PreparedCells& cells, const std::int32_t* map,
+                                       const std::uint8_t* facing, bool cosine, Accumulator& sums,
+                                       DepthMapScratch& scratch, Hidden&& hidden)
 {
     std::uint32_t* index = scratch.index;
     std::int32_t* ownKey = scratch.ownKey;
@@ -91,8 +99,6 @@ STYLOS_DEPTHMAP_INLINE void testImpl(const DepthMapFrame& f, const PreparedCells
     const float e10 = f.e1[0], e11 = f.e1[1], e12 = f.e1[2], e20 = f.e2[0], e21 = f.e2[1], e22 = f.e2[2];
     const float d0 = f.d[0], d1 = f.d[1], d2 = f.d[2], u0 = f.u0, v0 = f.v0;
     const float keyMin = f.keyMin, keyScale = f.keyScale, inverse = f.keyInverse;
-    // Adding 1.5 · 2^23 and taking it away rounds a float of magnitude < 2^22 to the nearest integer.
-    constexpr float kRound = 12582912.0f;
     for (std::size_t first = 0; first < cells.size(); first += kBlock) {
         if (!facing[first / kBlock]) continue; // every weight 0: nothing to add
         const std::size_t count = std::min(kBlock, cells.size() - first);
@@ -117,25 +123,42 @@ STYLOS_DEPTHMAP_INLINE void testImpl(const DepthMapFrame& f, const PreparedCells
         float* seen = sums.seen.data() + first;
         float* total = sums.total.data() + first;
         for (std::size_t k = 0; k < count; ++k) {
-            // The stored cell's centre relative to this one: along d from the keys, across d from this
-            // cell's offset to its pixel centre plus the stored offset. Both cells are on the integer
-            // lattice and the estimate is within 0.1 of it, so rounding gives the exact offset.
+            // The stored cell's centre relative to this receiver: along d from the keys, across d from this
+            // receiver's offset to its pixel centre plus the stored offset.
             const std::int32_t p = entry[k];
             const std::int32_t ahead = (p >> 8) - ownKey[k];
             const float along = float(ahead) * inverse;
             const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
             const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
-            const float dx = (along * d0 + across1 * e10 + across2 * e20 + kRound) - kRound;
-            const float dy = (along * d1 + across1 * e11 + across2 * e21 + kRound) - kRound;
-            const float dz = (along * d2 + across1 * e12 + across2 * e22 + kRound) - kRound;
-            const float above = dx * nx[k] + dy * ny[k] + dz * nz[k];
-            const bool hidden = (ahead > 0) & (above > bias);
+            const bool isHidden = hidden(x[k], y[k], z[k], nx[k], ny[k], nz[k], p, ahead, along, across1, across2);
             const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
             const float weight = directionWeight(nd, cosine);
             total[k] += weight;
-            seen[k] += hidden ? 0.0f : weight;
+            seen[k] += isHidden ? 0.0f : weight;
         }
     }
+}
+
+// Adding 1.5 · 2^23 and taking it away rounds a float of magnitude < 2^22 to the nearest integer.
+constexpr float kRound = 12582912.0f;
+
+STYLOS_DEPTHMAP_INLINE void testImpl(const DepthMapFrame& f, const PreparedCells& cells, const std::int32_t* map,
+                                     const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums,
+                                     DepthMapScratch& scratch)
+{
+    const float e10 = f.e1[0], e11 = f.e1[1], e12 = f.e1[2], e20 = f.e2[0], e21 = f.e2[1], e22 = f.e2[2];
+    const float d0 = f.d[0], d1 = f.d[1], d2 = f.d[2];
+    testBlocks(f, cells, map, facing, cosine, sums, scratch,
+               [=](float, float, float, float nx, float ny, float nz, std::int32_t, std::int32_t ahead, float along,
+                   float across1, float across2) STYLOS_DEPTHMAP_LAMBDA_INLINE {
+                   // Both cells are on the integer lattice and the estimate is within 0.1 of it, so rounding
+                   // gives the exact offset.
+                   const float dx = (along * d0 + across1 * e10 + across2 * e20 + kRound) - kRound;
+                   const float dy = (along * d1 + across1 * e11 + across2 * e21 + kRound) - kRound;
+                   const float dz = (along * d2 + across1 * e12 + across2 * e22 + kRound) - kRound;
+                   const float above = dx * nx + dy * ny + dz * nz;
+                   return (ahead > 0) & (above > bias);
+               });
 }
 
 // Pass 2 for receivers off the cells' lattice (leaves, AoCells.h's AoReceivers): the same map read, the
@@ -148,58 +171,19 @@ STYLOS_DEPTHMAP_INLINE void testOffLatticeImpl(const DepthMapFrame& f, const Pre
                                                const std::int32_t* map, const std::uint8_t* facing, float bias,
                                                bool cosine, Accumulator& sums, DepthMapScratch& scratch)
 {
-    std::uint32_t* index = scratch.index;
-    std::int32_t* ownKey = scratch.ownKey;
-    std::int32_t* entry = scratch.entry;
-    float* toPixelU = scratch.toPixel[0];
-    float* toPixelV = scratch.toPixel[1];
-    const std::uint32_t width = std::uint32_t(f.width);
     const float e10 = f.e1[0], e11 = f.e1[1], e12 = f.e1[2], e20 = f.e2[0], e21 = f.e2[1], e22 = f.e2[2];
-    const float d0 = f.d[0], d1 = f.d[1], d2 = f.d[2], u0 = f.u0, v0 = f.v0;
-    const float keyMin = f.keyMin, keyScale = f.keyScale, inverse = f.keyInverse;
-    constexpr float kRound = 12582912.0f;
-    for (std::size_t first = 0; first < cells.size(); first += kBlock) {
-        if (!facing[first / kBlock]) continue;
-        const std::size_t count = std::min(kBlock, cells.size() - first);
-        const float* x = cells.x.data() + first;
-        const float* y = cells.y.data() + first;
-        const float* z = cells.z.data() + first;
-        const float* nx = cells.nx.data() + first;
-        const float* ny = cells.ny.data() + first;
-        const float* nz = cells.nz.data() + first;
-        for (std::size_t k = 0; k < count; ++k) {
-            const float u = x[k] * e10 + y[k] * e11 + z[k] * e12 + u0;
-            const float v = x[k] * e20 + y[k] * e21 + z[k] * e22 + v0;
-            const float key = x[k] * d0 + y[k] * d1 + z[k] * d2;
-            ownKey[k] = std::int32_t((key - keyMin) * keyScale) + 1;
-            const std::int32_t ju = std::int32_t(u), jv = std::int32_t(v);
-            index[k] = std::uint32_t(ju) + std::uint32_t(jv) * width;
-            toPixelU[k] = float(ju) + 0.5f - u;
-            toPixelV[k] = float(jv) + 0.5f - v;
-        }
-        for (std::size_t k = 0; k < count; ++k)
-            entry[k] = map[index[k]];
-        float* seen = sums.seen.data() + first;
-        float* total = sums.total.data() + first;
-        for (std::size_t k = 0; k < count; ++k) {
-            const std::int32_t p = entry[k];
-            const std::int32_t ahead = (p >> 8) - ownKey[k];
-            const float along = float(ahead) * inverse;
-            const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
-            const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
-            // The occluder's centre c = receiver + Δ lies at (integer + ½) on every axis.
-            const float cx = ((x[k] + (along * d0 + across1 * e10 + across2 * e20) - 0.5f + kRound) - kRound) + 0.5f;
-            const float cy = ((y[k] + (along * d1 + across1 * e11 + across2 * e21) - 0.5f + kRound) - kRound) + 0.5f;
-            const float cz = ((z[k] + (along * d2 + across1 * e12 + across2 * e22) - 0.5f + kRound) - kRound) + 0.5f;
-            const float above = (cx - x[k]) * nx[k] + (cy - y[k]) * ny[k] + (cz - z[k]) * nz[k];
-            const float reach = 0.5f * (std::abs(nx[k]) + std::abs(ny[k]) + std::abs(nz[k])) + bias;
-            const bool hidden = (p != 0) & (ahead > 0) & (above > reach);
-            const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
-            const float weight = directionWeight(nd, cosine);
-            total[k] += weight;
-            seen[k] += hidden ? 0.0f : weight;
-        }
-    }
+    const float d0 = f.d[0], d1 = f.d[1], d2 = f.d[2];
+    testBlocks(f, cells, map, facing, cosine, sums, scratch,
+               [=](float x, float y, float z, float nx, float ny, float nz, std::int32_t p, std::int32_t ahead,
+                   float along, float across1, float across2) STYLOS_DEPTHMAP_LAMBDA_INLINE {
+                   // The occluder's centre c = receiver + Δ lies at (integer + ½) on every axis.
+                   const float cx = ((x + (along * d0 + across1 * e10 + across2 * e20) - 0.5f + kRound) - kRound) + 0.5f;
+                   const float cy = ((y + (along * d1 + across1 * e11 + across2 * e21) - 0.5f + kRound) - kRound) + 0.5f;
+                   const float cz = ((z + (along * d2 + across1 * e12 + across2 * e22) - 0.5f + kRound) - kRound) + 0.5f;
+                   const float above = (cx - x) * nx + (cy - y) * ny + (cz - z) * nz;
+                   const float reach = 0.5f * (std::abs(nx) + std::abs(ny) + std::abs(nz)) + bias;
+                   return (p != 0) & (ahead > 0) & (above > reach);
+               });
 }
 
 void splatPortable(const DepthMapFrame& f, const PreparedCells& cells, std::int32_t* map, DepthMapScratch& s)
