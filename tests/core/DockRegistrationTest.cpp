@@ -85,7 +85,13 @@ TEST(DockRegistrationTest, DocksAgainstATaperingDrum)
                     e.thetaDeg, e.tiltDeg, e.radialMm, result->rms * 1e3);
         EXPECT_LT(e.thetaDeg, 0.01);
         EXPECT_LT(e.tiltDeg, 0.02);
-        EXPECT_LT(e.radialMm, 0.05);
+        // With z held, the radius is the guides' cone at the fragment's height: their slope's error (about 1e-4,
+        // DrumGuidesTest) over the ~0.3 m from the axis point adds a few hundredths of a millimetre (measured 0.08).
+        EXPECT_LT(e.radialMm, 0.1);
+        // The cone fixes only r + slope·z: z stays unobservable, kept where the start put it.
+        ASSERT_EQ(result->unobservable.size(), 1u);
+        EXPECT_EQ(result->unobservable[0], DockUnknown::Z);
+        EXPECT_EQ(result->uncertainty.size(), 5u);
     }
 }
 
