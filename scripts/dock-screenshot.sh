@@ -1,18 +1,23 @@
 #!/bin/sh
 # The picture of "Docking to the flutes" in docs/workbench.md (docs/images/workbench-dock.png): a generated drum and a
 # fragment of the same design (design seed 21), the fragment placed 2° about the drum axis and 5 mm out from its true
-# place, docked by `stylos --grab --dock` under Xvfb.   Usage: scripts/dock-screenshot.sh BUILD_DIR OUT.png
+# place, docked by `stylos --grab --dock` under Xvfb.   Usage: scripts/dock-screenshot.sh BUILD_DIR OUT.png [--paint]
+# With --paint (docs/images/assembly-paint.png, docs/annotation.md): coarser (4 mm spacing, depth 8), the two in an
+# assembly "Drum 1 reconstruction", and `--grab --dock --paint` paints across fragment and drum on the assembly's
+# développée. STYLOS_CLI overrides the stylos-cli used.
 set -eu
-build=${1:-build}; out=${2:-docs/images/workbench-dock.png}
+build=${1:-build}; mode=${3:-}
+if [ "$mode" = --paint ]; then out=${2:-docs/images/assembly-paint.png}; spacing=0.004; drumDepth=8; fragmentDepth=8
+else out=${2:-docs/images/workbench-dock.png}; spacing=0.002; drumDepth=10; fragmentDepth=9; fi
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
-cli="$build/bin/stylos-cli"
-"$cli" generate drum -o "$work/drum.ply" --spacing 0.002 --seed 101 --design-seed 21 --normals >/dev/null
-"$cli" generate fragment -o "$work/fragment.ply" --spacing 0.002 --seed 5 --design-seed 21 --normals >/dev/null
-"$cli" build "$work/drum.ply" -o "$work/drum.poct" --depth 10 >/dev/null
-"$cli" build "$work/fragment.ply" -o "$work/fragment.poct" --depth 9 >/dev/null
-python3 - "$work" <<'PY'
+cli=${STYLOS_CLI:-"$build/bin/stylos-cli"}
+"$cli" generate drum -o "$work/drum.ply" --spacing $spacing --seed 101 --design-seed 21 --normals >/dev/null
+"$cli" generate fragment -o "$work/fragment.ply" --spacing $spacing --seed 5 --design-seed 21 --normals >/dev/null
+"$cli" build "$work/drum.ply" -o "$work/drum.poct" --depth $drumDepth >/dev/null
+"$cli" build "$work/fragment.ply" -o "$work/fragment.poct" --depth $fragmentDepth >/dev/null
+python3 - "$work" "$mode" <<'PY'
 import json, math, sys
-w = sys.argv[1]
+w = sys.argv[1]; assembly = sys.argv[2] == '--paint'
 def mat(v): return [v[4*i:4*i+4] for i in range(4)]
 def mul(a, b): return [[sum(a[i][k]*b[k][j] for k in range(4)) for j in range(4)] for i in range(4)]
 def inv(m):  # rigid
@@ -35,8 +40,15 @@ drum = mul(Z, drum); start = mul(Z, start)
 def frag(i, name, octree, pose, colour):
     return {"id": i, "name": name, "octree": octree, "source": "", "pose": [x for row in pose for x in row], "colour": colour,
             "visible": True, "guides": [], "annotations": ""}
-project = {"format": "stylos-project", "version": 1, "nextId": 3,
-           "fragments": [frag(1, "Drum", "drum.poct", drum, "#b9ad98"), frag(2, "Fragment A", "fragment.poct", start, "#2f6fe0")]}
+fragments = [frag(1, "Drum", "drum.poct", drum, "#b9ad98"), frag(2, "Fragment A", "fragment.poct", start, "#2f6fe0")]
+project = {"format": "stylos-project", "version": 1, "nextId": 3, "fragments": fragments}
+if assembly:
+    fragments[0]["assembly"] = 0; fragments[1]["assembly"] = 1
+    identity = [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]
+    project = {"format": "stylos-project", "version": 2, "nextId": 3, "nextAssemblyId": 2,
+               "assemblies": [{"id": 1, "name": "Drum 1 reconstruction", "pose": identity, "drum": 1, "visible": True}],
+               "fragments": fragments}
 json.dump(project, open(w + '/dock.stylos', 'w'), indent=1)
 PY
-xvfb-run -a -s "-screen 0 1600x1000x24" "$build/bin/stylos" --grab "$out" --dock "$work/dock.stylos"
+paint=; [ "$mode" = --paint ] && paint=--paint
+xvfb-run -a -s "-screen 0 1600x1000x24" "$build/bin/stylos" --grab "$out" --dock $paint "$work/dock.stylos"
