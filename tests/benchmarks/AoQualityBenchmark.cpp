@@ -38,6 +38,8 @@
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/synth/SyntheticScan.h"
 
+#include "BenchmarkClock.h"
+
 #include <nlohmann/json.hpp>
 
 #include <Eigen/Geometry>
@@ -88,18 +90,8 @@ struct Settings {
     std::exit(1);
 }
 
-double now()
-{
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
-}
-
-std::string loadAverage()
-{
-    std::ifstream in("/proc/loadavg");
-    std::string a, b, c;
-    in >> a >> b >> c;
-    return a + " " + b + " " + c;
-}
+using stylos::bench::loadAverage;
+using stylos::bench::now;
 
 Settings parse(int argc, char** argv)
 {
