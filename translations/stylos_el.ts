@@ -51,6 +51,16 @@
         <source>&amp;Tool mark layer</source>
         <translation>Επίπεδο ί&amp;χνών εργαλείου</translation>
     </message>
+    <message>
+        <source>3D lasso</source>
+        <comment>toolbar</comment>
+        <translation>Λάσο 3D</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <comment>toolbar</comment>
+        <translation>Σβήσιμο</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>
@@ -617,6 +627,36 @@
         <source>&amp;Annotation</source>
         <translation>Σ&amp;χολιασμός</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <comment>toolbar</comment>
+        <translation>Αναίρεση</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <comment>toolbar</comment>
+        <translation>Επανάληψη</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <comment>toolbar</comment>
+        <translation>Προσαρμογή</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <comment>toolbar</comment>
+        <translation>Ορθογραφική</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <comment>toolbar</comment>
+        <translation>Θόλος ουρανού</translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <comment>toolbar</comment>
+        <translation>Ανάπτυγμα</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::MainWindow</name>
@@ -669,6 +709,10 @@
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
         <translation>Θόλος ουρανού του %1: %2 κελιά στο επίπεδο %3, %4 κατευθύνσεις ουρανού, %5 s</translation>
+    </message>
+    <message>
+        <source>View and tools toolbar</source>
+        <translation>Γραμμή προβολής και εργαλείων</translation>
     </message>
 </context>
 <context>
@@ -888,6 +932,21 @@
             <numerusform>Αφαιρέθηκε %n αχρησιμοποίητο οκταδικό δέντρο από την κρυφή μνήμη, ελευθερώθηκαν %1</numerusform>
             <numerusform>Αφαιρέθηκαν %n αχρησιμοποίητα οκταδικά δέντρα από την κρυφή μνήμη, ελευθερώθηκαν %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <comment>toolbar</comment>
+        <translation>Άνοιγμα</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <comment>toolbar</comment>
+        <translation>Αποθήκευση</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <comment>toolbar</comment>
+        <translation>Εισαγωγή</translation>
     </message>
 </context>
 <context>

@@ -51,6 +51,16 @@
         <source>&amp;Tool mark layer</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>3D lasso</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>
@@ -617,6 +627,36 @@
         <source>&amp;Annotation</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::MainWindow</name>
@@ -668,6 +708,10 @@
     </message>
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>View and tools toolbar</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -888,6 +932,21 @@
             <numerusform>Removed %n unused octree from the cache, %1 freed</numerusform>
             <numerusform>Removed %n unused octrees from the cache, %1 freed</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

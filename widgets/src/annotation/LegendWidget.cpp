@@ -19,6 +19,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QScrollBar>
 #include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -81,11 +82,12 @@ LegendWidget::LegendWidget(SceneDocument& document, ClassMeasures* measures, QWi
     m_tree->setUniformRowHeights(true);
     m_tree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     // Every column as wide as its contents (the hatch boxes included: their longest name in Greek is cut
-    // otherwise); a narrow dock scrolls sideways rather than cutting a word.
+    // otherwise), and the tree as wide as the columns (fitColumns): the dock widens rather than cut a column.
     for (int column : {NameColumn, HatchColumn, CellsColumn, AreaColumn})
         m_tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
     m_tree->header()->setStretchLastSection(false);
-    m_tree->setMinimumWidth(340);
+    m_tree->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_tree->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOn); // its width counted once, whether it shows or not
 
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_add);
@@ -325,6 +327,15 @@ void LegendWidget::rebuild()
     updateButtons();
 }
 
+void LegendWidget::fitColumns()
+{
+    const QAbstractItemView* view = m_tree; // sizeHintForColumn() is public there (the tree's own override is not)
+    int width = 2 * m_tree->frameWidth() + m_tree->verticalScrollBar()->sizeHint().width();
+    for (int column = 0; column < ColumnCount; ++column)
+        width += std::max(view->sizeHintForColumn(column), m_tree->header()->sectionSizeHint(column));
+    m_tree->setMinimumWidth(width);
+}
+
 void LegendWidget::refreshMeasures()
 {
     const QLocale locale;
@@ -343,6 +354,7 @@ void LegendWidget::refreshMeasures()
         }
     }
     m_updating = false;
+    fitColumns();
 }
 
 void LegendWidget::updateButtons()
