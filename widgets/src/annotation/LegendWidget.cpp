@@ -1,5 +1,6 @@
 // The Legend dock's contents: classes of both layers with their measures, and the legend's edits.
 #include "stylos/widgets/annotation/LegendWidget.h"
+#include "annotation/HatchBox.h"
 
 #include "stylos/widgets/annotation/ClassMeasures.h"
 #include "stylos/widgets/annotation/LabelStore.h"
@@ -56,7 +57,7 @@ QIcon hatchIcon(Hatch hatch)
         {Hatch::None, Qt::NoBrush},          {Hatch::Diagonal, Qt::BDiagPattern},   {Hatch::BackDiagonal, Qt::FDiagPattern},
         {Hatch::Cross, Qt::CrossPattern},    {Hatch::DiagonalCross, Qt::DiagCrossPattern}, {Hatch::Dots, Qt::Dense6Pattern},
         {Hatch::Horizontal, Qt::HorPattern}, {Hatch::Vertical, Qt::VerPattern},     {Hatch::Solid, Qt::SolidPattern}};
-    QPixmap pixmap(14, 14);
+    QPixmap pixmap(28, 14); // the HatchBox shows it alone: wide enough to read the pattern
     pixmap.fill(Qt::white);
     QPainter painter(&pixmap);
     for (const auto& [h, style] : styles)
@@ -304,11 +305,11 @@ void LegendWidget::rebuild()
             item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable);
             item->setTextAlignment(CellsColumn, Qt::AlignRight | Qt::AlignVCenter);
             item->setTextAlignment(AreaColumn, Qt::AlignRight | Qt::AlignVCenter);
-            auto* hatch = new QComboBox(m_tree);
+            auto* hatch = new HatchBox(m_tree);
             hatch->setObjectName(QStringLiteral("legendHatch_%1_%2").arg(core::annotation::layerName(layer)).arg(c.id));
             for (Hatch h : Hatches) hatch->addItem(hatchIcon(h), LegendText::hatchTitle(h), int(h));
             hatch->setCurrentIndex(hatch->findData(int(c.hatch)));
-            hatch->setToolTip(tr("The black-and-white pattern of this class on plates"));
+            hatch->setDescription(tr("The black-and-white pattern of this class on plates"));
             m_tree->setItemWidget(item, HatchColumn, hatch);
             const std::uint8_t id = c.id;
             connect(hatch, &QComboBox::currentIndexChanged, this, [this, layer, id, hatch] {
