@@ -117,6 +117,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::app::Automation</name>
+    <message>
+        <source>Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the painted regions are an illustration.</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::CommandLine</name>
     <message>
         <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>

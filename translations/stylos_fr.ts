@@ -117,6 +117,13 @@
     </message>
 </context>
 <context>
+    <name>stylos::app::Automation</name>
+    <message>
+        <source>Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the painted regions are an illustration.</source>
+        <translation>Tambour de démonstration (%1) : A, développée sous le skydome, matériau et état en couleur ; B, vue de face éclairée depuis l’observateur, les mêmes classes en hachures noir et blanc. Relevé généré ; les régions peintes sont une illustration.</translation>
+    </message>
+</context>
+<context>
     <name>stylos::app::CommandLine</name>
     <message>
         <source>Stylos, a workbench for very large 3D scans of monuments. With no file, opens the demo scene.</source>
