@@ -120,7 +120,7 @@
     <name>stylos::app::Automation</name>
     <message>
         <source>Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the painted regions are an illustration.</source>
-        <translation>Σπόνδυλος επίδειξης (%1): Α, ανάπτυγμα υπό θόλο ουρανού, υλικό και κατάσταση σε χρώμα· Β, πρόσοψη φωτισμένη από τον παρατηρητή, οι ίδιες κλάσεις ως ασπρόμαυρες διαγραμμίσεις. Παραγόμενη σάρωση· οι βαμμένες περιοχές είναι ενδεικτικές.</translation>
+        <translation>Σπόνδυλος επίδειξης (%1): A, ανάπτυγμα υπό θόλο ουρανού, υλικό και κατάσταση σε χρώμα· B, πρόσοψη φωτισμένη από τον παρατηρητή, οι ίδιες κλάσεις ως ασπρόμαυρες διαγραμμίσεις. Παραγόμενη σάρωση· οι βαμμένες περιοχές είναι ενδεικτικές.</translation>
     </message>
 </context>
 <context>
