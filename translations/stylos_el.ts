@@ -51,6 +51,16 @@
         <source>&amp;Tool mark layer</source>
         <translation>Επίπεδο ί&amp;χνών εργαλείου</translation>
     </message>
+    <message>
+        <source>3D lasso</source>
+        <comment>toolbar</comment>
+        <translation>Λάσο 3D</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <comment>toolbar</comment>
+        <translation>Σβήσιμο</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>
@@ -104,6 +114,13 @@
     <message>
         <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
         <translation>Ξετύλιγμα του τυμπάνου της συναρμολόγησης με κάθε θραύσμα της στη θέση του, στον άξονα του τυμπάνου: η αναστήλωση σε 2D, οι ελεύθερες θέσεις· κλικ σε ένα θραύσμα το επιλέγει</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::Automation</name>
+    <message>
+        <source>Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the painted regions are an illustration.</source>
+        <translation>Σπόνδυλος επίδειξης (%1): A, ανάπτυγμα υπό θόλο ουρανού, υλικό και κατάσταση σε χρώμα· B, πρόσοψη φωτισμένη από τον παρατηρητή, οι ίδιες κλάσεις ως ασπρόμαυρες διαγραμμίσεις. Παραγόμενη σάρωση· οι βαμμένες περιοχές είναι ενδεικτικές.</translation>
     </message>
 </context>
 <context>
@@ -617,6 +634,36 @@
         <source>&amp;Annotation</source>
         <translation>Σ&amp;χολιασμός</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <comment>toolbar</comment>
+        <translation>Αναίρεση</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <comment>toolbar</comment>
+        <translation>Επανάληψη</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <comment>toolbar</comment>
+        <translation>Προσαρμογή</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <comment>toolbar</comment>
+        <translation>Ορθογραφική</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <comment>toolbar</comment>
+        <translation>Θόλος ουρανού</translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <comment>toolbar</comment>
+        <translation>Ανάπτυγμα</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::MainWindow</name>
@@ -669,6 +716,10 @@
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
         <translation>Θόλος ουρανού του %1: %2 κελιά στο επίπεδο %3, %4 κατευθύνσεις ουρανού, %5 s</translation>
+    </message>
+    <message>
+        <source>View and tools toolbar</source>
+        <translation>Γραμμή προβολής και εργαλείων</translation>
     </message>
 </context>
 <context>
@@ -888,6 +939,21 @@
             <numerusform>Αφαιρέθηκε %n αχρησιμοποίητο οκταδικό δέντρο από την κρυφή μνήμη, ελευθερώθηκαν %1</numerusform>
             <numerusform>Αφαιρέθηκαν %n αχρησιμοποίητα οκταδικά δέντρα από την κρυφή μνήμη, ελευθερώθηκαν %1</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <comment>toolbar</comment>
+        <translation>Άνοιγμα</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <comment>toolbar</comment>
+        <translation>Αποθήκευση</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <comment>toolbar</comment>
+        <translation>Εισαγωγή</translation>
     </message>
 </context>
 <context>

@@ -51,6 +51,16 @@
         <source>&amp;Tool mark layer</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>3D lasso</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>
@@ -103,6 +113,13 @@
     </message>
     <message>
         <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::Automation</name>
+    <message>
+        <source>Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the painted regions are an illustration.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -617,6 +634,36 @@
         <source>&amp;Annotation</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::MainWindow</name>
@@ -668,6 +715,10 @@
     </message>
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>View and tools toolbar</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -888,6 +939,21 @@
             <numerusform>Removed %n unused octree from the cache, %1 freed</numerusform>
             <numerusform>Removed %n unused octrees from the cache, %1 freed</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -51,6 +51,16 @@
         <source>&amp;Tool mark layer</source>
         <translation>Couche &amp;traces d’outil</translation>
     </message>
+    <message>
+        <source>3D lasso</source>
+        <comment>toolbar</comment>
+        <translation>Lasso 3D</translation>
+    </message>
+    <message>
+        <source>Erase</source>
+        <comment>toolbar</comment>
+        <translation>Effacer</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>
@@ -104,6 +114,13 @@
     <message>
         <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
         <translation>Dérouler le tambour de l’assemblage avec chaque fragment de l’assemblage à sa place, sur l’axe du tambour : la reconstruction en 2D, les places libres ; cliquer sur un fragment le sélectionne</translation>
+    </message>
+</context>
+<context>
+    <name>stylos::app::Automation</name>
+    <message>
+        <source>Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the painted regions are an illustration.</source>
+        <translation>Tambour de démonstration (%1) : A, développée sous le skydome, matériau et état en couleur ; B, vue de face éclairée depuis l’observateur, les mêmes classes en hachures noir et blanc. Relevé généré ; les régions peintes sont une illustration.</translation>
     </message>
 </context>
 <context>
@@ -617,6 +634,36 @@
         <source>&amp;Annotation</source>
         <translation>&amp;Annotation</translation>
     </message>
+    <message>
+        <source>Undo</source>
+        <comment>toolbar</comment>
+        <translation>Annuler</translation>
+    </message>
+    <message>
+        <source>Redo</source>
+        <comment>toolbar</comment>
+        <translation>Rétablir</translation>
+    </message>
+    <message>
+        <source>Fit</source>
+        <comment>toolbar</comment>
+        <translation>Cadrer</translation>
+    </message>
+    <message>
+        <source>Orthographic</source>
+        <comment>toolbar</comment>
+        <translation>Orthographique</translation>
+    </message>
+    <message>
+        <source>Skydome</source>
+        <comment>toolbar</comment>
+        <translation>Skydome</translation>
+    </message>
+    <message>
+        <source>Développée</source>
+        <comment>toolbar</comment>
+        <translation>Développée</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::MainWindow</name>
@@ -669,6 +716,10 @@
     <message>
         <source>Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s</source>
         <translation>Skydome de %1 : %2 cellules au niveau %3, %4 directions du ciel, %5 s</translation>
+    </message>
+    <message>
+        <source>View and tools toolbar</source>
+        <translation>Barre de la vue et des outils</translation>
     </message>
 </context>
 <context>
@@ -888,6 +939,21 @@
             <numerusform>%n octree inutilisé retiré du cache, %1 libérés</numerusform>
             <numerusform>%n octrees inutilisés retirés du cache, %1 libérés</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Open</source>
+        <comment>toolbar</comment>
+        <translation>Ouvrir</translation>
+    </message>
+    <message>
+        <source>Save</source>
+        <comment>toolbar</comment>
+        <translation>Enregistrer</translation>
+    </message>
+    <message>
+        <source>Import</source>
+        <comment>toolbar</comment>
+        <translation>Importer</translation>
     </message>
 </context>
 <context>

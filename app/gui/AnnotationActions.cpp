@@ -1,5 +1,7 @@
 #include "AnnotationActions.h"
 
+#include "ToolBarText.h"
+
 #include "AnnotationSync.h"
 
 #include "stylos/widgets/annotation/LassoTool.h"
@@ -149,6 +151,8 @@ void AnnotationActions::retranslateUi()
     m_erase->setText(tr("&Erase with the lasso"));
     m_erase->setStatusTip(tr("The lasso removes the class of the cells it takes"));
     m_classBox->setToolTip(tr("The class the lasso gives"));
+    setToolBarText(*m_lasso, tr("3D lasso", "toolbar"));
+    setToolBarText(*m_erase, tr("Erase", "toolbar"));
     const QStringList names = {tr("&Material / condition layer"), tr("&Tool mark layer")};
     for (QAction* action : m_layers->actions()) action->setText(names.value(action->data().toInt()));
 }

@@ -459,9 +459,14 @@ core::plate::PlateSpec demoPlate(MainWindow& window)
     spec.landscape = true;
     spec.dpi = 300;
     const std::string name = window.document().scene().fragments().front().name;
-    spec.caption = "Demo drum (" + name + "): A, développée under the skydome, material and condition in colour; "
-                   "B, front view lit from the viewer, the same classes as black-and-white hatches. Generated scan; "
-                   "the painted regions are an illustration.";
+    // The caption is the plate's text, in the window's language (the plate keeps it as it was written).
+    spec.caption = QCoreApplication::translate(
+                       "stylos::app::Automation",
+                       "Demo drum (%1): A, développée under the skydome, material and condition in colour; B, front "
+                       "view lit from the viewer, the same classes as black-and-white hatches. Generated scan; the "
+                       "painted regions are an illustration.")
+                       .arg(QString::fromStdString(name))
+                       .toStdString();
     cp::PanelSpec dev;
     dev.layer = core::annotation::AnnotationLayer::Material;
     dev.fragment = name;

@@ -1,5 +1,6 @@
 #include "MainActions.h"
 
+#include "ToolBarText.h"
 #include "Translations.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
@@ -162,16 +163,15 @@ QMenu* MainActions::populate(QMenuBar& menuBar)
     return m_view;
 }
 
-void MainActions::populateToolBar(QToolBar& toolBar)
+void MainActions::populateToolBars(QToolBar& edit, QToolBar& view)
 {
-    toolBar.addAction(m_undo);
-    toolBar.addAction(m_redo);
-    toolBar.addSeparator();
-    toolBar.addAction(m_fitScene);
-    toolBar.addAction(m_orthographic);
-    toolBar.addSeparator();
-    toolBar.addAction(m_skydome);
-    toolBar.addAction(m_developpee);
+    edit.addAction(m_undo);
+    edit.addAction(m_redo);
+    view.addAction(m_fitScene);
+    view.addAction(m_orthographic);
+    view.addSeparator();
+    view.addAction(m_skydome);
+    view.addAction(m_developpee);
 }
 
 void MainActions::setSelectionCount(int count)
@@ -226,6 +226,13 @@ void MainActions::retranslateUi()
     for (QAction* action : m_languages->actions())
         if (action->data().toString().isEmpty()) action->setText(tr("System language"));
     m_about->setText(tr("&About Stylos"));
+    // The toolbar's short labels; the tooltips carry the full text ("Undo Move Fragment A") and the shortcut.
+    setToolBarText(*m_undo, tr("Undo", "toolbar"));
+    setToolBarText(*m_redo, tr("Redo", "toolbar"));
+    setToolBarText(*m_fitScene, tr("Fit", "toolbar"));
+    setToolBarText(*m_orthographic, tr("Orthographic", "toolbar"));
+    setToolBarText(*m_skydome, tr("Skydome", "toolbar"));
+    setToolBarText(*m_developpee, tr("Développée", "toolbar"));
 }
 
 void MainActions::about()

@@ -35,8 +35,9 @@ public:
 
     /** @brief Adds Edit, View, Tools and Help after the menus already in @p menuBar; returns the View menu. */
     QMenu* populate(QMenuBar& menuBar);
-    /** @brief Fills @p toolBar (after the File actions the window put there). */
-    void populateToolBar(QToolBar& toolBar);
+    /** @brief Adds Undo and Redo to @p edit (after the File actions the window put there), the view's and the
+     *         tools' actions to @p view. */
+    void populateToolBars(QToolBar& edit, QToolBar& view);
     void retranslateUi();
 
     /** @brief Enables what needs a selection. */

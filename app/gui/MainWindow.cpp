@@ -15,7 +15,9 @@
 #include "SceneDock.h"
 #include "TasksDock.h"
 #include "UndoShortcuts.h"
+#include "StatusMessage.h"
 #include "StatusReadout.h"
+#include "ToolBarRows.h"
 #include "Translations.h"
 #include "ViewportSync.h"
 #include "DisplaySettingsWidget.h"
@@ -81,6 +83,8 @@ MainWindow::MainWindow(Translations& translations, const QString& demoDirectory,
         message->setWordWrap(true);
         setCentralWidget(message);
     }
+    m_message = new StatusMessage(this);
+    statusBar()->addWidget(m_message, 1);
     createDocks();
     createMenus();
     connectDocument();
@@ -93,7 +97,7 @@ MainWindow::MainWindow(Translations& translations, const QString& demoDirectory,
         connect(m_viewport, &widgets::ViewportWidget::pointsDrawn, m_readout, &StatusReadout::setPointsDrawn);
         connect(m_viewport, &widgets::ViewportWidget::pointPicked, this, [this](const Eigen::Vector3d& p, quint64 id) {
             const auto* f = m_document->fragment(id);
-            statusBar()->showMessage(tr("%1 on %2").arg(StatusReadout::formatPoint(p),
+            m_message->showMessage(tr("%1 on %2").arg(StatusReadout::formatPoint(p),
                                                         f ? QString::fromStdString(f->name) : QString()));
         });
     }
@@ -192,6 +196,8 @@ void MainWindow::createMenus()
         return std::array<double, 4>{q.w(), q.x(), q.y(), q.z()};
     });
 
+    // Two toolbars: the project and its undo steps; the view and the tools. Short labels (the full text and the
+    // shortcut in each tooltip); on one row while they fit the window, on two when they do not (ToolBarRows).
     m_toolBar = addToolBar(QString());
     m_toolBar->setObjectName(QStringLiteral("mainToolBar"));
     m_toolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
@@ -199,10 +205,14 @@ void MainWindow::createMenus()
     m_toolBar->addAction(m_projectActions->saveAction());
     m_toolBar->addAction(m_projectActions->importAction());
     m_toolBar->addSeparator();
-    m_actions->populateToolBar(*m_toolBar);
+    m_viewToolBar = addToolBar(QString());
+    m_viewToolBar->setObjectName(QStringLiteral("viewToolBar"));
+    m_viewToolBar->setToolButtonStyle(Qt::ToolButtonTextBesideIcon);
+    m_actions->populateToolBars(*m_toolBar, *m_viewToolBar);
 
     m_annotation = new AnnotationActions(*m_document, m_viewport, m_annotationSync, *this);
-    m_annotation->populate(*m_actions->toolsMenu(), m_actions->shadingMenu(), *m_toolBar);
+    m_annotation->populate(*m_actions->toolsMenu(), m_actions->shadingMenu(), *m_viewToolBar);
+    m_toolBarRows = new ToolBarRows(*this, *m_toolBar, *m_viewToolBar);
     m_annotation->setExclusiveWith(m_docking->moveToolAction());
     connect(m_annotation, &AnnotationActions::reported, this, &MainWindow::report);
     if (auto* display = m_propertiesDock->displaySettings(); display && m_annotationSync) {
@@ -348,7 +358,7 @@ void MainWindow::showDeveloppee()
 void MainWindow::report(const QString& message, bool failed)
 {
     m_logDock->append(failed ? LogDock::Level::Error : LogDock::Level::Info, message);
-    statusBar()->showMessage(message.section(QLatin1Char('\n'), 0, 0), 8000);
+    m_message->showMessage(message, 8000); // its first line, cut with "…" to the width; the whole as its tooltip
     if (!failed || !m_errorDialogs) return;
     // Window-modal and non-blocking: the event loop, and every task, keep running.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Stylos"), message, QMessageBox::Ok, this);
@@ -421,6 +431,7 @@ void MainWindow::retranslateUi()
 {
     m_fileMenu->setTitle(tr("&File"));
     m_toolBar->setWindowTitle(tr("Main toolbar"));
+    m_viewToolBar->setWindowTitle(tr("View and tools toolbar"));
     if (auto* message = findChild<QLabel*>(QStringLiteral("noViewport")))
         message->setText(tr("The 3D view needs OpenGL 3.3 (core profile), which this display does not offer."));
 }

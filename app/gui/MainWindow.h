@@ -38,7 +38,9 @@ class PlateActions;
 class ProjectActions;
 class PropertiesDock;
 class SceneDock;
+class StatusMessage;
 class StatusReadout;
+class ToolBarRows;
 class TasksDock;
 class Translations;
 class ViewportSync;
@@ -77,6 +79,10 @@ public:
     /** @brief What feeds the 3D view's annotation tint; null without a view. */
     AnnotationSync* annotationSync() const { return m_annotationSync; }
     StatusReadout& readout() const { return *m_readout; }
+    /** @brief The status bar's message (the last report, cut to the width; the whole as its tooltip). */
+    StatusMessage& statusMessage() const { return *m_message; }
+    /** @brief The two toolbars' rows (one, or two when they do not fit the window's width). */
+    ToolBarRows& toolBarRows() const { return *m_toolBarRows; }
 
     /** @brief Opens the demo project (generated first when the cache lacks it). */
     void openDemo();
@@ -133,6 +139,9 @@ private:
     DockingActions* m_docking = nullptr;
     StatusReadout* m_readout = nullptr;
     QToolBar* m_toolBar = nullptr;
+    QToolBar* m_viewToolBar = nullptr;
+    ToolBarRows* m_toolBarRows = nullptr;
+    StatusMessage* m_message = nullptr;
     QMenu* m_fileMenu = nullptr;
     bool m_errorDialogs = true;
     bool m_demoPending = false;

@@ -1,5 +1,7 @@
 #include "ProjectActions.h"
 
+#include "ToolBarText.h"
+
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/widgets/document/ImportOptionsDialog.h"
 #include "stylos/widgets/document/ScanImporter.h"
@@ -91,6 +93,9 @@ void ProjectActions::retranslateUi()
     m_import->setText(tr("&Import scans…"));
     m_import->setStatusTip(tr("Build a packed octree of each scan in the background and add it to the scene"));
     m_quit->setText(tr("&Quit"));
+    setToolBarText(*m_open, tr("Open", "toolbar"));
+    setToolBarText(*m_save, tr("Save", "toolbar"));
+    setToolBarText(*m_import, tr("Import", "toolbar"));
 }
 
 void ProjectActions::openPaths(const QStringList& paths)

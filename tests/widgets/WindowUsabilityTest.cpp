@@ -1,19 +1,28 @@
 // The window all day: the display controls labelled (and translated), undo and redo from a number field or
 // a text field, rename by F2 or a double click only (a click on the selected row starts nothing), the demo's
 // names and the undo steps' texts in the language chosen last, docks as wide as their contents, imports
-// side by side, Fit filling the view. Synthesized keys and clicks, through the real shortcut map.
+// side by side, Fit filling the view; the toolbars, the status bar and the Legend dock whole in French and Greek
+// at 1600 × 1000 and 1280 × 800. Synthesized keys and clicks, through the real shortcut map.
+#include "AnnotationActions.h"
 #include "DisplaySettingsWidget.h"
 #include "DrumOctreeFixture.h"
+#include "LegendDock.h"
 #include "MainActions.h"
 #include "MainWindow.h"
 #include "ProjectActions.h"
 #include "PropertiesDock.h"
 #include "SceneDock.h"
+#include "StatusMessage.h"
+#include "ToolBarRows.h"
 #include "Translations.h"
 #include "WidgetTestSupport.h"
 #include "stylos/core/scene/ImportPlacement.h"
 #include "stylos/core/view/GuideGeometry.h"
 #include "stylos/core/view/ScenePick.h"
+#include "stylos/widgets/annotation/ClassMeasures.h"
+#include "stylos/widgets/annotation/LegendWidget.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 #include "stylos/widgets/document/ScanImporter.h"
@@ -22,17 +31,25 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
+#include <QAbstractButton>
+#include <QAction>
 #include <QComboBox>
+#include <QDockWidget>
 #include <QDoubleSpinBox>
+#include <QHeaderView>
 #include <QFormLayout>
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollArea>
 #include <QSettings>
 #include <QSlider>
+#include <QStatusBar>
 #include <QStyleHints>
 #include <QTemporaryDir>
+#include <QToolBar>
+#include <QToolButton>
 #include <QTreeView>
+#include <QTreeWidget>
 #include <QUndoStack>
 
 #include <algorithm>
@@ -50,6 +67,15 @@ QLineEdit* openEditor(QTreeView* tree)
     return nullptr;
 }
 bool editorOpen(QTreeView* tree) { return openEditor(tree) != nullptr; }
+
+const QList<QSize> WindowSizes = {QSize(1600, 1000), QSize(1280, 800)};
+const QStringList Languages = {QStringLiteral("en"), QStringLiteral("fr"), QStringLiteral("el")};
+
+/** "fr 1280×800: " for the failure messages. */
+QString where(const QString& code, QSize size)
+{
+    return QStringLiteral("%1 %2×%3: ").arg(code).arg(size.width()).arg(size.height());
+}
 } // namespace
 
 class WindowUsabilityTest : public QObject {
@@ -65,6 +91,9 @@ private Q_SLOTS:
     void undoTextsFollowTheLanguage();
     void demoNamesFollowTheLanguage();
     void docksShowEveryLabelInEveryLanguage();
+    void toolBarsShowEveryActionInEveryLanguage();
+    void statusBarCutsWithAnEllipsisAndKeepsTheWhole();
+    void legendShowsEveryColumnInEveryLanguage();
     void importsGoSideBySideAndFitFillsTheView();
 
 private:
@@ -316,39 +345,183 @@ void WindowUsabilityTest::demoNamesFollowTheLanguage()
 
 void WindowUsabilityTest::docksShowEveryLabelInEveryLanguage()
 {
-    // In each language, at the window's default layout, no label of the Properties dock is cut: each is as
-    // wide as its text needs (or wraps), and every field gets at least its minimum size.
-    for (const QString& code : {QStringLiteral("en"), QStringLiteral("fr"), QStringLiteral("el")}) {
+    // In each language and at both window sizes, at the window's default layout, no label of any dock is cut: each
+    // is as wide as its text needs (or wraps), and every field gets at least its minimum size.
+    for (const QString& code : Languages) {
         setLanguage(code);
-        auto window = makeWindow();
-        importDrum(*window);
-        window->sceneDock().selectFragment(window->document().scene().fragments().front().id);
-        QTest::qWait(100); // the layout requests settle: contents → the scroll area's minimum → the dock → the window
-        QWidget* dock = &window->propertiesDock();
-        // The dock's contents fit its width: nothing cut on the right.
-        auto* scroll = dock->findChild<QScrollArea*>();
-        QVERIFY(scroll && scroll->widget());
-        QVERIFY2(scroll->widget()->minimumSizeHint().width() <= scroll->viewport()->width(),
-                 qPrintable(code + QStringLiteral(": contents need ") +
-                            QString::number(scroll->widget()->minimumSizeHint().width()) +
-                            QStringLiteral(", the dock shows ") + QString::number(scroll->viewport()->width())));
-        QVERIFY(scroll->widget()->width() <= scroll->viewport()->width());
-        for (QLabel* label : dock->findChildren<QLabel*>()) {
-            if (!label->isVisible() || label->text().isEmpty() || label->wordWrap()) continue;
-            QVERIFY2(label->width() >= label->minimumSizeHint().width(),
-                     qPrintable(code + QStringLiteral(": '") + label->text() + QStringLiteral("' ") +
-                                QString::number(label->width()) + QStringLiteral(" < ") +
-                                QString::number(label->minimumSizeHint().width())));
+        for (const QSize size : WindowSizes) {
+            const QString at = where(code, size);
+            auto window = makeWindow();
+            window->resize(size);
+            importDrum(*window);
+            window->sceneDock().selectFragment(window->document().scene().fragments().front().id);
+            QTest::qWait(100); // the layout requests settle: contents → the scroll area's minimum → the dock → the window
+            // The Properties dock's contents fit its width: nothing cut on the right.
+            auto* scroll = window->propertiesDock().findChild<QScrollArea*>();
+            QVERIFY(scroll && scroll->widget());
+            QVERIFY2(scroll->widget()->minimumSizeHint().width() <= scroll->viewport()->width(),
+                     qPrintable(at + QStringLiteral("contents need ") +
+                                QString::number(scroll->widget()->minimumSizeHint().width()) +
+                                QStringLiteral(", the dock shows ") + QString::number(scroll->viewport()->width())));
+            QVERIFY(scroll->widget()->width() <= scroll->viewport()->width());
+            for (QDockWidget* dock : window->findChildren<QDockWidget*>()) {
+                if (!dock->isVisible()) continue;
+                const QString in = at + dock->objectName() + QStringLiteral(": ");
+                for (QLabel* label : dock->findChildren<QLabel*>()) {
+                    if (!label->isVisible() || label->text().isEmpty() || label->wordWrap() ||
+                        label->sizePolicy().horizontalPolicy() == QSizePolicy::Ignored)
+                        continue;
+                    QVERIFY2(label->width() >= label->minimumSizeHint().width(),
+                             qPrintable(in + QLatin1Char('\'') + label->text() + QStringLiteral("' ") +
+                                        QString::number(label->width()) + QStringLiteral(" < ") +
+                                        QString::number(label->minimumSizeHint().width())));
+                }
+                for (QWidget* field : dock->findChildren<QWidget*>()) {
+                    if (!field->isVisible() ||
+                        !(qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field) ||
+                          qobject_cast<QLineEdit*>(field) || qobject_cast<QAbstractButton*>(field)) ||
+                        qobject_cast<QAbstractSpinBox*>(field->parentWidget()) ||
+                        qobject_cast<QComboBox*>(field->parentWidget()) ||
+                        qobject_cast<QAbstractItemView*>(field->parentWidget()->parentWidget()) ||
+                        field->objectName().startsWith(QStringLiteral("qt_"))) // the dock's title buttons
+                        continue;
+                    QVERIFY2(field->width() >= field->minimumSizeHint().width(),
+                             qPrintable(in + field->objectName() + QLatin1Char(' ') +
+                                        field->property("text").toString() + QLatin1Char(' ') +
+                                        QString::number(field->width()) + QStringLiteral(" < ") +
+                                        QString::number(field->minimumSizeHint().width())));
+                }
+            }
         }
-        for (QWidget* field : dock->findChildren<QWidget*>()) {
-            if (!field->isVisible() || !(qobject_cast<QAbstractSpinBox*>(field) || qobject_cast<QComboBox*>(field) ||
-                                         qobject_cast<QLineEdit*>(field)) ||
-                qobject_cast<QAbstractSpinBox*>(field->parentWidget()) || qobject_cast<QComboBox*>(field->parentWidget()))
-                continue;
-            QVERIFY2(field->width() >= field->minimumSizeHint().width(),
-                     qPrintable(code + QStringLiteral(": ") + field->objectName() + QLatin1Char(' ') +
-                                QString::number(field->width()) + QStringLiteral(" < ") +
-                                QString::number(field->minimumSizeHint().width())));
+    }
+}
+
+void WindowUsabilityTest::toolBarsShowEveryActionInEveryLanguage()
+{
+    // Every action of every toolbar on a button of its own that shows whole inside the window, none behind the
+    // » extension; the lasso on, so that its class box and Erase show too. Short labels, translated; the full text
+    // and the shortcut in the tooltip.
+    for (const QString& code : Languages) {
+        setLanguage(code);
+        for (const QSize size : WindowSizes + QList<QSize>{QSize(1000, 700)}) {
+            const QString at = where(code, size);
+            auto window = makeWindow();
+            window->resize(size);
+            if (window->viewport()) window->annotation().lassoAction()->setChecked(true);
+            QTest::qWait(50);
+            window->toolBarRows().update();
+            QTest::qWait(50); // the main window lays the rows out
+            int buttons = 0;
+            for (QToolBar* bar : window->findChildren<QToolBar*>()) {
+                if (!bar->isVisible()) continue;
+                const QRect barRect(bar->mapTo(window.get(), QPoint(0, 0)), bar->size());
+                QVERIFY2(window->rect().contains(barRect), qPrintable(at + bar->objectName()));
+                for (QToolButton* extension : bar->findChildren<QToolButton*>(QStringLiteral("qt_toolbar_ext_button")))
+                    QVERIFY2(!extension->isVisible(), qPrintable(at + bar->objectName() + QStringLiteral(": » shown")));
+                for (QAction* action : bar->actions()) {
+                    if (action->isSeparator() || !action->isVisible()) continue;
+                    QWidget* widget = bar->widgetForAction(action);
+                    const QString name = at + action->objectName() + QLatin1Char(' ') + action->iconText();
+                    QVERIFY2(widget && widget->isVisible(), qPrintable(name + QStringLiteral(" hidden")));
+                    QVERIFY2(bar->rect().contains(widget->geometry()), qPrintable(name + QStringLiteral(" cut")));
+                    QVERIFY2(widget->width() >= widget->sizeHint().width(),
+                             qPrintable(name + QStringLiteral(" narrower than its text")));
+                    ++buttons;
+                    if (qobject_cast<QToolButton*>(widget)) {
+                        QVERIFY2(!action->toolTip().isEmpty(), qPrintable(name));
+                        if (!action->shortcut().isEmpty())
+                            QVERIFY2(action->toolTip().contains(action->shortcut().toString(QKeySequence::NativeText)),
+                                     qPrintable(name + QStringLiteral(": ") + action->toolTip()));
+                    }
+                }
+            }
+            QVERIFY2(buttons >= 10, qPrintable(at + QString::number(buttons)));
+            // The toolbar's labels are short and in the language chosen.
+            QAction* skydome = window->actions().skydomeAction();
+            QCOMPARE(skydome->iconText(), QCoreApplication::translate("stylos::app::MainActions", "Skydome", "toolbar"));
+            if (code != QStringLiteral("en"))
+                QVERIFY2(window->projectActions().openAction()->iconText() != QStringLiteral("Open"),
+                         qPrintable(at + QStringLiteral("Open left in English")));
+            QVERIFY2(skydome->toolTip().startsWith(skydome->text().remove(QLatin1Char('&'))),
+                     qPrintable(at + skydome->toolTip()));
+            // 1000 pixels do not hold both toolbars on one row in Greek; 1600 do in English.
+            if (code == QStringLiteral("el") && size.width() == 1000) QVERIFY(window->toolBarRows().isSplit());
+            if (code == QStringLiteral("en") && size.width() == 1600) QVERIFY(!window->toolBarRows().isSplit());
+        }
+    }
+}
+
+void WindowUsabilityTest::statusBarCutsWithAnEllipsisAndKeepsTheWhole()
+{
+    // The développée's summary reported at 1280 × 800 in Greek: the status bar shows its start, cut with "…" to the
+    // width left by the readout, never widening the window; the tooltip and the Développée dock have it whole.
+    setLanguage(QStringLiteral("el"));
+    auto window = makeWindow();
+    importDrum(*window);
+    app::StatusMessage& message = window->statusMessage();
+    QCOMPARE(message.message(),
+             QCoreApplication::translate("stylos::app::MainWindow", "Imported %1").arg(QStringLiteral("drum")));
+    window->sceneDock().selectFragment(window->document().scene().fragments().front().id);
+    window->actions().developpeeAction()->trigger();
+    QVERIFY(window->tasks().waitForIdle(60000));
+    QTRY_VERIFY(window->developpeePanel().view()->hasDeveloppee());
+    const QString summary = window->developpeePanel().statusText();
+    QTRY_COMPARE(message.message(), summary);
+    QCOMPARE(message.toolTip(), summary);
+    QVERIFY2(message.fontMetrics().horizontalAdvance(summary) > message.contentsRect().width(),
+             "the summary fits anyway: this test checks nothing");
+    QVERIFY(message.isElided());
+    QVERIFY2(message.text().endsWith(QStringLiteral("…")), qPrintable(message.text()));
+    QVERIFY(summary.startsWith(message.text().chopped(1)));
+    QVERIFY2(message.fontMetrics().horizontalAdvance(message.text()) <= message.contentsRect().width(),
+             qPrintable(message.text()));
+    const QRect shown(message.mapTo(window.get(), QPoint(0, 0)), message.size());
+    QVERIFY(window->rect().contains(shown));
+    QCOMPARE(window->width(), 1280);
+    // Wider, it shows more of the same text.
+    const int before = int(message.text().size());
+    window->resize(1600, 1000);
+    QTRY_VERIFY(message.text().size() > before);
+    // A message that fits is shown as it is.
+    message.showMessage(QStringLiteral("short"));
+    QCOMPARE(message.text(), QStringLiteral("short"));
+    QVERIFY(!message.isElided());
+}
+
+void WindowUsabilityTest::legendShowsEveryColumnInEveryLanguage()
+{
+    // The Legend dock at the default layout: every column (class, hatch, cells, area) as wide as its header and its
+    // values, and all of them inside the tree's viewport (no column scrolled out of sight), at both window sizes.
+    for (const QString& code : Languages) {
+        setLanguage(code);
+        for (const QSize size : WindowSizes) {
+            const QString at = where(code, size);
+            auto window = makeWindow();
+            window->resize(size);
+            importDrum(*window);
+            if (auto* measures = window->findChild<widgets::ClassMeasures*>())
+                QTRY_VERIFY_WITH_TIMEOUT(!measures->isBusy(), 20000);
+            QTest::qWait(100);
+            QTreeWidget* tree = window->legendDock().legend().tree();
+            QVERIFY(tree->isVisible());
+            QHeaderView* header = tree->header();
+            const QAbstractItemView* view = tree;
+            int total = 0;
+            for (int column = 0; column < header->count(); ++column) {
+                const int needed = std::max(view->sizeHintForColumn(column), header->sectionSizeHint(column));
+                QVERIFY2(header->sectionSize(column) >= needed,
+                         qPrintable(at + tree->headerItem()->text(column) + QLatin1Char(' ') +
+                                    QString::number(header->sectionSize(column)) + QStringLiteral(" < ") +
+                                    QString::number(needed)));
+                total += header->sectionSize(column);
+            }
+            QVERIFY2(total <= tree->viewport()->width(),
+                     qPrintable(at + QStringLiteral("columns ") + QString::number(total) + QStringLiteral(" > ") +
+                                QString::number(tree->viewport()->width())));
+            const QRect dock(window->legendDock().mapTo(window.get(), QPoint(0, 0)), window->legendDock().size());
+            QVERIFY2(window->rect().contains(dock), qPrintable(at));
+            if (code != QStringLiteral("en"))
+                QVERIFY2(tree->headerItem()->text(3) != QStringLiteral("Area (m²)"), qPrintable(at));
         }
     }
 }

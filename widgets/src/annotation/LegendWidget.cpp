@@ -1,5 +1,6 @@
 // The Legend dock's contents: classes of both layers with their measures, and the legend's edits.
 #include "stylos/widgets/annotation/LegendWidget.h"
+#include "annotation/HatchBox.h"
 
 #include "stylos/widgets/annotation/ClassMeasures.h"
 #include "stylos/widgets/annotation/LabelStore.h"
@@ -19,6 +20,7 @@
 #include <QPixmap>
 #include <QPushButton>
 #include <QRadioButton>
+#include <QScrollBar>
 #include <QTimer>
 #include <QTreeWidget>
 #include <QVBoxLayout>
@@ -55,7 +57,7 @@ QIcon hatchIcon(Hatch hatch)
         {Hatch::None, Qt::NoBrush},          {Hatch::Diagonal, Qt::BDiagPattern},   {Hatch::BackDiagonal, Qt::FDiagPattern},
         {Hatch::Cross, Qt::CrossPattern},    {Hatch::DiagonalCross, Qt::DiagCrossPattern}, {Hatch::Dots, Qt::Dense6Pattern},
         {Hatch::Horizontal, Qt::HorPattern}, {Hatch::Vertical, Qt::VerPattern},     {Hatch::Solid, Qt::SolidPattern}};
-    QPixmap pixmap(14, 14);
+    QPixmap pixmap(28, 14); // the HatchBox shows it alone: wide enough to read the pattern
     pixmap.fill(Qt::white);
     QPainter painter(&pixmap);
     for (const auto& [h, style] : styles)
@@ -81,11 +83,12 @@ LegendWidget::LegendWidget(SceneDocument& document, ClassMeasures* measures, QWi
     m_tree->setUniformRowHeights(true);
     m_tree->setEditTriggers(QAbstractItemView::DoubleClicked | QAbstractItemView::EditKeyPressed);
     // Every column as wide as its contents (the hatch boxes included: their longest name in Greek is cut
-    // otherwise); a narrow dock scrolls sideways rather than cutting a word.
+    // otherwise), and the tree as wide as the columns (fitColumns): the dock widens rather than cut a column.
     for (int column : {NameColumn, HatchColumn, CellsColumn, AreaColumn})
         m_tree->header()->setSectionResizeMode(column, QHeaderView::ResizeToContents);
     m_tree->header()->setStretchLastSection(false);
-    m_tree->setMinimumWidth(340);
+    m_tree->setHorizontalScrollBarPolicy(Qt::ScrollBarAlwaysOff);
+    m_tree->setVerticalScrollBarPolicy(Qt::ScrollBarAlwaysOn); // its width counted once, whether it shows or not
 
     auto* buttons = new QHBoxLayout;
     buttons->addWidget(m_add);
@@ -302,11 +305,11 @@ void LegendWidget::rebuild()
             item->setFlags(Qt::ItemIsEnabled | Qt::ItemIsSelectable | Qt::ItemIsEditable);
             item->setTextAlignment(CellsColumn, Qt::AlignRight | Qt::AlignVCenter);
             item->setTextAlignment(AreaColumn, Qt::AlignRight | Qt::AlignVCenter);
-            auto* hatch = new QComboBox(m_tree);
+            auto* hatch = new HatchBox(m_tree);
             hatch->setObjectName(QStringLiteral("legendHatch_%1_%2").arg(core::annotation::layerName(layer)).arg(c.id));
             for (Hatch h : Hatches) hatch->addItem(hatchIcon(h), LegendText::hatchTitle(h), int(h));
             hatch->setCurrentIndex(hatch->findData(int(c.hatch)));
-            hatch->setToolTip(tr("The black-and-white pattern of this class on plates"));
+            hatch->setDescription(tr("The black-and-white pattern of this class on plates"));
             m_tree->setItemWidget(item, HatchColumn, hatch);
             const std::uint8_t id = c.id;
             connect(hatch, &QComboBox::currentIndexChanged, this, [this, layer, id, hatch] {
@@ -323,6 +326,15 @@ void LegendWidget::rebuild()
     m_updating = false;
     refreshMeasures();
     updateButtons();
+}
+
+void LegendWidget::fitColumns()
+{
+    const QAbstractItemView* view = m_tree; // sizeHintForColumn() is public there (the tree's own override is not)
+    int width = 2 * m_tree->frameWidth() + m_tree->verticalScrollBar()->sizeHint().width();
+    for (int column = 0; column < ColumnCount; ++column)
+        width += std::max(view->sizeHintForColumn(column), m_tree->header()->sectionSizeHint(column));
+    m_tree->setMinimumWidth(width);
 }
 
 void LegendWidget::refreshMeasures()
@@ -343,6 +355,7 @@ void LegendWidget::refreshMeasures()
         }
     }
     m_updating = false;
+    fitColumns();
 }
 
 void LegendWidget::updateButtons()

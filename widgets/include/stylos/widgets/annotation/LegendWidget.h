@@ -65,6 +65,9 @@ protected:
 private:
     void rebuild();
     void refreshMeasures();
+    /** The tree as wide as its columns need (header and values, the vertical scroll bar), so the dock shows
+     *  every column in every language instead of scrolling the area out of sight. */
+    void fitColumns();
     std::optional<std::pair<AnnotationLayer, std::uint8_t>> currentClass() const;
     core::annotation::LegendClass* editable(core::annotation::Legend& legend, AnnotationLayer layer, std::uint8_t id) const;
     std::optional<std::uint8_t> askReplacement(AnnotationLayer layer, std::uint8_t classId, std::uint64_t cells);
