@@ -34,6 +34,8 @@
 #include <QAbstractButton>
 #include <QAction>
 #include <QComboBox>
+#include <QDialogButtonBox>
+#include <QPushButton>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
 #include <QHeaderView>
@@ -94,6 +96,7 @@ private Q_SLOTS:
     void toolBarsShowEveryActionInEveryLanguage();
     void statusBarCutsWithAnEllipsisAndKeepsTheWhole();
     void legendShowsEveryColumnInEveryLanguage();
+    void standardButtonsFollowTheLanguage();
     void importsGoSideBySideAndFitFillsTheView();
 
 private:
@@ -524,6 +527,24 @@ void WindowUsabilityTest::legendShowsEveryColumnInEveryLanguage()
                 QVERIFY2(tree->headerItem()->text(3) != QStringLiteral("Area (m²)"), qPrintable(at));
         }
     }
+}
+
+// Qt's own dialog buttons (the plate dialog's Cancel, the delete-class question's Yes / No) in French and Greek:
+// Debian ships no Qt translation for Greek, so our translations carry them (app/gui/QtStandardTexts.cpp).
+void WindowUsabilityTest::standardButtonsFollowTheLanguage()
+{
+    const QList<QPair<QString, QStringList>> expected{{QStringLiteral("fr"), {QStringLiteral("OK"), QStringLiteral("Annuler"), QStringLiteral("&Oui")}},
+                                                      {QStringLiteral("el"), {QStringLiteral("OK"), QStringLiteral("Ακύρωση"), QStringLiteral("&Ναι")}}};
+    for (const auto& [code, texts] : expected) {
+        setLanguage(code);
+        QDialogButtonBox box(QDialogButtonBox::Ok | QDialogButtonBox::Cancel | QDialogButtonBox::Yes);
+        QCOMPARE(box.button(QDialogButtonBox::Ok)->text(), texts[0]);
+        QCOMPARE(box.button(QDialogButtonBox::Cancel)->text(), texts[1]);
+        QCOMPARE(box.button(QDialogButtonBox::Yes)->text(), texts[2]);
+    }
+    setLanguage(QStringLiteral("en"));
+    QDialogButtonBox box(QDialogButtonBox::Cancel);
+    QCOMPARE(box.button(QDialogButtonBox::Cancel)->text(), QStringLiteral("Cancel"));
 }
 
 void WindowUsabilityTest::importsGoSideBySideAndFitFillsTheView()
