@@ -30,6 +30,7 @@ AoOptions depthMap(double bias)
     o.bias = bias;
     o.receiverBias = bias;
     o.threads = 2;
+    o.twoSided = false; // open sheets of cells: their back sees the whole sky (see the two-sided tests)
     return o;
 }
 

@@ -90,7 +90,8 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
     // and binary visibility, whose sums are small integers).
     std::vector<detail::Accumulator> sums;
     sums.reserve(threads);
-    for (unsigned t = 0; t < threads; ++t) sums.emplace_back(measured);
+    const bool twoSided = receivers != nullptr && detail::twoSidedApplies(options);
+    for (unsigned t = 0; t < threads; ++t) sums.emplace_back(measured, twoSided);
     std::atomic<std::size_t> done{0};
     const bool finished = shading::detail::parallelChunks(
         threads, 1, threads, progress, [&](std::size_t worker, std::size_t, unsigned) {
@@ -110,12 +111,19 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
 
     std::vector<float> values(measured, 0.0f);
     for (std::size_t i = 0; i < values.size(); ++i) {
-        double seen = 0.0, total = 0.0;
+        double seen = 0.0, total = 0.0, seenBack = 0.0, totalBack = 0.0;
         for (const auto& s : sums) {
             seen += s.seen[i];
             total += s.total[i];
+            if (twoSided) {
+                seenBack += s.seenBack[i];
+                totalBack += s.totalBack[i];
+            }
         }
-        values[i] = total > 0.0 ? float(std::clamp(seen / total, 0.0, 1.0)) : 0.0f;
+        const double front = total > 0.0 ? seen / total : 0.0;
+        const double back = totalBack > 0.0 ? seenBack / totalBack : 0.0;
+        // Two-sided: the side that sees more is the outside of the solid (the other looks into it).
+        values[i] = float(std::clamp(twoSided ? std::max(front, back) : front, 0.0, 1.0));
     }
     return values;
 }

@@ -50,6 +50,7 @@ public:
     DepthMapKernel(const PreparedCells& cells, const PreparedCells* receivers, const AoOptions& options,
                    const DepthMapPasses& passes)
         : m_cells(cells), m_receivers(receivers ? *receivers : cells), m_offLattice(receivers != nullptr),
+          m_twoSided(receivers != nullptr && twoSidedApplies(options)),
           m_bias(float(receivers ? options.receiverBias : options.bias)), m_cosine(options.cosineWeighted), m_passes(passes),
           m_scratch(std::make_unique<DepthMapScratch>())
     {
@@ -72,6 +73,10 @@ public:
         for (std::size_t b = 0; b < m_cones.size(); ++b) {
             const Cone& c = m_cones[b];
             m_facing[b] = c.axis[0] * d[0] + c.axis[1] * d[1] + c.axis[2] * d[2] >= -c.sine - 1e-4;
+        }
+        if (m_twoSided) {
+            m_passes.testTwoSided(f, m_receivers, m_map.data(), m_facing.data(), m_bias, m_cosine, sums, *m_scratch);
+            return;
         }
         (m_offLattice ? m_passes.testOffLattice : m_passes.test)(f, m_receivers, m_map.data(), m_facing.data(), m_bias,
                                                                  m_cosine, sums, *m_scratch);
@@ -123,6 +128,7 @@ private:
     const PreparedCells& m_cells;     ///< the occluders (pass 1)
     const PreparedCells& m_receivers; ///< pass 2: the cells themselves, or receivers off their lattice
     const bool m_offLattice;
+    const bool m_twoSided;
     const float m_bias;
     const bool m_cosine;
     const DepthMapPasses m_passes;

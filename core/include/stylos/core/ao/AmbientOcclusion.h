@@ -61,6 +61,11 @@ struct AoOptions {
     /** With receivers off the cells (leaves): edges beyond the occluder cube's half-extent along the
      *  receiver's normal before a cell occludes it (measured best on generated drums: see the overload). */
     double receiverBias = 0.5;
+    /** With receivers off the cells (leaves), DepthMap, all directions (not upperHemisphere): measure
+     *  both sides of the receiver's tangent plane in the same pass (d·n > 0 with n, d·n < 0 with −n)
+     *  and keep the side that sees more, so a normal estimated with the wrong sign (into the solid,
+     *  whose inside sees almost nothing) does not matter. Ignored otherwise. */
+    bool twoSided = true;
     unsigned threads = 0;             ///< 0: hardware concurrency
 };
 
