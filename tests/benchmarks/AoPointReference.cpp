@@ -2,14 +2,15 @@
 // discs (ao/DiscSkydome.h), not cells: the Happy Buddha's benchmark of issue 17 (docs/benchmarks.md).
 //
 //   stylos_ao_pointref [--ply FILE] [--depth D] [--level L] [--directions N] [--points P] [--seed S]
-//                      [--skip K] [--radius-scale F] [--threads T] [--dir WORK] [--csv OUT.csv]
+//                      [--skip K] [--radius-scale F] [--project J] [--threads T] [--dir WORK] [--csv OUT.csv]
 //                      [--one-sided] [--reference-one-sided]
 //   - The octree: buildOctreeFile(FILE) at depth D (default 12, normals estimated), as `stylos-cli ao`
 //     builds it, cached in WORK (default /tmp/stylos-ao-pointref).
 //   - The method: computeLeafSkydome (what `stylos-cli ao` writes: level L, default the closed-surface
 //     level; two-sided unless --one-sided), timed.
 //   - The reference: every point of FILE a disc (estimated normal, radius = F × the mean distance to its 8
-//     nearest, F default 1); P sampled points (default 2000, seed S) as receivers with their disc's normal,
+//     nearest, F default 1; each centre projected onto the plane through its J nearest, default 16, 0 = the
+//     raw points: DiscSkydome.h); P sampled points (default 2000, seed S) as receivers with their disc's normal,
 //     discs within K radii (default 2: about 2 spacings) of the receiver skipped, the method's directions
 //     (Fibonacci, all N, d·n > 0), two-sided (the scan has no normals; the estimated ones' sign is a
 //     guess) unless --reference-one-sided. Compared with the value of the leaf nearest to each receiver.
@@ -56,6 +57,7 @@ struct Settings {
     std::uint64_t seed = 7;
     double skip = 2.0;
     double radiusScale = 1.0;
+    std::size_t project = 16;
     unsigned threads = 2;
     bool referenceTwoSided = true;
     fs::path dir = "/tmp/stylos-ao-pointref";
@@ -85,6 +87,7 @@ Settings parse(int argc, char** argv)
         else if (a == "--seed") s.seed = std::stoull(next());
         else if (a == "--skip") s.skip = std::stod(next());
         else if (a == "--radius-scale") s.radiusScale = std::stod(next());
+        else if (a == "--project") s.project = std::stoull(next());
         else if (a == "--threads") s.threads = unsigned(std::stoul(next()));
         else if (a == "--dir") s.dir = next();
         else if (a == "--csv") s.csv = next();
@@ -162,6 +165,7 @@ int main(int argc, char** argv)
     ao::DiscCloudOptions discOptions;
     discOptions.radiusScale = s.radiusScale;
     discOptions.threads = s.threads;
+    discOptions.projectionNeighbours = s.project;
     auto discs = ao::discsFromPoints(xyz, discOptions);
     if (!discs) fail(discs.error().message);
     const ao::DiscGrid grid(*discs);
@@ -218,7 +222,7 @@ int main(int argc, char** argv)
                      {"directions", s.ao.directions}, {"bias", s.ao.receiverBias}, {"twoSided", s.ao.twoSided},
                      {"seconds", methodSeconds}, {"skydomeSeconds", report.aoSeconds}};
     out["reference"] = {{"receivers", receivers.size()}, {"seed", s.seed}, {"medianRadius", medianRadius},
-                        {"skipRadii", s.skip}, {"radiusScale", s.radiusScale}, {"twoSided", s.referenceTwoSided},
+                        {"skipRadii", s.skip}, {"radiusScale", s.radiusScale}, {"projectionNeighbours", s.project}, {"twoSided", s.referenceTwoSided},
                         {"discSeconds", discSeconds}, {"seconds", referenceSeconds},
                         {"grid", {grid.dimensions()[0], grid.dimensions()[1], grid.dimensions()[2]}},
                         {"leafDistanceMedian", sortedDistance[sortedDistance.size() / 2]},

@@ -51,22 +51,33 @@ Result<DiscCloud> discsFromPoints(std::span<const double> positions, const DiscC
     for (std::size_t i = 0; i < n; ++i) discs.normals[i] = {normals[3 * i], normals[3 * i + 1], normals[3 * i + 2]};
 
     // Radii: the mean distance to the k nearest other points (the point itself is the first found).
+    // Projected: the centre moved along its normal onto the plane through its neighbours' centroid.
     discs.radii.resize(n);
     const Points points{positions};
     const Tree tree(3, points, nanoflann::KDTreeSingleIndexAdaptorParams(16));
     const unsigned threads = std::max(1u, options.threads ? options.threads : std::thread::hardware_concurrency());
+    const std::size_t searched = std::max(k, options.projectionNeighbours) + 1;
     std::vector<std::thread> workers;
     for (unsigned w = 0; w < threads; ++w)
         workers.emplace_back([&, w] {
-            std::vector<std::uint32_t> index(k + 1);
-            std::vector<double> distance2(k + 1);
+            std::vector<std::uint32_t> index(searched);
+            std::vector<double> distance2(searched);
             for (std::size_t i = w; i < n; i += threads) {
-                const std::size_t found = tree.knnSearch(&positions[3 * i], k + 1, index.data(), distance2.data());
+                const std::size_t found = tree.knnSearch(&positions[3 * i], searched, index.data(), distance2.data());
                 double sum = 0.0;
                 std::size_t count = 0;
-                for (std::size_t j = 0; j < found; ++j)
+                for (std::size_t j = 0; j < found && count < k; ++j)
                     if (index[j] != i) sum += std::sqrt(distance2[j]), ++count;
                 discs.radii[i] = float(options.radiusScale * (count ? sum / double(count) : 0.0));
+                if (options.projectionNeighbours == 0) continue;
+                const std::size_t used = std::min(found, options.projectionNeighbours + 1); // the point included
+                std::array<double, 3> mean{0, 0, 0};
+                for (std::size_t j = 0; j < used; ++j)
+                    for (int a = 0; a < 3; ++a) mean[a] += positions[3 * index[j] + std::size_t(a)] / double(used);
+                const auto& nn = discs.normals[i];
+                auto& c = discs.centres[i];
+                const double h = (c[0] - mean[0]) * nn[0] + (c[1] - mean[1]) * nn[1] + (c[2] - mean[2]) * nn[2];
+                for (int a = 0; a < 3; ++a) c[a] -= h * nn[a];
             }
         });
     for (auto& t : workers) t.join();

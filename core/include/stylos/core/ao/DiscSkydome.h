@@ -7,7 +7,10 @@
  *
  * Discs (discsFromPoints): the normal from estimateNormals (k = 16 PCA, normals/NormalEstimation.h), the
  * radius = radiusScale × the mean distance to the point's k nearest other points (default k = 8, scale 1):
- * neighbouring discs overlap, so a densely sampled surface is closed to rays.
+ * neighbouring discs overlap, so a densely sampled surface is closed to rays. Optionally each centre is
+ * projected onto the plane of its neighbours (projectionNeighbours): on a raw scan the noise (and the
+ * misregistration of merged scans) puts neighbours a few spacings away above a point's tangent plane, where
+ * they would stop its grazing rays (measured on the Happy Buddha: docs/benchmarks.md).
  * Rays (DiscGrid::blocked): a uniform grid of cells (CSR: offsets and disc indices), each disc listed in
  * every cell its bounding box touches; a 3D DDA (Amanatides and Woo) from the receiver; a disc blocks when
  * the ray meets its plane at t > 0 within its radius. Self-shadowing: discs whose centre lies within
@@ -47,6 +50,10 @@ struct DiscCloudOptions {
     std::size_t neighbours = 8;  ///< k for the spacing (the point itself not counted)
     double radiusScale = 1.0;    ///< radius = scale × mean distance to the k nearest
     unsigned threads = 0;        ///< normal estimation; 0: hardware concurrency
+    /** > 0: each disc's centre projected along its normal onto the plane through the centroid of its
+     *  projectionNeighbours nearest points (itself included): the scanner's noise off, the relief kept
+     *  (one step of a moving-least-squares projection). 0: the points as they are. */
+    std::size_t projectionNeighbours = 0;
 };
 
 /** @brief Discs for @p positions (x y z interleaved): see the file comment. */
