@@ -89,7 +89,7 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
     // side over all directions, for a probe's worth of extra work (measured: a full two-sided pass over
     // all directions costs 40-50 % more, the probe about 5 %).
     constexpr std::size_t kProbe = 32;
-    const bool twoSided = receivers != nullptr && detail::twoSidedApplies(options);
+    const bool twoSided = receivers != nullptr && twoSidedApplies(options);
     std::vector<std::size_t> probe, rest;
     const std::size_t stride = std::max<std::size_t>(1, directions.size() / kProbe);
     for (std::size_t k = 0; k < directions.size(); ++k)
@@ -126,15 +126,15 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
     };
 
     // The probe: each receiver's side, and its sums on that side.
-    std::vector<double> startSeen, startTotal;
+    std::vector<float> startSeen, startTotal; // small integers with uniform weights: exact in float
     if (!probe.empty()) {
         AoOptions probeOptions = options;
         probeOptions.twoSided = true;
         std::vector<detail::Accumulator> probeSums;
         if (!runPhase(probe, probeOptions, probeSums, true) || (progress && progress->isCancelRequested()))
             return cancelled();
-        startSeen.assign(measured, 0.0);
-        startTotal.assign(measured, 0.0);
+        startSeen.assign(measured, 0.0f);
+        startTotal.assign(measured, 0.0f);
         for (std::size_t i = 0; i < measured; ++i) {
             double seen = 0.0, total = 0.0, seenBack = 0.0, totalBack = 0.0;
             for (const auto& sum : probeSums) {
@@ -152,8 +152,8 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
                 seen = seenBack;
                 total = totalBack;
             }
-            startSeen[i] = seen;
-            startTotal[i] = total;
+            startSeen[i] = float(seen);
+            startTotal[i] = float(total);
         }
     }
     AoOptions restOptions = options;

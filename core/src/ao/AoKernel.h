@@ -36,12 +36,6 @@ struct Accumulator {
     }
 };
 
-/** Whether receivers are measured on both sides of their tangent plane (AoOptions::twoSided). */
-inline bool twoSidedApplies(const AoOptions& options)
-{
-    return options.twoSided && !options.upperHemisphere && options.method == AoMethod::DepthMap;
-}
-
 /** w for n·d: 0 behind the tangent plane; 1, or n·d when cosine-weighted. */
 inline float directionWeight(float nDotD, bool cosineWeighted)
 {
