@@ -28,7 +28,9 @@
 //
 // Cost per cell·direction: two blocked, auto-vectorised loops (projection, slab tests, packing; then
 // decoding and the test) around two scalar loops (4 max-updates; 1 read), compiled for AVX-512, AVX2
-// and plain x86-64 (DepthMapPasses.cpp); pass 2 skips the blocks whose normals all face away. The cells
+// and plain x86-64 (DepthMapPasses.cpp); pass 2 skips the blocks whose normals all face away, except
+// two-sided (the probe directions of AoOptions::twoSided, AmbientOcclusion.cpp), where every block runs and
+// each direction adds to the side of the receiver's tangent plane it lies on. The cells
 // come in breadth-first (Morton) order, so consecutive cells touch neighbouring pixels. Scratch per
 // worker: the map, W × H int32 over the projection of the cells' box (about twice the number of surface
 // cells for a closed object), cleared per direction, the blocks' normal cones and 64-cell block arrays.
