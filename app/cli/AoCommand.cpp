@@ -1,5 +1,5 @@
 // stylos-cli ao IN -o OUT.ply|OUT.poct [--directions D] [--level L] [--method slices|depthmap]
-//               [--upper-hemisphere] [--cosine] [--bias B] [--receivers leaves|cells] [--depth N] [--threads N] [--columns LAYOUT] [--scan N]
+//               [--upper-hemisphere] [--cosine] [--bias B] [--receivers leaves|cells] [--one-sided] [--depth N] [--threads N] [--columns LAYOUT] [--scan N]
 //               [--up AXIS] [--unit mm|cm|m] [--offset X,Y,Z] [--json]
 #include "CommandLine.h"
 
@@ -96,6 +96,7 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
     if (biasGiven) r.options.bias = r.options.receiverBias = bias;
     r.options.upperHemisphere = cl.flag("upper-hemisphere");
     r.options.cosineWeighted = cl.flag("cosine");
+    r.options.twoSided = !cl.flag("one-sided");
 
     r.poctInput = core::cloud::isPoctPath(r.input) || lowerExtension(r.input) == ".poct";
     if (r.poctInput && (cl.value("depth") || cl.value("columns") || cl.value("scan") || hasFrameOptions(cl)))
@@ -139,6 +140,7 @@ int runAo(const std::vector<std::string>& args)
                     {"cosine", "", "weight each direction by the cosine to the normal (irradiance)"},
                     {"bias", "B", "self-shadowing tolerance in cell edges: with leaf receivers beyond the occluder cube's reach along the leaf's normal (default 0.5); with cell receivers above the cell's tangent plane (default 1)"},
                     {"receivers", "WHERE", "leaves (default: each leaf at its own centre and normal, against the level's cells; depthmap) or cells (each cell's value spread to its leaves)"},
+                    {"one-sided", "", "leaves: measure only the side the normal points to (default: both sides, the one that sees more, so a normal turned into the object does not read dark)"},
                     {"depth", "N", "point-file input: leaf level of the octree built first, 1..21 (default 12)"},
                     {"columns", "LAYOUT", "point-file input: column layout of a text file, e.g. x,y,z"},
                     scanOption(),
@@ -214,6 +216,7 @@ int runAo(const std::vector<std::string>& args)
                          {"cosine", r.options.cosineWeighted},
                          {"bias", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? r.options.receiverBias : r.options.bias},
                          {"receivers", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
+                         {"two_sided", r.leafReceivers && ao::twoSidedApplies(r.options)},
                          {"threads", threads},
                          {"mean_ambient", mean},
                          {"octree_built", built.has_value()},

@@ -3,7 +3,7 @@
 //
 //   stylos_ao_benchmark [--poct FILE] [--dir DIR] [--points N] [--depth L] [--radius M] [--height M]
 //                       [--level L] [--directions D] [--method depthmap|slices] [--threads T] [--repeat R]
-//                       [--cosine] [--upper-hemisphere] [--leaf-receivers]
+//                       [--cosine] [--upper-hemisphere] [--leaf-receivers] [--one-sided]
 //     Without --poct: the procedural fluted drum of SyntheticStream (scan order, N points, default 20 M,
 //     radius 0.15 m, height 0.8 m: a slender column drum, whose leaf surface at depth 11 is about 8 M
 //     cells of 0.39 mm, 2.5 points each) built with Streaming at depth L (default 11) in a forked child,
@@ -56,7 +56,7 @@ struct Settings {
     ao::AoMethod method = ao::AoMethod::DepthMap;
     unsigned threads = 2;
     int repeat = 1;
-    bool cosine = false, upper = false, leafReceivers = false;
+    bool cosine = false, upper = false, leafReceivers = false, oneSided = false;
 };
 
 [[noreturn]] void die(const std::string& message)
@@ -159,6 +159,8 @@ Settings parse(int argc, char** argv)
             s.upper = true;
         else if (a == "--leaf-receivers")
             s.leafReceivers = true;
+        else if (a == "--one-sided")
+            s.oneSided = true;
         else if (a == "--method") {
             const auto m = ao::aoMethodFromName(next());
             if (!m) die("--method must be depthmap or slices");
@@ -200,6 +202,7 @@ int main(int argc, char** argv)
     options.threads = s.threads;
     options.cosineWeighted = s.cosine;
     options.upperHemisphere = s.upper;
+    options.twoSided = !s.oneSided;
     std::vector<double> seconds;
     double mean = 0;
     for (int r = 0; r < s.repeat; ++r) {
@@ -222,6 +225,7 @@ int main(int argc, char** argv)
                    {"directions", s.directions},
                    {"method", ao::aoMethodName(s.method)},
                    {"leaf_receivers", s.leafReceivers},
+                   {"two_sided", s.leafReceivers && !s.oneSided},
                    {"threads", s.threads},
                    {"cosine_weighted", s.cosine},
                    {"upper_hemisphere", s.upper},

@@ -5,11 +5,12 @@
 //   stylos_ao_truth [--kind drum|fragment] [--spacing M] [--noise M] [--seed K] [--depth D] [--level L]
 //                   [--directions N] [--method depthmap|slices] [--bias B] [--points P] [--point-seed S]
 //                   [--threads T] [--step M] [--dir WORK] [--csv OUT.csv] [--receivers leaves|cells]
+//                   [--one-sided]
 //   - The scan: generateScan(kind, spacing (default 2 mm), noise (0.33 mm), seed (1)), random pose, as
 //     `stylos-cli generate` writes it; its octree as `stylos-cli ao` builds it (depth 12, normals
 //     estimated); both cached in WORK (default /tmp/stylos-ao-truth).
 //   - The method: computeLeafSkydome (what `stylos-cli ao` writes: level L, default the closed-surface
-//     level), timed.
+//     level), timed; --one-sided: leaves measured on their normal's side only (before AoOptions::twoSided).
 //   - P true surface points (default 2000, seed S): a patch by area, a uniform (a, b) on it, its position
 //     and normal without noise. Each point's analytic value over the method's directions (turned into
 //     the object frame) and the value of the leaf nearest to the posed point; also the cell reference
@@ -30,6 +31,7 @@
 #include "stylos/core/synth/SyntheticScan.h"
 
 #include "BenchmarkClock.h"
+#include "LeafGrid.h"
 
 #include <nlohmann/json.hpp>
 
@@ -114,6 +116,7 @@ Settings parse(int argc, char** argv)
         else if (a == "--step") s.step = std::stod(next());
         else if (a == "--dir") s.dir = next();
         else if (a == "--csv") s.csv = next();
+        else if (a == "--one-sided") s.ao.twoSided = false;
         else if (a == "--receivers") {
             const std::string r = next();
             if (r != "leaves" && r != "cells") fail("--receivers must be leaves or cells");
@@ -246,49 +249,7 @@ std::vector<TruePoint> sampleSurface(const synth::SyntheticObject& object, std::
     return out;
 }
 
-// ---------------------------------------------------------------------------------------------------
-// Leaves: the nearest to a point, through a hash grid of their centres.
-
-class LeafGrid {
-public:
-    LeafGrid(const ao::AoCells& leaves, double bin) : m_leaves(leaves), m_bin(bin)
-    {
-        for (std::size_t i = 0; i < leaves.size(); ++i) m_map[key(binOf(leaves.centre(i)))].push_back(i);
-    }
-    std::size_t nearest(const Eigen::Vector3d& q) const
-    {
-        const auto b = binOf({q.x(), q.y(), q.z()});
-        std::size_t best = SIZE_MAX;
-        double bestD = 1e300;
-        for (int dz = -1; dz <= 1; ++dz)
-            for (int dy = -1; dy <= 1; ++dy)
-                for (int dx = -1; dx <= 1; ++dx) {
-                    const auto it = m_map.find(key({b[0] + dx, b[1] + dy, b[2] + dz}));
-                    if (it == m_map.end()) continue;
-                    for (const std::size_t i : it->second) {
-                        const auto c = m_leaves.centre(i);
-                        const double d2 = (Eigen::Vector3d(c[0], c[1], c[2]) - q).squaredNorm();
-                        if (d2 < bestD) bestD = d2, best = i;
-                    }
-                }
-        return best;
-    }
-
-private:
-    std::array<std::int64_t, 3> binOf(const std::array<double, 3>& p) const
-    {
-        return {std::int64_t(std::floor(p[0] / m_bin)), std::int64_t(std::floor(p[1] / m_bin)),
-                std::int64_t(std::floor(p[2] / m_bin))};
-    }
-    static std::uint64_t key(const std::array<std::int64_t, 3>& b)
-    {
-        return (std::uint64_t(b[0] & 0x1fffff) << 42) | (std::uint64_t(b[1] & 0x1fffff) << 21) |
-               std::uint64_t(b[2] & 0x1fffff);
-    }
-    const ao::AoCells& m_leaves;
-    double m_bin;
-    std::unordered_map<std::uint64_t, std::vector<std::size_t>> m_map;
-};
+using stylos::bench::LeafGrid;
 
 /** The level-L cell holding each leaf (cells' leaf ranges are consecutive and sorted). */
 std::size_t cellOfLeaf(const ao::AoCells& cells, std::uint64_t leaf)
@@ -391,7 +352,7 @@ int main(int argc, char** argv)
                      {"edgeMetres", cells.edge}, {"leaves", report.leaves}, {"bias", layer.leafReceivers ? s.ao.receiverBias : s.ao.bias},
                      {"directions", s.ao.directions}, {"seconds", methodSeconds},
                      {"receivers", layer.leafReceivers && s.ao.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
-                     {"skydomeSeconds", report.aoSeconds}};
+                     {"skydomeSeconds", report.aoSeconds}, {"twoSided", s.ao.twoSided}};
     out["points"] = {{"count", points.size()}, {"seed", s.pointSeed}, {"analyticSeconds", analyticSeconds},
                      {"cellReferenceSeconds", referenceSeconds}, {"step", s.step}};
     std::vector<double> sortedDistance = distance;

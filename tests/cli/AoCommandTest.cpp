@@ -309,6 +309,58 @@ TEST(CliAo, LeafReceiversByDefaultGiveLeavesTheirOwnValues)
     EXPECT_NE(bad.err.find("--receivers"), std::string::npos) << bad.err;
 }
 
+TEST(CliAo, NormalsTurnedIntoAClosedBoxReadAsIfRightUnlessOneSided)
+{
+    // The six faces of a 32 cm cube sampled every 1 cm, every normal pointing INTO the cube (as the
+    // centroid orientation does on a recess): one-sided, the faces see the cube's inside (dark); by
+    // default both sides are measured and the outside is kept: the middle of every face sees its whole
+    // hemisphere.
+    TempDir dir;
+    std::string body;
+    std::size_t count = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (int side = 0; side < 2; ++side)
+            for (int i = 0; i <= 32; ++i)
+                for (int k = 0; k <= 32; ++k) {
+                    double p[3], n[3] = {0, 0, 0};
+                    p[axis] = side * 0.32;
+                    p[(axis + 1) % 3] = i * 0.01;
+                    p[(axis + 2) % 3] = k * 0.01;
+                    n[axis] = side ? -1.0 : 1.0; // inward
+                    for (double v : p) body += std::to_string(v) + " ";
+                    for (double v : n) body += std::to_string(v) + " ";
+                    body += "\n";
+                    ++count;
+                }
+    stylos::test::writeText(dir / "box.ply", "ply\nformat ascii 1.0\nelement vertex " + std::to_string(count) +
+                                                 "\nproperty float x\nproperty float y\nproperty float z\n"
+                                                 "property float nx\nproperty float ny\nproperty float nz\n"
+                                                 "end_header\n" + body);
+    const auto both = dir / "both.ply", one = dir / "one.ply";
+    const auto run = runCli({"ao", (dir / "box.ply").string(), "-o", both.string(), "--depth", "6", "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_EQ(nlohmann::json::parse(run.out)["two_sided"], true);
+    const auto oneRun = runCli({"ao", (dir / "box.ply").string(), "-o", one.string(), "--depth", "6", "--one-sided", "--json"});
+    ASSERT_EQ(oneRun.exitCode, 0) << oneRun.err;
+    EXPECT_EQ(nlohmann::json::parse(oneRun.out)["two_sided"], false);
+    const auto a = readAoPly(both), b = readAoPly(one);
+    ASSERT_EQ(a.size(), b.size());
+    // Leaves in the middle of a face (farther than 4 cm from every edge of the cube).
+    std::size_t middle = 0;
+    for (std::size_t i = 0; i < a.size(); ++i) {
+        int inner = 0;
+        for (int c = 0; c < 3; ++c) {
+            const double x = a.positions[3 * i + std::size_t(c)];
+            inner += x > 0.04 && x < 0.28;
+        }
+        if (inner != 2) continue;
+        ++middle;
+        EXPECT_EQ(a.scalars[0][i], 1.0) << "leaf " << i;
+        EXPECT_LT(b.scalars[0][i], 0.3) << "leaf " << i; // the inside, but for grazing directions (measured ≤ 0.22)
+    }
+    EXPECT_GT(middle, 1000u);
+}
+
 /** Runs each case: exit 2, the message (with @p needle) and the usage on stderr, nothing on stdout. */
 void expectUsageErrors(const std::vector<std::pair<std::vector<std::string>, std::string>>& cases)
 {

@@ -30,6 +30,7 @@ AoOptions depthMap(double bias)
     o.bias = bias;
     o.receiverBias = bias;
     o.threads = 2;
+    o.twoSided = false; // open sheets of cells: their back sees the whole sky (see the two-sided tests)
     return o;
 }
 
@@ -182,4 +183,50 @@ TEST(AoLeafReceivers, LeavesAreReceiversInTheCellsUnits)
     EXPECT_LT((*values)[0], 0.95f);
     EXPECT_GT((*values)[0], 0.5f);
     EXPECT_EQ((*values)[1], 1.0f);
+}
+
+TEST(AoLeafReceivers, TwoSidedReadsTheOutsideWhicheverWayTheNormalPoints)
+{
+    // The shell of a closed 24³ box of cells (every cell with a coordinate 0 or 23), receivers on its top
+    // face's surface (z = 24) in the middle: with the normal up, the whole hemisphere; with it flipped
+    // into the box, one-sided it sees the box's inside (nothing), two-sided the outside again. At the
+    // box's centre nothing is visible on either side.
+    AoCells cells;
+    constexpr unsigned kSize = 24;
+    for (unsigned z = 0; z < kSize; ++z)
+        for (unsigned y = 0; y < kSize; ++y)
+            for (unsigned x = 0; x < kSize; ++x) {
+                const bool shell = x == 0 || y == 0 || z == 0 || x == kSize - 1 || y == kSize - 1 || z == kSize - 1;
+                if (!shell) continue;
+                const Vec n = z == kSize - 1 ? Vec{0, 0, 1} : z == 0 ? Vec{0, 0, -1} : x == 0 ? Vec{-1, 0, 0}
+                            : x == kSize - 1 ? Vec{1, 0, 0} : y == 0 ? Vec{0, -1, 0} : Vec{0, 1, 0};
+                addCell(cells, x, y, z, n);
+            }
+    AoReceivers receivers;
+    for (const float sign : {1.0f, -1.0f}) {
+        receivers.positions.push_back({11.3f, 12.6f, float(kSize)});
+        receivers.normals.push_back({0.0f, 0.0f, sign});
+    }
+    receivers.positions.push_back({12.0f, 12.0f, 12.0f});
+    receivers.normals.push_back({0.0f, 0.6f, 0.8f});
+    AoOptions o = depthMap(0.5);
+    auto oneSided = computeAmbientOcclusion(cells, receivers, o);
+    ASSERT_TRUE(oneSided);
+    // Inside, only the grazing directions whose wall lies within the slope-scaled tolerance read free
+    // (an occluder t away is t·(n·d) above the plane: n·d < ~0.08 for walls 12–17 edges away; measured
+    // 10 and 12 of 128).
+    EXPECT_EQ((*oneSided)[0], 1.0f);
+    EXPECT_LT((*oneSided)[1], 0.1f);
+    EXPECT_LT((*oneSided)[2], 0.1f);
+    o.twoSided = true;
+    auto twoSided = computeAmbientOcclusion(cells, receivers, o);
+    ASSERT_TRUE(twoSided);
+    EXPECT_EQ((*twoSided)[0], 1.0f);
+    EXPECT_EQ((*twoSided)[1], 1.0f);
+    EXPECT_LT((*twoSided)[2], 0.1f);
+    // Only on the full sphere of directions: with the upper hemisphere alone it stays one-sided.
+    o.upperHemisphere = true;
+    auto upper = computeAmbientOcclusion(cells, receivers, o);
+    ASSERT_TRUE(upper);
+    EXPECT_LT((*upper)[1], 0.1f);
 }

@@ -24,10 +24,16 @@ PreparedCells prepareCells(const AoCells& cells);
 /** Receivers in the same layout (positions as x, y, z; opacity and extent unused). */
 PreparedCells prepareReceivers(const AoReceivers& receivers);
 
-/** Sums over the directions one worker ran: seen[i] = Σ w·v, total[i] = Σ w. */
+/** Sums over the directions one worker ran: seen[i] = Σ w·v, total[i] = Σ w; two-sided, the same for the
+ *  directions behind the tangent plane (measured with −n) in seenBack, totalBack (empty otherwise). */
 struct Accumulator {
     std::vector<float> seen, total;
-    explicit Accumulator(std::size_t cells) : seen(cells, 0.0f), total(cells, 0.0f) {}
+    std::vector<float> seenBack, totalBack;
+    explicit Accumulator(std::size_t cells, bool twoSided = false)
+        : seen(cells, 0.0f), total(cells, 0.0f), seenBack(twoSided ? cells : 0, 0.0f),
+          totalBack(twoSided ? cells : 0, 0.0f)
+    {
+    }
 };
 
 /** w for n·d: 0 behind the tangent plane; 1, or n·d when cosine-weighted. */

@@ -28,7 +28,9 @@
 //
 // Cost per cell·direction: two blocked, auto-vectorised loops (projection, slab tests, packing; then
 // decoding and the test) around two scalar loops (4 max-updates; 1 read), compiled for AVX-512, AVX2
-// and plain x86-64 (DepthMapPasses.cpp); pass 2 skips the blocks whose normals all face away. The cells
+// and plain x86-64 (DepthMapPasses.cpp); pass 2 skips the blocks whose normals all face away, except
+// two-sided (the probe directions of AoOptions::twoSided, AmbientOcclusion.cpp), where every block runs and
+// each direction adds to the side of the receiver's tangent plane it lies on. The cells
 // come in breadth-first (Morton) order, so consecutive cells touch neighbouring pixels. Scratch per
 // worker: the map, W × H int32 over the projection of the cells' box (about twice the number of surface
 // cells for a closed object), cleared per direction, the blocks' normal cones and 64-cell block arrays.
@@ -50,6 +52,7 @@ public:
     DepthMapKernel(const PreparedCells& cells, const PreparedCells* receivers, const AoOptions& options,
                    const DepthMapPasses& passes)
         : m_cells(cells), m_receivers(receivers ? *receivers : cells), m_offLattice(receivers != nullptr),
+          m_twoSided(receivers != nullptr && twoSidedApplies(options)),
           m_bias(float(receivers ? options.receiverBias : options.bias)), m_cosine(options.cosineWeighted), m_passes(passes),
           m_scratch(std::make_unique<DepthMapScratch>())
     {
@@ -72,6 +75,10 @@ public:
         for (std::size_t b = 0; b < m_cones.size(); ++b) {
             const Cone& c = m_cones[b];
             m_facing[b] = c.axis[0] * d[0] + c.axis[1] * d[1] + c.axis[2] * d[2] >= -c.sine - 1e-4;
+        }
+        if (m_twoSided) {
+            m_passes.testTwoSided(f, m_receivers, m_map.data(), m_facing.data(), m_bias, m_cosine, sums, *m_scratch);
+            return;
         }
         (m_offLattice ? m_passes.testOffLattice : m_passes.test)(f, m_receivers, m_map.data(), m_facing.data(), m_bias,
                                                                  m_cosine, sums, *m_scratch);
@@ -123,6 +130,7 @@ private:
     const PreparedCells& m_cells;     ///< the occluders (pass 1)
     const PreparedCells& m_receivers; ///< pass 2: the cells themselves, or receivers off their lattice
     const bool m_offLattice;
+    const bool m_twoSided;
     const float m_bias;
     const bool m_cosine;
     const DepthMapPasses m_passes;

@@ -36,6 +36,11 @@ struct DepthMapPasses {
     void (*testOffLattice)(const DepthMapFrame& f, const PreparedCells& receivers, const std::int32_t* map,
                            const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums,
                            DepthMapScratch& scratch);
+    /** testOffLattice on both sides of each receiver's tangent plane (AoOptions::twoSided): a direction
+     *  with n·d < 0 is measured with −n and added to the sums' back half; @p facing is not read. */
+    void (*testTwoSided)(const DepthMapFrame& f, const PreparedCells& receivers, const std::int32_t* map,
+                         const std::uint8_t* facing, float bias, bool cosine, Accumulator& sums,
+                         DepthMapScratch& scratch);
     const char* isa; ///< "avx512", "avx2" or "portable"
 };
 

@@ -61,8 +61,21 @@ struct AoOptions {
     /** With receivers off the cells (leaves): edges beyond the occluder cube's half-extent along the
      *  receiver's normal before a cell occludes it (measured best on generated drums: see the overload). */
     double receiverBias = 0.5;
+    /** With receivers off the cells (leaves), DepthMap, all directions (not upperHemisphere): a probe
+     *  of 32 directions spread over the sphere measures both sides of each receiver's tangent plane
+     *  (d·n > 0 with n, d·n < 0 with −n), the receiver keeps the side that sees more and is measured on
+     *  it over all directions — a normal estimated with the wrong sign (into the solid, whose inside sees
+     *  almost nothing) reads as if it were right. Ignored otherwise. */
+    bool twoSided = true;
     unsigned threads = 0;             ///< 0: hardware concurrency
 };
+
+/** @brief Whether receivers off the cells are measured on both sides (AoOptions::twoSided and its
+ *         conditions: DepthMap, all directions). */
+inline bool twoSidedApplies(const AoOptions& options)
+{
+    return options.twoSided && !options.upperHemisphere && options.method == AoMethod::DepthMap;
+}
 
 /** @brief Per-cell values in [0, 1], in the order of @p cells. */
 Result<std::vector<float>> computeAmbientOcclusion(const AoCells& cells, const AoOptions& options,

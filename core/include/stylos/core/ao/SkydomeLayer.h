@@ -10,7 +10,8 @@
  * Progress: reading the cells (and leaves) to about 0.1, the skydome to 0.9, writing to 1. A cancel is honoured until the
  * write starts (the last moment that leaves the output as it was); the writer then finishes or fails.
  * Memory: the cells of the level (AoCells), one float a leaf, and with leaf receivers 24 + 28 bytes a
- * leaf and 8 bytes a leaf per thread (the sums). Units: directions over the unit sphere;
+ * leaf and 8 bytes a leaf per thread (the sums; two-sided: 16 per thread during the probe, then 8 more
+ * a leaf for the probe's sums). Units: directions over the unit sphere;
  * values are fractions of the sky in [0, 1]. Thread-safety: reentrant (the octree is only read).
  * Failure modes: InvalidArgument (a level outside 0..depth, options out of range), the writer's errors
  * (Unwritable, OutOfBudget), Cancelled.
