@@ -95,7 +95,7 @@ int main(int argc, char** argv)
         settings.mode = stylos::core::view::CutMode::GlobalLevel;
         settings.globalLevel = octree->depth();
         view.scheduler().setSettings(settings);
-        view.scheduler().setPointBudget(4'000'000);
+        view.scheduler().setPointBudget(octree->cellCount(octree->depth()));
     }
     view.setFragments({f});
     const QStringList views{"front", "back", "left", "right", "top", "bottom"};
