@@ -1,15 +1,22 @@
 // The 3D view's picture, measured (docs/benchmarks.md, "Splats that close the surface"):
 //   stylos_render_quality FILE [--leaf-pixels 8] [--size 1280x800] [--splat 1.5] [--shading headlight|eyedome]
-//                         [--view front|back|left|right|top|bottom] [--image OUT.png]
+//                         [--view front|back|left|right|top|bottom] [--image OUT.png] [--holes OUT.png]
+//                         [--all-leaves]
 // FILE: a point file (its octree is built first, default depth) or a .poct. The view (ViewportWidget, as in the
 // workbench) is fitted to the object, its centre pixel picked, the camera brought to that surface point at the
 // distance where a leaf edge spans --leaf-pixels pixels, and the refined image taken. Prints JSON:
 //   holes: background pixels inside the silhouette / silhouette pixels. The silhouette is the closing of the
-//          covered pixels by a 25 × 25 square (gaps narrower than 24 px are inside);
+//          covered pixels by a 25 × 25 square (gaps narrower than 24 px are inside); split (core::view::ImageCoverage)
+//          into holesThrough (background enclosed by drawn surface: seen through the surface) and holesEdge (the
+//          notches the closing fills along an outline, the object's or that of an opening of the scan);
 //   dark:  object pixels whose luminance is below 0.15 while the median of their 5 × 5 neighbourhood is above
 //          0.5, / object pixels.
+// --holes writes the picture with the hole pixels in red (through) and orange (edge), the isolated dark pixels in
+// yellow. --all-leaves draws every leaf (no level-of-detail cut, no frustum culling): holes that stay are not the
+// cut's.
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/view/ImageCoverage.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QApplication>
@@ -27,28 +34,6 @@
 
 namespace {
 
-using Mask = std::vector<std::uint8_t>;
-
-Mask maxFilter(const Mask& in, int w, int h, int r, bool dilate)
-{
-    Mask tmp(in.size()), out(in.size());
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            std::uint8_t v = dilate ? 0 : 1;
-            for (int k = std::max(0, x - r); k <= std::min(w - 1, x + r); ++k)
-                v = dilate ? std::max(v, in[y * w + k]) : std::min(v, in[y * w + k]);
-            tmp[y * w + x] = v;
-        }
-    for (int y = 0; y < h; ++y)
-        for (int x = 0; x < w; ++x) {
-            std::uint8_t v = dilate ? 0 : 1;
-            for (int k = std::max(0, y - r); k <= std::min(h - 1, y + r); ++k)
-                v = dilate ? std::max(v, tmp[k * w + x]) : std::min(v, tmp[k * w + x]);
-            out[y * w + x] = v;
-        }
-    return out;
-}
-
 bool isBackground(QRgb c) { return std::abs(qRed(c) - 33) <= 3 && std::abs(qGreen(c) - 36) <= 3 && std::abs(qBlue(c) - 41) <= 3; }
 
 double luminance(QRgb c) { return (0.2126 * qRed(c) + 0.7152 * qGreen(c) + 0.0722 * qBlue(c)) / 255.0; }
@@ -61,7 +46,7 @@ int main(int argc, char** argv)
     const QStringList args = app.arguments();
     if (args.size() < 2) {
         std::fprintf(stderr, "usage: stylos_render_quality FILE [--leaf-pixels N] [--size WxH] [--splat F] "
-                             "[--shading headlight|eyedome] [--view V] [--image OUT.png]\n");
+                             "[--shading headlight|eyedome] [--view V] [--image OUT.png] [--holes OUT.png] [--all-leaves]\n");
         return 2;
     }
     auto option = [&](const char* name, const QString& fallback) {
@@ -105,6 +90,13 @@ int main(int argc, char** argv)
     stylos::core::view::ViewFragment f;
     f.id = 1;
     f.octree = octree;
+    if (args.contains("--all-leaves")) {
+        auto settings = view.scheduler().settings();
+        settings.mode = stylos::core::view::CutMode::GlobalLevel;
+        settings.globalLevel = octree->depth();
+        view.scheduler().setSettings(settings);
+        view.scheduler().setPointBudget(octree->cellCount(octree->depth()));
+    }
     view.setFragments({f});
     const QStringList views{"front", "back", "left", "right", "top", "bottom"};
     view.setStandardView(static_cast<stylos::core::view::StandardView>(std::max<qsizetype>(0, views.indexOf(viewName))));
@@ -131,22 +123,25 @@ int main(int argc, char** argv)
     if (!imagePath.isEmpty()) image.save(imagePath);
 
     const int w = image.width(), h = image.height();
-    Mask covered(std::size_t(w) * h);
+    stylos::core::view::CoverageMask covered(std::size_t(w) * h);
     std::vector<double> lum(covered.size());
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const QRgb c = image.pixel(x, y);
-            covered[y * w + x] = isBackground(c) ? 0 : 1;
-            lum[y * w + x] = luminance(c);
+            covered[std::size_t(y) * w + x] = isBackground(c) ? 0 : 1;
+            lum[std::size_t(y) * w + x] = luminance(c);
         }
-    const Mask silhouette = maxFilter(maxFilter(covered, w, h, 12, true), w, h, 12, false);
-    std::int64_t inside = 0, holes = 0, object = 0, dark = 0;
+    using stylos::core::view::HoleKind;
+    std::vector<HoleKind> kinds;
+    const stylos::core::view::CoverageCounts coverage = stylos::core::view::measureCoverage(covered, w, h, 12, &kinds);
+    QImage marked = image;
+    std::int64_t object = 0, dark = 0;
     std::vector<double> window;
     for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
             const std::size_t i = std::size_t(y) * w + x;
-            inside += silhouette[i];
-            holes += silhouette[i] && !covered[i] ? 1 : 0;
+            if (kinds[i] != HoleKind::None)
+                marked.setPixel(x, y, kinds[i] == HoleKind::Through ? qRgb(255, 0, 0) : qRgb(255, 140, 0));
             if (!covered[i]) continue;
             ++object;
             if (lum[i] >= 0.15 || x < 2 || y < 2 || x >= w - 2 || y >= h - 2) continue;
@@ -154,8 +149,13 @@ int main(int argc, char** argv)
             for (int dy = -2; dy <= 2; ++dy)
                 for (int dx = -2; dx <= 2; ++dx) window.push_back(lum[std::size_t(y + dy) * w + x + dx]);
             std::nth_element(window.begin(), window.begin() + 12, window.end());
-            if (window[12] > 0.5) ++dark;
+            if (window[12] > 0.5) {
+                ++dark;
+                marked.setPixel(x, y, qRgb(255, 255, 0));
+            }
         }
+    const QString holesPath = option("--holes", QString());
+    if (!holesPath.isEmpty()) marked.save(holesPath);
     QJsonObject o;
     o["file"] = args[1];
     o["leaves"] = double(octree->cellCount(octree->depth()));
@@ -167,8 +167,11 @@ int main(int argc, char** argv)
     o["splatFactor"] = splat;
     o["shading"] = shading;
     o["pointsDrawn"] = double(view.lastPointsDrawn());
-    o["silhouettePixels"] = double(inside);
-    o["holes"] = inside ? double(holes) / double(inside) : 0.0;
+    o["allLeaves"] = args.contains("--all-leaves");
+    o["silhouettePixels"] = double(coverage.silhouette);
+    o["holes"] = coverage.holeFraction();
+    o["holesThrough"] = coverage.throughFraction();
+    o["holesEdge"] = coverage.edgeFraction();
     o["objectPixels"] = double(object);
     o["dark"] = object ? double(dark) / double(object) : 0.0;
     o["seconds"] = timer.elapsed() / 1000.0;
