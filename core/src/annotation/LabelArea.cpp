@@ -40,12 +40,17 @@ std::uint64_t key(std::int64_t x, std::int64_t y, std::int64_t z)
     return std::uint64_t(x) | (std::uint64_t(y) << 21) | (std::uint64_t(z) << 42);
 }
 
-/** Weighted sums of the samples within the sphere: leaves, their centroid and scatter (metres, query frame). */
-struct SphereSums {
+/** The samples within the sphere, weighted by their leaves: how many, their mean (query frame) and covariance. */
+struct SphereFit {
     double weight = 0;
-    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
-    Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
-    double heights2 = 0; ///< Σ w K(ρ): the kernel-weighted leaves along the plane given to gather()
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+};
+
+/** The leaves of the surface's slab within the kernel's reach: how many, and Σ w |nᵢ·n| K(ρ). */
+struct KernelSum {
+    double weight = 0;
+    double kernel = 0;
 };
 
 class AreaEstimator {
@@ -114,22 +119,20 @@ public:
         // Fit the plane through the leaves in the sphere, move the centre onto it, and again.
         Eigen::Vector3d centre = start, normal = Eigen::Vector3d::Zero();
         for (int round = 0; round < 3; ++round) {
-            const SphereSums sums = gather(j, near, nearCount, centre, nullptr);
-            if (sums.weight < kMinLeaves) return fallback(j);
-            const Eigen::Vector3d mean = sums.sum / sums.weight;
-            const Eigen::Matrix3d covariance = sums.scatter / sums.weight - mean * mean.transpose();
+            const SphereFit fit = fitSphere(j, near, nearCount, centre);
+            if (fit.weight < kMinLeaves) return fallback(j);
             Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eigen;
-            eigen.computeDirect(covariance);
+            eigen.computeDirect(fit.covariance);
             // A line or a point is no surface to measure a density on.
             if (!(eigen.eigenvalues()(1) > 1e-3 * m_radius * m_radius)) return fallback(j);
             normal = eigen.eigenvectors().col(0);
-            centre = start - normal * normal.dot(start - mean);
+            centre = start - normal * normal.dot(start - fit.mean);
         }
-        const SphereSums sums = gather(j, near, nearCount, centre, &normal);
-        if (sums.weight < kMinLeaves || !(sums.heights2 > 0)) return fallback(j);
+        const KernelSum sum = kernelSum(j, near, nearCount, centre, normal);
+        if (sum.weight < kMinLeaves || !(sum.kernel > 0)) return fallback(j);
         // The leaves per m² around the centre: Σ w K(ρ) / ∫K dA with K(ρ) = (1 − ρ²/R²)², ∫K dA = π R² / 3.
         // A smooth kernel, not a hard disc: the leaves sit on a lattice, and a hard edge counts them unevenly.
-        return std::numbers::pi * m_radius * m_radius / 3.0 / sums.heights2;
+        return std::numbers::pi * m_radius * m_radius / 3.0 / sum.kernel;
     }
 
     std::uint64_t firstLeaf(std::size_t j) const { return m_queries[j].firstLeaf; }
@@ -149,44 +152,56 @@ private:
         return p;
     }
 
-    SphereSums gather(std::size_t j, const std::array<std::uint32_t, 27>& near, std::size_t nearCount, const Eigen::Vector3d& centre,
-                      const Eigen::Vector3d* normal) const
+    /** Calls fn(d, sample) for every sample of the cells @p near, d its position relative to @p centre. */
+    template <typename Fn>
+    void forNear(std::size_t j, const std::array<std::uint32_t, 27>& near, std::size_t nearCount, const Eigen::Vector3d& centre,
+                 Fn&& fn) const
     {
-        SphereSums sums;
-        const double r2 = m_radius * m_radius;
         for (std::size_t n = 0; n < nearCount; ++n) {
             const std::size_t k = near[n];
-            for (std::uint64_t s = m_queries[k].firstSample; s < m_queries[k + 1].firstSample; ++s) {
-                const Eigen::Vector3d d = position(j, k, m_samples[s]) - centre;
-                const double w = m_samples[s].leaves;
-                if (normal) {
-                    // The leaves of the surface's slab, weighted by their distance along the plane.
-                    const double h = normal->dot(d), rho2 = d.squaredNorm() - h * h;
-                    if (rho2 >= r2 || std::abs(h) > m_slab) continue;
-                    // The surface beside the sample leans on the plane by |nᵢ · n|: its leaves per m² of the
-                    // plane are its leaves per m² of surface divided by that, which the weight gives back.
-                    const auto& ni = m_samples[s].normal;
-                    const double lean = std::abs(ni[0] * (*normal)[0] + ni[1] * (*normal)[1] + ni[2] * (*normal)[2]);
-                    const double k = 1.0 - rho2 / r2;
-                    sums.weight += w;
-                    sums.heights2 += w * k * k * lean;
-                } else {
-                    if (d.squaredNorm() > r2) continue;
-                    sums.weight += w;
-                    sums.sum += w * d;
-                    sums.scatter += w * d * d.transpose();
-                }
-            }
+            for (std::uint64_t s = m_queries[k].firstSample; s < m_queries[k + 1].firstSample; ++s)
+                fn(Eigen::Vector3d(position(j, k, m_samples[s]) - centre), m_samples[s]);
         }
-        if (!normal) {
-            // Back to the query frame: the sums were taken relative to the centre.
-            const Eigen::Vector3d mean = sums.weight > 0 ? Eigen::Vector3d(sums.sum / sums.weight) : Eigen::Vector3d::Zero();
-            const Eigen::Matrix3d covariance = sums.weight > 0 ? Eigen::Matrix3d(sums.scatter / sums.weight - mean * mean.transpose()) : Eigen::Matrix3d::Zero();
-            const Eigen::Vector3d meanQ = mean + centre;
-            sums.sum = sums.weight * meanQ;
-            sums.scatter = sums.weight * (covariance + meanQ * meanQ.transpose());
+    }
+
+    SphereFit fitSphere(std::size_t j, const std::array<std::uint32_t, 27>& near, std::size_t nearCount,
+                        const Eigen::Vector3d& centre) const
+    {
+        SphereFit fit;
+        Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+        Eigen::Matrix3d scatter = Eigen::Matrix3d::Zero();
+        const double r2 = m_radius * m_radius;
+        forNear(j, near, nearCount, centre, [&](const Eigen::Vector3d& d, const Sample& s) {
+            if (d.squaredNorm() > r2) return;
+            fit.weight += s.leaves;
+            sum += s.leaves * d;
+            scatter += s.leaves * d * d.transpose();
+        });
+        if (fit.weight > 0) {
+            const Eigen::Vector3d mean = sum / fit.weight; // relative to the centre, where the sums were taken
+            fit.covariance = scatter / fit.weight - mean * mean.transpose();
+            fit.mean = mean + centre;
         }
-        return sums;
+        return fit;
+    }
+
+    KernelSum kernelSum(std::size_t j, const std::array<std::uint32_t, 27>& near, std::size_t nearCount,
+                        const Eigen::Vector3d& centre, const Eigen::Vector3d& normal) const
+    {
+        KernelSum sum;
+        const double r2 = m_radius * m_radius;
+        forNear(j, near, nearCount, centre, [&](const Eigen::Vector3d& d, const Sample& s) {
+            // The leaves of the surface's slab, weighted by their distance along the plane.
+            const double h = normal.dot(d), rho2 = d.squaredNorm() - h * h;
+            if (rho2 >= r2 || std::abs(h) > m_slab) return;
+            // The surface beside the sample leans on the plane by |nᵢ · n|: its leaves per m² of the plane are
+            // its leaves per m² of surface divided by that, which the weight gives back.
+            const double lean = std::abs(s.normal[0] * normal[0] + s.normal[1] * normal[1] + s.normal[2] * normal[2]);
+            const double k = 1.0 - rho2 / r2;
+            sum.weight += s.leaves;
+            sum.kernel += s.leaves * k * k * lean;
+        });
+        return sum;
     }
 
     /** Too few leaves around, or no plane: the crossing density of the query cell (e² / |n|₁) shared by its leaves. */
