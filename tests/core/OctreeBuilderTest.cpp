@@ -5,7 +5,9 @@
 #include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/normals/NormalFileEstimation.h"
 #include "stylos/core/octree/ConstructionOctree.h"
+#include "stylos/core/octree/LeafSpacing.h"
 #include "stylos/core/octree/OctreeBuild.h"
+#include "stylos/core/octree/PackedOctree.h"
 
 #include "ReferenceOctree.h"
 #include "SyntheticTestSupport.h"
@@ -262,6 +264,32 @@ TEST(OctreeBuilder, BothBuildersWriteByteIdenticalFiles)
         }
         EXPECT_EQ(files[0], files[1]) << input;
     }
+}
+
+TEST(OctreeBuilder, WrittenFileHoldsTheReferenceAndItsSpacingWhateverTheThreads)
+{
+    // buildOctree pulls the tree while writing it, subtree by subtree on several threads, and computes the
+    // spacing layer beside it: the file must hold exactly the reference's cells and the reference's spacing.
+    TempDir dir;
+    const io::PointBatch cloud = smallCloud(40000, 23);
+    const ReferenceOctree reference = ReferenceOctree::fromBatch(cloud, 9, NormalCodeKind::Octahedral16);
+    const AttributeLayer spacing = leafSpacingLayer(reference);
+    ASSERT_EQ(spacing.bytes.size(), 4 * reference.description().cellsPerLevel.back());
+    ASSERT_GT(reference.description().cellsPerLevel[4], 100u);  // many subtrees for the threads to share
+    for (BuildMethod m : methods)
+        for (unsigned threads : {1u, 2u, 3u}) {
+            const std::string what = std::string(buildMethodName(m)) + ", " + std::to_string(threads) + " threads";
+            const fs::path out = dir / ("t" + std::to_string(threads) + buildMethodName(m) + ".poct");
+            auto report = buildOctree(memorySource(cloud, true, true), out, optionsFor(m, 9, threads));
+            ASSERT_TRUE(report.ok()) << report.error().message;
+            auto packed = PackedOctree::open(out);
+            ASSERT_TRUE(packed.ok()) << packed.error().message;
+            expectSameOctree(packed->levels(), reference, what);
+            const auto layer = packed->attribute(LeafSpacingLayerName);
+            ASSERT_TRUE(layer) << what;
+            ASSERT_EQ(layer->bytes.size(), spacing.bytes.size()) << what;
+            EXPECT_TRUE(std::equal(layer->bytes.begin(), layer->bytes.end(), spacing.bytes.begin())) << what;
+        }
 }
 
 TEST(OctreeBuilder, ColourKindThreadsAndGivenBox)

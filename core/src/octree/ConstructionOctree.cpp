@@ -1,6 +1,7 @@
 #include "stylos/core/octree/ConstructionOctree.h"
 
 #include "ConstructionWalk.h"
+#include "SubtreeCells.h"
 
 #include <algorithm>
 #include <atomic>
@@ -248,7 +249,7 @@ void ConstructionOctree::averageCell(std::uint8_t* c, const PreparedPoint& point
 // ---- Pull ----
 
 void ConstructionOctree::pullTable(std::uint32_t first, unsigned count, int level, PulledSubtrees* pulled,
-                                   std::uint64_t* weights)
+                                   std::uint64_t* weights, SubtreeCells* out)
 {
     if (pulled && level == pulled->level) {
         for (unsigned i = 0; i < count; ++i) weights[i] = pulled->weights[pulled->next++];
@@ -256,8 +257,11 @@ void ConstructionOctree::pullTable(std::uint32_t first, unsigned count, int leve
     }
     if (level == m_description.depth) {
         for (unsigned i = 0; i < count; ++i) weights[i] = cell::value(m_arena.cell(first + i));
+        if (out) out->addLeaves(m_arena, first, count);
         return;
     }
+    // The table's place in its level's cells (breadth-first order = the order tables are entered here).
+    const std::size_t at = out ? out->reserve(level, m_arena, first, count) : 0;
     if (level + 1 < m_description.depth) {
         // The cells' own tables are visited one subtree after another: fetch them all now.
         for (unsigned i = 1; i < count; ++i) __builtin_prefetch(m_arena.cell(cell::value(m_arena.cell(first + i))));
@@ -273,7 +277,7 @@ void ConstructionOctree::pullTable(std::uint32_t first, unsigned count, int leve
         const std::uint32_t table = cell::value(c);
         const unsigned children = cell::count(cell::mask(c));
         std::array<std::uint64_t, CellArena::MaxTable> childWeights;
-        pullTable(table, children, level + 1, pulled, childWeights.data());
+        pullTable(table, children, level + 1, pulled, childWeights.data(), out);
         std::uint64_t total = 0;
         if (children == 1 && (childWeights[0] & (childWeights[0] - 1)) == 0) {
             total = childWeights[0];
@@ -292,27 +296,12 @@ void ConstructionOctree::pullTable(std::uint32_t first, unsigned count, int leve
     }
     m_encode.encode(std::span(sums.data(), toEncode), std::span(codes.data(), toEncode));
     for (unsigned j = 0; j < toEncode; ++j) cell::setNormal(m_arena.cell(first + encoded[j]), codes[j]);
+    if (out) out->setNormals(level, at, m_arena, first, count);
 }
 
 void ConstructionOctree::pull(unsigned threads)
 {
-    // Subtrees below a split level are independent: threads take them one at a time. The levels above
-    // are then pulled on this thread with the subtrees' weights.
-    PulledSubtrees pulled;
-    pulled.level = std::min(m_description.depth, 4);
-    const std::vector<std::uint32_t> subtrees = cellIndices(pulled.level);
-    pulled.weights.resize(subtrees.size());
-    std::atomic<std::size_t> next{0};
-    auto work = [&] {
-        for (std::size_t i; (i = next.fetch_add(1)) < subtrees.size();)
-            pullTable(subtrees[i], 1, pulled.level, nullptr, &pulled.weights[i]);
-    };
-    std::vector<std::thread> helpers;
-    for (unsigned t = 1; t < std::max(threads, 1u); ++t) helpers.emplace_back(work);
-    work();
-    for (std::thread& t : helpers) t.join();
-    std::uint64_t total = 0;
-    pullTable(m_root, 1, 0, &pulled, &total);
+    pullAndVisitLevels(threads, nullptr);
 }
 
 } // namespace stylos::core::octree

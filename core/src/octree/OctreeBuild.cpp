@@ -3,6 +3,7 @@
 #include "stylos/core/octree/OctreeBuild.h"
 
 #include "BuildContext.h"
+#include "UnpulledBuild.h"
 
 #include "stylos/core/normals/NormalFileEstimation.h"
 #include "stylos/core/octree/ConstructionOctree.h"
@@ -13,6 +14,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <future>
 #include <random>
 #include <system_error>
 
@@ -54,6 +56,43 @@ private:
     fs::path m_path;
 };
 
+/**
+ * The levels of a construction octree not pulled yet: the first visitLevels() pulls it and hands the cells
+ * on as they are pulled (ConstructionOctree::pullAndVisitLevels); anything else pulls it first.
+ */
+class PullingLevels final : public OctreeLevels {
+public:
+    PullingLevels(ConstructionOctree& tree, unsigned threads) : m_tree(tree), m_threads(threads) {}
+    const OctreeDescription& description() const override { return m_tree.description(); }
+    void visitLevel(int level, const std::function<void(const CellBlock&)>& sink) const override
+    {
+        pullOnce(nullptr);
+        m_tree.visitLevel(level, sink);
+    }
+    void visitLevels(const std::function<void(int level, const CellBlock&)>& sink) const override
+    {
+        if (!pullOnce(&sink)) m_tree.visitLevels(sink);
+    }
+    std::vector<std::vector<std::uint64_t>> descendantCounts(int ancestorLevel,
+                                                             std::span<const int> levels) const override
+    {
+        return m_tree.descendantCounts(ancestorLevel, levels);
+    }
+
+private:
+    /** Pulls the tree unless done before (handing its cells to @p sink); true if it pulled now. */
+    bool pullOnce(const std::function<void(int level, const CellBlock&)>* sink) const
+    {
+        if (m_pulled) return false;
+        m_pulled = true;
+        m_tree.pullAndVisitLevels(m_threads, sink);
+        return true;
+    }
+    ConstructionOctree& m_tree;
+    unsigned m_threads;
+    mutable bool m_pulled = false;
+};
+
 } // namespace
 
 Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& output, const BuildOptions& options,
@@ -62,7 +101,7 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
     const auto start = std::chrono::steady_clock::now();
     SubProgress building(progress, 0.0, 0.95);
     BuildReport report;
-    auto tree = buildConstructionOctree(open, options, &building, &report);
+    auto tree = buildUnpulledConstructionOctree(open, options, &building, &report);
     if (!tree.ok()) return tree.error();
     if (progress && progress->isCancelRequested())
         return Error::at(ErrorCode::Cancelled, output.string(), "", "octree build cancelled");
@@ -76,8 +115,16 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
                              " with its leaves' spacing layer (" + std::to_string(leaves) +
                              " leaves × 4 bytes) but the memory limit (--memory-limit) is " +
                              formatBytes(options.memoryLimit));
-    const AttributeLayer spacing = leafSpacingLayer(**tree);
-    auto written = writePoct(**tree, output, std::span<const AttributeLayer>(&spacing, 1), &writing);
+    // The tree is pulled as it is written (no walk of its own for the writer); meanwhile another thread counts
+    // what the spacing layer needs of its shape, which the pull does not change; the layer is finished once
+    // the normals are pulled, after the cells.
+    ConstructionOctree& built = **tree;
+    std::future<LeafSpacingShape> shape = std::async(std::launch::async, [&built] { return leafSpacingShape(built); });
+    const PullingLevels pulling(built, options.threads);
+    const PendingLayer spacing{LeafSpacingLayerName, AttributeType::Float32, 1,
+                               [&] { return leafSpacingLayer(built, shape.get()); }};
+    auto written = writePoct(pulling, output, {}, std::span<const PendingLayer>(&spacing, 1), &writing);
+    if (shape.valid()) shape.wait();  // it reads the tree: it ends before the tree goes
     if (!written.ok()) return written.error();
     report.fileBytes = *written;
     report.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

@@ -2,6 +2,7 @@
 #include "BuildContext.h"
 #include "OptimalBuilder.h"
 #include "StreamingBuilder.h"
+#include "UnpulledBuild.h"
 
 #include "stylos/core/octree/ConstructionOctree.h"
 
@@ -32,6 +33,18 @@ Result<std::unique_ptr<ConstructionOctree>> buildConstructionOctree(const PointS
                                                                     const BuildOptions& options,
                                                                     ProgressSink* progress, BuildReport* report)
 {
+    auto tree = buildUnpulledConstructionOctree(open, options, progress, report);
+    if (!tree.ok()) return tree.error();
+    const auto start = std::chrono::steady_clock::now();
+    (*tree)->pull(options.threads);
+    if (report) report->seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return tree;
+}
+
+Result<std::unique_ptr<ConstructionOctree>> buildUnpulledConstructionOctree(const PointSourceFactory& open,
+                                                                            const BuildOptions& options,
+                                                                            ProgressSink* progress, BuildReport* report)
+{
     const auto start = std::chrono::steady_clock::now();
     const Status valid = checkBuildOptions(options);
     if (!valid.ok()) return valid.error();
@@ -41,6 +54,7 @@ Result<std::unique_ptr<ConstructionOctree>> buildConstructionOctree(const PointS
     BuildContext context(open, options, progress, optimal ? options.depth + 1 : 1);
     auto tree = optimal ? buildOptimal(context, options) : buildStreaming(context, options);
     if (!tree.ok()) return tree.error();
+    context.progressAfterPasses();
     if (report) {
         const OctreeDescription& d = (*tree)->description();
         report->points = d.points;

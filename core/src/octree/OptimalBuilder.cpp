@@ -101,8 +101,6 @@ Result<std::unique_ptr<ConstructionOctree>> buildOptimal(BuildContext& context, 
     }
     const Status averaged = averageLeaves(context, options, *tree, pool);
     if (!averaged.ok()) return averaged.error();
-    context.progressAfterPasses();
-    tree->pull(options.threads);
     tree->setThreads(options.threads);
     return tree;
 }

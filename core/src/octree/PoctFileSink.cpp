@@ -1,5 +1,6 @@
 #include "PoctFileSink.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <random>
@@ -31,7 +32,7 @@ Result<TempFile> TempFile::create(const fs::path& target)
     for (int attempt = 0; attempt < 16; ++attempt) {
         f.m_temporary = target;
         f.m_temporary += ".tmp-" + std::to_string(rng() % 1000000000000ull);
-        f.m_fd = ::open(f.m_temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+        f.m_fd = ::open(f.m_temporary.c_str(), O_RDWR | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (f.m_fd >= 0) return f;
         if (errno != EEXIST) break;
     }
@@ -77,6 +78,25 @@ Status TempFile::writeAt(std::uint64_t offset, const void* data, std::size_t siz
     return {};
 }
 
+Result<std::uint64_t> TempFile::hashRange(std::uint64_t offset, std::uint64_t size) const
+{
+    Hash64 hash;
+    std::vector<std::uint8_t> buffer(std::size_t(1) << 20);
+    while (size > 0) {
+        const std::size_t want = std::size_t(std::min<std::uint64_t>(size, buffer.size()));
+        const ssize_t n = ::pread(m_fd, buffer.data(), want, static_cast<off_t>(offset));
+        if (n < 0) {
+            if (errno == EINTR) continue;
+            return failure("cannot read back what was written: " + systemError(errno));
+        }
+        if (n == 0) return failure("cannot read back what was written: the file is shorter than written");
+        hash.update(buffer.data(), std::size_t(n));
+        offset += std::uint64_t(n);
+        size -= std::uint64_t(n);
+    }
+    return hash.digest();
+}
+
 Status TempFile::resize(std::uint64_t size)
 {
     if (::ftruncate(m_fd, static_cast<off_t>(size)) != 0)
@@ -96,15 +116,15 @@ Status TempFile::commit()
     return {};
 }
 
-SectionStream::SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes)
-    : m_file(&file), m_offset(offset), m_buffer(bufferBytes)
+SectionStream::SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes, bool hashing)
+    : m_file(&file), m_offset(offset), m_buffer(bufferBytes), m_hashing(hashing)
 {
 }
 
 Status SectionStream::append(const void* data, std::size_t size)
 {
     const auto* p = static_cast<const std::uint8_t*>(data);
-    m_hash.update(p, size);
+    if (m_hashing) m_hash.update(p, size);
     while (size > 0) {
         if (m_used == 0 && size >= m_buffer.size()) {
             if (auto s = m_file->writeAt(m_offset, p, size); !s) return s;

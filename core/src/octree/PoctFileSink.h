@@ -23,6 +23,8 @@ public:
 
     /** Writes @p size bytes at @p offset. */
     Status writeAt(std::uint64_t offset, const void* data, std::size_t size);
+    /** XXH64 of @p size bytes at @p offset, read back from the file (WriteFailed if they cannot be read). */
+    Result<std::uint64_t> hashRange(std::uint64_t offset, std::uint64_t size) const;
     /** Sets the file's length. */
     Status resize(std::uint64_t size);
     /** Closes the file and renames it to the target (replacing any file there). */
@@ -39,22 +41,25 @@ private:
     bool m_committed = false;
 };
 
-/** Appends to one section at its offset through a buffer, hashing everything appended. */
+/** Appends to one section (or a part of one) at its offset through a buffer, hashing everything appended
+ *  unless told not to (a part whose section is hashed as a whole when written). */
 class SectionStream {
 public:
-    SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes = std::size_t(1) << 20);
+    SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes = std::size_t(1) << 20,
+                  bool hashing = true);
 
     Status append(const void* data, std::size_t size);
     /** Writes what is buffered; call before reading checksum(). */
     Status flush();
+    /** XXH64 of what was appended (a hashing stream only). */
     std::uint64_t checksum() const { return m_hash.digest(); }
-    std::uint64_t length() const { return m_hash.length(); }
 
 private:
     TempFile* m_file;
     std::uint64_t m_offset;         ///< file offset of m_buffer[0]
     std::vector<std::uint8_t> m_buffer;
     std::size_t m_used = 0;
+    bool m_hashing = true;
     Hash64 m_hash;
 };
 

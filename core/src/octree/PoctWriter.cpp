@@ -19,10 +19,12 @@ using poct::TempFile;
 
 namespace {
 
-/** A layer to write: its description and its bytes (owned elsewhere). */
+/** A layer to write: its description and its bytes (owned elsewhere), or the pending layer that gives them
+ *  once the cells are written. */
 struct LayerSource {
     SectionEntry entry;
     std::span<const std::uint8_t> bytes;
+    const PendingLayer* pending = nullptr;
 };
 
 Error invalid(const fs::path& path, const std::string& problem)
@@ -89,7 +91,8 @@ Result<std::uint64_t> writeFile(const OctreeLevels& levels, const fs::path& path
     }
     for (const LayerSource& layer : layers) {
         const SectionEntry& e = layer.entry;
-        if (auto p = layerProblem(e.name, e.type, e.components, layer.bytes.size(), leaves)) return invalid(path, *p);
+        const std::uint64_t bytes = layer.pending ? leaves * e.components * poct::elementSize(e.type) : layer.bytes.size();
+        if (auto p = layerProblem(e.name, e.type, e.components, bytes, leaves)) return invalid(path, *p);
         if (!names.insert(e.name).second) return invalid(path, "attribute layer \"" + e.name + "\" given twice");
         entries.push_back(e);
     }
@@ -99,72 +102,103 @@ Result<std::uint64_t> writeFile(const OctreeLevels& levels, const fs::path& path
     poct::Header header = poct::planHeader(d, entries);
     auto file = TempFile::create(path);
     if (!file) return file.error();
-    SectionStream masks(*file, header.sections[0].offset);
-    SectionStream normals(*file, header.sections[1].offset);
-    std::optional<SectionStream> colours;
-    if (colourFromLevels) colours.emplace(*file, header.sections[2].offset);
 
-    // One pass over the levels fills the masks, the normals and the colours.
+    // Every level writes at its own place in the masks, normals (and colour) sections, so the levels may
+    // come interleaved, in one walk of the tree; the sections are hashed when complete, from the file.
+    const int depth = d.depth;
+    std::vector<SectionStream> maskStreams, normalStreams;
+    std::optional<SectionStream> colours;
+    constexpr std::size_t levelBuffer = std::size_t(256) << 10;
+    {
+        std::uint64_t before = 0;
+        for (int l = 0; l <= depth; ++l) {
+            if (l < depth) maskStreams.emplace_back(*file, header.sections[0].offset + before, levelBuffer, false);
+            normalStreams.emplace_back(*file, header.sections[1].offset + 2 * before, levelBuffer, false);
+            before += d.cellsPerLevel[std::size_t(l)];
+        }
+        if (colourFromLevels) colours.emplace(*file, header.sections[2].offset, levelBuffer, false);
+    }
+
     std::uint64_t totalCells = 0, writtenCells = 0;
     for (std::uint64_t c : d.cellsPerLevel) totalCells += c;
+    std::vector<std::uint64_t> cells(std::size_t(depth) + 1, 0), children(std::size_t(depth) + 1, 0);
     Status status;
-    for (int l = 0; l <= d.depth && status; ++l) {
-        const bool leafLevel = l == d.depth;
-        std::uint64_t cells = 0, children = 0;
-        levels.visitLevel(l, [&](const CellBlock& block) {
-            if (!status) return;
-            const std::size_t n = block.normals.size();
-            if (!leafLevel && block.masks.size() != n)
-                status =
-                    invalid(path, "level " + std::to_string(l) + ": a block has " + std::to_string(block.masks.size()) +
-                                      " masks for " + std::to_string(n) + " cells");
-            else if (leafLevel && colourFromLevels && block.colours.size() != 3 * n)
-                status = invalid(path, "leaf level: a block has " + std::to_string(block.colours.size()) +
-                                           " colour bytes for " + std::to_string(n) + " cells");
-            if (!status) return;
-            if (!leafLevel) {
-                for (std::size_t i = 0; i < n; ++i) {
-                    if (block.masks[i] == 0) {
-                        status = invalid(path, "level " + std::to_string(l) + ": inner cell " +
-                                                   std::to_string(cells + i) + " has no children");
-                        return;
-                    }
-                    children += poct::popcount8(block.masks[i]);
+    levels.visitLevels([&](int l, const CellBlock& block) {
+        if (!status) return;
+        const bool leafLevel = l == depth;
+        const std::size_t n = block.normals.size();
+        const auto level = static_cast<std::size_t>(l);
+        if (!leafLevel && block.masks.size() != n)
+            status = invalid(path, "level " + std::to_string(l) + ": a block has " + std::to_string(block.masks.size()) +
+                                       " masks for " + std::to_string(n) + " cells");
+        else if (leafLevel && colourFromLevels && block.colours.size() != 3 * n)
+            status = invalid(path, "leaf level: a block has " + std::to_string(block.colours.size()) +
+                                       " colour bytes for " + std::to_string(n) + " cells");
+        else if (cells[level] + n > d.cellsPerLevel[level])
+            status = invalid(path, "level " + std::to_string(l) + " delivered " + std::to_string(cells[level] + n) +
+                                       " cells or more, its description says " +
+                                       std::to_string(d.cellsPerLevel[level]));
+        if (!status) return;
+        if (!leafLevel) {
+            for (std::size_t i = 0; i < n; ++i) {
+                if (block.masks[i] == 0) {
+                    status = invalid(path, "level " + std::to_string(l) + ": inner cell " +
+                                               std::to_string(cells[level] + i) + " has no children");
+                    return;
                 }
-                if (status) status = masks.append(block.masks.data(), n);
+                children[level] += poct::popcount8(block.masks[i]);
             }
-            if (status) status = normals.append(block.normals.data(), 2 * n);
-            if (status && leafLevel && colours) status = colours->append(block.colours.data(), 3 * n);
-            cells += n;
-            writtenCells += n;
-            if (progress && status) {
-                progress->update(totalCells ? std::min(1.0, double(writtenCells) / double(totalCells)) : 1.0);
-                if (progress->isCancelRequested())
-                    status = Error::at(ErrorCode::Cancelled, path.string(), "", "cancelled while writing");
-            }
-        });
-        if (!status) break;
-        if (cells != d.cellsPerLevel[static_cast<std::size_t>(l)])
-            status = invalid(path, "level " + std::to_string(l) + " delivered " + std::to_string(cells) +
-                                       " cells, its description says " +
-                                       std::to_string(d.cellsPerLevel[static_cast<std::size_t>(l)]));
-        else if (!leafLevel && children != d.cellsPerLevel[static_cast<std::size_t>(l) + 1])
-            status = invalid(path, "level " + std::to_string(l) + ": child masks give " + std::to_string(children) +
-                                       " children, level " + std::to_string(l + 1) + " has " +
-                                       std::to_string(d.cellsPerLevel[static_cast<std::size_t>(l) + 1]) + " cells");
+            status = maskStreams[level].append(block.masks.data(), n);
+        }
+        if (status) status = normalStreams[level].append(block.normals.data(), 2 * n);
+        if (status && leafLevel && colours) status = colours->append(block.colours.data(), 3 * n);
+        cells[level] += n;
+        writtenCells += n;
+        if (progress && status) {
+            progress->update(totalCells ? std::min(1.0, double(writtenCells) / double(totalCells)) : 1.0);
+            if (progress->isCancelRequested())
+                status = Error::at(ErrorCode::Cancelled, path.string(), "", "cancelled while writing");
+        }
+    });
+    for (int l = 0; l <= depth && status; ++l) {
+        const auto level = static_cast<std::size_t>(l);
+        if (cells[level] != d.cellsPerLevel[level])
+            status = invalid(path, "level " + std::to_string(l) + " delivered " + std::to_string(cells[level]) +
+                                       " cells, its description says " + std::to_string(d.cellsPerLevel[level]));
+        else if (l < depth && children[level] != d.cellsPerLevel[level + 1])
+            status = invalid(path, "level " + std::to_string(l) + ": child masks give " +
+                                       std::to_string(children[level]) + " children, level " +
+                                       std::to_string(l + 1) + " has " + std::to_string(d.cellsPerLevel[level + 1]) +
+                                       " cells");
     }
-    if (status) status = masks.flush();
-    if (status) status = normals.flush();
+    for (SectionStream& stream : maskStreams)
+        if (status) status = stream.flush();
+    for (SectionStream& stream : normalStreams)
+        if (status) status = stream.flush();
     if (status && colours) status = colours->flush();
     if (!status) return status.error();
-    header.sections[0].checksum = masks.checksum();
-    header.sections[1].checksum = normals.checksum();
-    std::size_t next = 2;
-    if (colours) header.sections[next++].checksum = colours->checksum();
+    std::size_t next = 0;
+    for (; next < (colours ? 3u : 2u); ++next) {
+        SectionEntry& e = header.sections[next];
+        auto hash = file->hashRange(e.offset, e.length);
+        if (!hash) return hash.error();
+        e.checksum = *hash;
+    }
     for (const LayerSource& layer : layers) {
         SectionEntry& e = header.sections[next++];
-        if (auto s = file->writeAt(e.offset, layer.bytes.data(), layer.bytes.size()); !s) return s.error();
-        e.checksum = xxh64(layer.bytes);
+        AttributeLayer finished;
+        std::span<const std::uint8_t> bytes = layer.bytes;
+        if (layer.pending) {
+            finished = layer.pending->finish();
+            if (finished.name != e.name || finished.type != e.type || finished.components != e.components)
+                return invalid(path, "attribute layer \"" + e.name + "\" came back as \"" + finished.name +
+                                         "\" with another type or component count");
+            if (auto p = layerProblem(e.name, e.type, e.components, finished.bytes.size(), leaves))
+                return invalid(path, *p);
+            bytes = finished.bytes;
+        }
+        if (auto s = file->writeAt(e.offset, bytes.data(), bytes.size()); !s) return s.error();
+        e.checksum = xxh64(bytes);
     }
     const std::vector<std::uint8_t> head = poct::serialiseHeader(header);
     const std::uint64_t size = poct::fileBytes(header);
@@ -179,9 +213,18 @@ Result<std::uint64_t> writeFile(const OctreeLevels& levels, const fs::path& path
 Result<std::uint64_t> writePoct(const OctreeLevels& levels, const fs::path& path,
                                 std::span<const AttributeLayer> extraLayers, ProgressSink* progress)
 {
+    return writePoct(levels, path, extraLayers, {}, progress);
+}
+
+Result<std::uint64_t> writePoct(const OctreeLevels& levels, const fs::path& path,
+                                std::span<const AttributeLayer> extraLayers, std::span<const PendingLayer> pendingLayers,
+                                ProgressSink* progress)
+{
     std::vector<LayerSource> layers;
     for (const AttributeLayer& l : extraLayers)
         layers.push_back({SectionEntry{l.name, poct::SectionKind::Attribute, l.type, l.components, 0, 0, 0}, l.bytes});
+    for (const PendingLayer& l : pendingLayers)
+        layers.push_back({SectionEntry{l.name, poct::SectionKind::Attribute, l.type, l.components, 0, 0, 0}, {}, &l});
     return writeFile(levels, path, layers, levels.description().hasColour, progress);
 }
 

@@ -63,8 +63,6 @@ Result<std::unique_ptr<ConstructionOctree>> buildStreaming(BuildContext& context
     }
     const Status counted = context.endPass(pass.pointsRead(), pass.pointsSkipped());
     if (!counted.ok()) return counted.error();
-    context.progressAfterPasses();
-    tree->pull(options.threads);
     tree->setThreads(options.threads);
     return tree;
 }

@@ -11,7 +11,7 @@ namespace stylos::core::octree {
 /**
  * @brief Root box (bounds pass unless given), then one pass: a reader thread reads, quantises and
  *        prepares the points (unit normal, first-point code); this thread inserts them in input order
- *        (ConstructionOctree::populate), then pulls. Errors: the reader's, OutOfBudget, Cancelled,
+ *        (ConstructionOctree::populate); not pulled (the caller pulls). Errors: the reader's, OutOfBudget, Cancelled,
  *        InvalidArgument (no points).
  */
 Result<std::unique_ptr<ConstructionOctree>> buildStreaming(BuildContext& context, const BuildOptions& options);

@@ -15,7 +15,9 @@
  *  - Both: pull() computes the inner cells' normals (subtrees on several threads); visitLevel() lists a
  *    level in breadth-first order through a depth-first walk restricted to the level (one frame per
  *    level, no memory proportional to the tree; large levels walked by setThreads() threads, subtree by
- *    subtree, handed out in order).
+ *    subtree, handed out in order). The writer takes every level at once instead: visitLevels() (one
+ *    depth-first walk) or, for a tree not pulled yet, pullAndVisitLevels(), which hands the cells out
+ *    as the pull finishes each subtree (buildOctree: the file is written without a walk of its own).
  *
  * Leaf averaging and pull follow the shared definitions exactly (see OctreeBuild.h): a leaf's first point
  * sets its code; each later one re-encodes decode(code) · w + n̂ (float); colour channels by the rounded
@@ -64,6 +66,11 @@ public:
     const OctreeDescription& description() const override { return m_description; }
     /** @brief Precondition: the tree is complete (every leaf at the leaf level) and pulled. */
     void visitLevel(int level, const std::function<void(const CellBlock&)>& sink) const override;
+    /** @brief All levels in one depth-first walk (each cell read once). Precondition: as visitLevel(). */
+    void visitLevels(const std::function<void(int level, const CellBlock&)>& sink) const override;
+    /** @brief One walk below each ancestor, on the setThreads() threads. Precondition: a complete tree. */
+    std::vector<std::vector<std::uint64_t>> descendantCounts(int ancestorLevel,
+                                                             std::span<const int> levels) const override;
 
     // ---- Streaming ----
     /**
@@ -108,6 +115,13 @@ public:
     // ---- Both ----
     /** @brief Computes every inner cell's normal from its children (the shared pull) on @p threads threads. */
     void pull(unsigned threads);
+    /**
+     * @brief pull(), handing every level's cells to @p sink as they are pulled (as visitLevels() would after
+     *        the pull: each level in breadth-first order, the levels interleaved; one call at a time, from
+     *        any of the threads), so that writing the file needs no walk of its own. A null @p sink: pull().
+     *        While it runs, other threads may read the cells' masks and child tables (not their normals).
+     */
+    void pullAndVisitLevels(unsigned threads, const std::function<void(int level, const CellBlock&)>* sink);
     /** @brief Threads visitLevel() may use to walk large levels (default 1); the output does not change. */
     void setThreads(unsigned threads) { m_threads = threads < 1 ? 1 : threads; }
     /** @brief A Path starting at the root. */
@@ -129,6 +143,8 @@ private:
     template <unsigned CellBytes>
     void visitCells(int level, const std::function<void(const CellBlock&)>& sink) const;
     template <unsigned CellBytes>
+    void visitAllCells(const std::function<void(int level, const CellBlock&)>& sink) const;
+    template <unsigned CellBytes>
     bool populateCells(const PreparedPoint& point, Path& path);
     template <unsigned CellBytes>
     void averageCell(std::uint8_t* cell, const PreparedPoint& point);
@@ -149,8 +165,12 @@ private:
         std::vector<std::uint64_t> weights;
         std::size_t next = 0;
     };
-    /** Pulls the @p count cells from @p first (a table) at @p level; their weights go to @p weights. */
-    void pullTable(std::uint32_t first, unsigned count, int level, PulledSubtrees* pulled, std::uint64_t* weights);
+    /** The cells of one subtree, level by level, as its pull visits them (SubtreeCells.h). */
+    struct SubtreeCells;
+    /** Pulls the @p count cells from @p first (a table) at @p level; their weights go to @p weights, the cells
+     *  (when @p out) to @p out. */
+    void pullTable(std::uint32_t first, unsigned count, int level, PulledSubtrees* pulled, std::uint64_t* weights,
+                   SubtreeCells* out = nullptr);
 
     OctreeDescription m_description;
     CellArena m_arena;

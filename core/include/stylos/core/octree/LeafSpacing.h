@@ -14,7 +14,9 @@
  * denser than its cells), else the coarser (o₁, s₁). Then h = √(A / n) for every leaf under C.
  *
  * Units: metres. Thread-safety: reentrant (reads the levels only). Cost: one pass over the masks of
- * levels m … D − 1 (not the leaves), memory 8 bytes per cell of level m plus the result. Failure modes:
+ * levels m … D − 1 (not the leaves; OctreeLevels::descendantCounts), memory 24 bytes per cell of level m
+ * plus the result. The counts need the tree's shape only, not its normals: leafSpacingShape() may run
+ * while the normals are being pulled, and leafSpacingLayer(levels, shape) finishes after. Failure modes:
  * none; an empty octree gives an empty vector.
  */
 #include "stylos/core/octree/OctreeLevels.h"
@@ -32,6 +34,16 @@ std::vector<float> computeLeafSpacing(const OctreeLevels& levels);
 
 /** @brief @p spacing as the "spacing" attribute layer (little-endian Float32). */
 AttributeLayer leafSpacingLayer(const std::vector<float>& spacing);
+/** @brief What the spacing needs of the tree's shape: the descendant counts of every level-m cell. */
+struct LeafSpacingShape {
+    int ancestorLevel = 0;
+    std::vector<std::vector<std::uint64_t>> counts;   ///< at levels m + 1, m + 2 (capped at D) and D
+};
+/** @brief The shape part of the spacing of @p levels: reads only child masks and tables (safe while
+ *         another thread pulls the normals of a ConstructionOctree). */
+LeafSpacingShape leafSpacingShape(const OctreeLevels& levels);
+/** @brief The layer from @p levels (pulled normals) and its @p shape (from leafSpacingShape of the same tree). */
+AttributeLayer leafSpacingLayer(const OctreeLevels& levels, const LeafSpacingShape& shape);
 /** @brief The same layer computed straight from @p levels (computeLeafSpacing's values, 4 bytes a leaf, no copy);
  *         empty bytes when there is no leaf. */
 AttributeLayer leafSpacingLayer(const OctreeLevels& levels);

@@ -49,6 +49,22 @@ public:
      *        Precondition: 0 <= level <= depth.
      */
     virtual void visitLevel(int level, const std::function<void(const CellBlock&)>& sink) const = 0;
+
+    /**
+     * @brief Calls @p sink(level, block) with the cells of every level: each level's blocks in breadth-first
+     *        order as visitLevel() gives them, the levels' blocks interleaved in any order. The default visits
+     *        the levels one after another; a tree whose levels are costly to reach one by one (the
+     *        construction structure) lists them all in one walk.
+     */
+    virtual void visitLevels(const std::function<void(int level, const CellBlock&)>& sink) const;
+
+    /**
+     * @brief For each cell of @p ancestorLevel in breadth-first order, the number of its descendants at each
+     *        of @p levels: result[k][i] for levels[k] and the i-th cell. Precondition: every level in
+     *        @p levels is in ancestorLevel..depth. The default derives them from visitLevel(), a level at a time.
+     */
+    virtual std::vector<std::vector<std::uint64_t>> descendantCounts(int ancestorLevel,
+                                                                     std::span<const int> levels) const;
 };
 
 } // namespace stylos::core::octree

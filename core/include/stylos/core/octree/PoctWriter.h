@@ -16,6 +16,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -43,6 +44,18 @@ struct AttributeLayer {
 };
 
 /**
+ * @brief A layer still being computed (on another thread) when the writing starts: its name, type and
+ *        components, and `finish`, which the writer calls once the cells are written and which returns the
+ *        layer (the same name, type and components; waiting for it if need be).
+ */
+struct PendingLayer {
+    std::string name;
+    AttributeType type = AttributeType::UInt8;
+    std::uint8_t components = 1;
+    std::function<AttributeLayer()> finish;
+};
+
+/**
  * @brief Writes @p levels (and the colour layer when it has colour, plus @p extraLayers) to @p path,
  *        in one pass over the levels (block by block: memory stays at a few MiB of buffers).
  *        @p progress (optional) gets the fraction of cells written after each block and can cancel.
@@ -53,6 +66,11 @@ struct AttributeLayer {
  */
 Result<std::uint64_t> writePoct(const OctreeLevels& levels, const std::filesystem::path& path,
                                 std::span<const AttributeLayer> extraLayers = {}, ProgressSink* progress = nullptr);
+/** @brief writePoct() with, after @p extraLayers, the @p pendingLayers, whose bytes are fetched once the cells
+ *         are written: a layer computed from the same octree on another thread meanwhile. */
+Result<std::uint64_t> writePoct(const OctreeLevels& levels, const std::filesystem::path& path,
+                                std::span<const AttributeLayer> extraLayers, std::span<const PendingLayer> pendingLayers,
+                                ProgressSink* progress = nullptr);
 
 /**
  * @brief Rewrites the `.poct` at @p path with @p layer added, or replacing the layer of the same name
