@@ -29,7 +29,7 @@ points=${POINTS:-2000}
 
 [ -f "$build/CMakeCache.txt" ] || cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release \
   -DSTYLOS_BUILD_GUI=OFF -DSTYLOS_BUILD_BENCHMARKS=ON > /dev/null
-cmake --build "$build" --target stylos-cli stylos_ao_truth
+cmake --build "$build" --target stylos-cli stylos_ao_truth >&2
 cli=$(find "$build" -name stylos-cli -type f -perm -u+x | head -n 1)
 truth=$(find "$build" -name stylos_ao_truth -type f -perm -u+x | head -n 1)
 mkdir -p "$work"
@@ -81,8 +81,9 @@ def times(name):
 def load(name): return open(os.path.join(work, name + ".load")).read().split()[0]
 def ra(a): return f"{a['r']:.3f} / {a['mae']:.3f}"
 print(f"PCV: -N_RAYS {rays} -RESOLUTION {resolution}; stylos-cli ao --directions {rays}; r / MAE against the analytic truth\n")
-print("| scan | points | PCV s wall (CPU), load before | stylos-cli ao s wall (CPU), load before | PCV ÷ ao, wall (CPU) "
-      "| PCV, its definition | method, PCV's definition | PCV ÷ F, ours (≤ 1) | method, ours | PCV 5 / 50 / 95 % |")
+print("| scan | points | PCV s wall (CPU), load before | stylos-cli ao s wall (CPU), load before; of which octree + normals / skydome "
+      "| PCV ÷ ao, wall (CPU); ÷ skydome alone | PCV, its definition | method, PCV's definition | PCV ÷ F, ours (≤ 1) "
+      "| method, ours | PCV 5 / 50 / 95 % |")
 print("|---|---:|---|---|---|---|---|---|---|---|")
 for kind in kinds:
     j = json.load(open(os.path.join(work, f"{kind}.truth.json")))
@@ -90,8 +91,10 @@ for kind in kinds:
     pw, pc, _ = times(f"{kind}.pcv")
     aw, ac, _ = times(f"{kind}.ao")
     pct = p["percentiles"]
-    print(f"| {kind} | {p['points']:,} | {pw:.1f} ({pc:.1f}), {load(kind + '.pcv')} | {aw:.1f} ({ac:.1f}), {load(kind + '.ao')} "
-          f"| **{pw / aw:.1f}×** ({pc / ac:.1f}×) | {ra(a['pcvDefinition']['pcv'])} | {ra(a['pcvDefinition']['method'])} "
+    cli = json.load(open(os.path.join(work, f"{kind}.ao.json")))
+    print(f"| {kind} | {p['points']:,} | {pw:.1f} ({pc:.1f}), {load(kind + '.pcv')} | {aw:.1f} ({ac:.1f}), {load(kind + '.ao')}; "
+          f"{cli['build_seconds']:.2f} / {cli['ao_seconds']:.2f} "
+          f"| **{pw / aw:.1f}×** ({pc / ac:.1f}×); {pw / cli['ao_seconds']:.1f}× | {ra(a['pcvDefinition']['pcv'])} | {ra(a['pcvDefinition']['method'])} "
           f"| {ra(a['stylosDefinition']['pcv'])} | {ra(a['stylosDefinition']['method'])} | {pct['5']:.3f} / {pct['50']:.3f} / {pct['95']:.3f} |")
 print("\nPer part, ours (visible / directions in front of the true normal): mean (truth, method, PCV ÷ F unbounded), "
       "r of PCV and of the method (PCV's definition)\n")
