@@ -271,24 +271,29 @@ std::size_t cellOfLeaf(const ao::AoCells& cells, std::uint64_t leaf)
     return std::size_t(std::upper_bound(cells.leafBegin.begin(), cells.leafBegin.end(), leaf) - cells.leafBegin.begin()) - 1;
 }
 
+/** CloudCompare's output of @p ply (refused, before any work, when its point count is not the scan's). */
+stylos::bench::PcvCloud readPcvOf(const fs::path& pcvPath, const fs::path& ply)
+{
+    auto read = stylos::bench::readPcvCloud(pcvPath);
+    if (!read) fail(read.error().message);
+    auto scan = stylos::core::io::openPointReader(ply);
+    if (!scan) fail(scan.error().message);
+    const auto scanPoints = scan.value()->header().declaredPoints.value_or(0);
+    if (read->positions.size() != scanPoints)
+        fail(pcvPath.string() + ": " + std::to_string(read->positions.size()) + " points, the scan " + ply.string() +
+             " has " + std::to_string(scanPoints) + ": not CloudCompare's output of this scan");
+    return std::move(read).value();
+}
+
 /**
  * CloudCompare's PCV at the true points (the nearest PCV point to each posed one) against the analytic
  * truth, per part, in PCV's definition and in ours, beside the method in both; @p points in the object
  * frame, @p directions the method's turned into it.
  */
-json pcvReport(const Settings& s, const fs::path& ply, const std::vector<TruePoint>& points,
+json pcvReport(const Settings& s, const stylos::bench::PcvCloud& pcv, const std::vector<TruePoint>& points,
                const Eigen::Affine3d& pose, const std::vector<std::array<double, 3>>& directions,
                const std::vector<double>& truth, const std::vector<double>& method)
 {
-    auto read = stylos::bench::readPcvCloud(s.pcv);
-    if (!read) fail(read.error().message);
-    const stylos::bench::PcvCloud& pcv = *read;
-    auto scan = stylos::core::io::openPointReader(ply);
-    if (!scan) fail(scan.error().message);
-    const auto scanPoints = scan.value()->header().declaredPoints.value_or(0);
-    if (pcv.positions.size() != scanPoints)
-        fail(s.pcv.string() + ": " + std::to_string(pcv.positions.size()) + " points, the scan " + ply.string() +
-             " has " + std::to_string(scanPoints) + ": not CloudCompare's output of this scan");
     const double radius = 4.0 * s.scan.spacing;
     const stylos::bench::PointGrid grid(pcv.positions, radius);
     std::vector<double> value(points.size()), distance(points.size()), front(points.size());
@@ -357,6 +362,8 @@ int main(int argc, char** argv)
         auto made = synth::generateScan(s.kind, s.scan, ply);
         if (!made) fail(made.error().message);
     }
+    std::optional<stylos::bench::PcvCloud> pcv;
+    if (!s.pcv.empty()) pcv = readPcvOf(s.pcv, ply);
     if (!fs::exists(poct)) {
         std::cerr << "building " << poct << "...\n";
         oct::BuildOptions build;
@@ -456,7 +463,7 @@ int main(int argc, char** argv)
     }
     const auto meanOf = [&](const char* part) { return out["parts"].contains(part) ? out["parts"][part]["mean"].get<double>() : -1.0; };
     out["flutesDarkerThanFillets"] = meanOf("flute") < meanOf("fillet");
-    if (!s.pcv.empty()) out["pcv"] = pcvReport(s, ply, points, pose, directions, truth, method);
+    if (pcv) out["pcv"] = pcvReport(s, *pcv, points, pose, directions, truth, method);
     if (!s.csv.empty()) {
         std::ofstream csv(s.csv);
         csv << "part,truth,method,cellReference,leafDistance,x,y,z,nx,ny,nz\n";
