@@ -11,6 +11,7 @@
 # PCV's scalar field against the same reference on the same points. Each JSON goes to WORK_DIR, a table
 # to stdout. Environment: RAYS (default 256), CLOUDS (default "drum buddha igea"), SAMPLES (default 2000).
 # Needs: cmake, ninja, CloudCompare (apt-get install cloudcompare), xvfb-run, python3.
+# Against the ANALYTIC truth of generated scans instead of the cell reference: scripts/bench-pcv-truth.sh.
 set -euo pipefail
 
 build=${1:?usage: scripts/bench-pcv.sh BUILD_DIR [WORK_DIR]}

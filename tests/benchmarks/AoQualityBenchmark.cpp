@@ -18,13 +18,13 @@
 //     (|φ| > half width), and the broken cavity's core (q < 0.5 in its (θ, z) ellipse); the class
 //     means of every method (all cells of the class) and of the reference (C random cells of each,
 //     default 300), and whether grooves < fillets and cavity < grooves.
-//   - --pcv: CloudCompare's output of the same cloud (x y z and its "Illuminance (PCV)" scalar field).
-//     P random points (default 2000) go to the level-L cell containing them; PCV is compared with the
-//     reference and each method with the reference. PCV's value is (rays that see the point) / (all
-//     rays), from the whole sphere (or, with -180, its upper half), without normals; Stylos's is over
-//     the directions in front of the normal. So both are also put in PCV's definition: a value times
-//     F(n) = (directions of the set with n·d > 0) / (all directions); "stylosDefinition" divides PCV by
-//     F(n) instead. "twoSided" compares PCV with the reference counted from both sides of the tangent
+//   - --pcv: CloudCompare's output of the same cloud (x y z and its "Illuminance (PCV)" scalar field,
+//     read by PcvCloud.h). P random points (default 2000) go to the level-L cell containing them; PCV is
+//     compared with the reference and each method with the reference. PCV's value is (rays that see the
+//     point) / (all rays), from the whole sphere (or, with -180, its upper half), without normals;
+//     Stylos's is over the directions in front of the normal. So both are also put in PCV's definition:
+//     a value times F(n) = (directions of the set with n·d > 0) / (all directions); "stylosDefinition"
+//     divides PCV by F(n) instead. "twoSided" compares PCV with the reference counted from both sides of the tangent
 //     plane: ref(n)·F(n) + ref(−n)·F(−n), ref(−n) being the reference with the normal flipped (the bias
 //     then below the plane) — what PCV measures on an open surface (a single-sided scan), which it sees
 //     from behind as well.
@@ -32,13 +32,12 @@
 #include "stylos/core/ao/AmbientOcclusion.h"
 #include "stylos/core/ao/Directions.h"
 #include "stylos/core/ao/ReferenceAo.h"
-#include "stylos/core/io/PointFileFormat.h"
-#include "stylos/core/io/PointReader.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/synth/SyntheticScan.h"
 
 #include "BenchmarkClock.h"
+#include "PcvCloud.h"
 
 #include <nlohmann/json.hpp>
 
@@ -196,14 +195,6 @@ int surfaceLevel(const oct::PackedOctree& octree)
     return level;
 }
 
-/** Fraction of the direction set in front of @p n (n·d > 0 in float, as the methods weigh them). */
-double frontFraction(const std::vector<ao::Direction>& directions, const std::array<float, 3>& n)
-{
-    std::size_t front = 0;
-    for (const auto& d : directions) front += n[0] * float(d[0]) + n[1] * float(d[1]) + n[2] * float(d[2]) > 0.0f;
-    return double(front) / double(directions.size());
-}
-
 // ---------------------------------------------------------------------------------------------------
 // The generated drum: classes of lateral cells from the truth.
 
@@ -283,35 +274,14 @@ json drumReport(const ao::AoCells& cells, const std::vector<DrumClass>& classes,
 
 using MethodValues = std::vector<std::pair<std::string, std::vector<float>>>;
 
-/** CloudCompare's output: positions and the PCV scalar field, in file order. */
-struct PcvCloud {
-    std::vector<std::array<double, 3>> positions;
-    std::vector<double> values;
-};
+using stylos::bench::frontFraction;
+using stylos::bench::PcvCloud;
 
 PcvCloud readPcv(const fs::path& path)
 {
-    auto opened = stylos::core::io::openPointReader(path);
-    if (!opened) fail(opened.error().message);
-    auto& reader = *opened.value();
-    int column = -1;
-    const auto& names = reader.header().schema.scalarNames;
-    for (std::size_t k = 0; k < names.size(); ++k)
-        if (names[k].find("PCV") != std::string::npos || names[k].find("Illuminance") != std::string::npos)
-            column = int(k);
-    if (column < 0) fail(path.string() + ": no PCV / Illuminance scalar field");
-    PcvCloud cloud;
-    stylos::core::io::PointBatch batch;
-    for (;;) {
-        auto n = reader.read(batch, 65536);
-        if (!n) fail(n.error().message);
-        if (n.value() == 0) break;
-        for (std::size_t i = 0; i < n.value(); ++i) {
-            cloud.positions.push_back({batch.positions[3 * i], batch.positions[3 * i + 1], batch.positions[3 * i + 2]});
-            cloud.values.push_back(batch.scalars[std::size_t(column)][i]);
-        }
-    }
-    return cloud;
+    auto cloud = stylos::bench::readPcvCloud(path);
+    if (!cloud) fail(cloud.error().message);
+    return std::move(cloud).value();
 }
 
 /**

@@ -5,7 +5,7 @@
 //   stylos_ao_truth [--kind drum|fragment] [--spacing M] [--noise M] [--seed K] [--depth D] [--level L]
 //                   [--directions N] [--method depthmap|slices] [--bias B] [--points P] [--point-seed S]
 //                   [--threads T] [--step M] [--dir WORK] [--csv OUT.csv] [--receivers leaves|cells]
-//                   [--one-sided]
+//                   [--one-sided] [--pcv OUT_PCV.ply]
 //   - The scan: generateScan(kind, spacing (default 2 mm), noise (0.33 mm), seed (1)), random pose, as
 //     `stylos-cli generate` writes it; its octree as `stylos-cli ao` builds it (depth 12, normals
 //     estimated); both cached in WORK (default /tmp/stylos-ao-truth).
@@ -18,11 +18,21 @@
 //   - Parts (object frame; "a few cells" = 3 level-L edges): bed faces away from edges, bed faces near an
 //     edge, flute bottoms (|φ| < half width / 2), flute walls, fillets (|φ| > half width), the claw band,
 //     the broken cavity's core (q < 0.5), the fracture faces (fragment), other (near a bed, the cavity's rim).
+//   - --pcv: CloudCompare's PCV output of the very same scan (the PLY above: `stylos-cli generate KIND
+//     --spacing M --noise M --seed K` writes it byte for byte; scripts/bench-pcv-truth.sh runs it): its
+//     point count must be the scan's; each posed true point takes the value of the nearest PCV point
+//     (within 4 spacings), compared with the same analytic truth, overall and per part, in PCV's
+//     definition (visible / all directions of the sphere, no normals: the truth and the method times
+//     F(n), the share of the directions in front of the true normal; on a closed solid the back half sees
+//     nothing) and in ours (PCV ÷ F(n), at most 1, against the truth; "pcvUnclipped" without the bound,
+//     where PCV leaks through a sparse cloud; the method as above). PcvCloud.h.
 // One JSON document goes to stdout; progress to stderr.
 #include "stylos/core/ao/AoCells.h"
 #include "stylos/core/ao/Directions.h"
 #include "stylos/core/ao/ReferenceAo.h"
 #include "stylos/core/ao/SkydomeLayer.h"
+#include "stylos/core/io/PointFileFormat.h"
+#include "stylos/core/io/PointReader.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/synth/AnalyticSkydome.h"
@@ -32,6 +42,7 @@
 
 #include "BenchmarkClock.h"
 #include "LeafGrid.h"
+#include "PcvCloud.h"
 
 #include <nlohmann/json.hpp>
 
@@ -44,6 +55,7 @@
 #include <iostream>
 #include <map>
 #include <numbers>
+#include <numeric>
 #include <optional>
 #include <random>
 #include <sstream>
@@ -73,6 +85,7 @@ struct Settings {
     double step = 1e-4;
     fs::path dir = "/tmp/stylos-ao-truth";
     fs::path csv;
+    fs::path pcv;
     std::optional<bool> leafReceivers; ///< default: computeLeafSkydome's
 };
 
@@ -117,6 +130,7 @@ Settings parse(int argc, char** argv)
         else if (a == "--dir") s.dir = next();
         else if (a == "--csv") s.csv = next();
         else if (a == "--one-sided") s.ao.twoSided = false;
+        else if (a == "--pcv") s.pcv = next();
         else if (a == "--receivers") {
             const std::string r = next();
             if (r != "leaves" && r != "cells") fail("--receivers must be leaves or cells");
@@ -257,6 +271,80 @@ std::size_t cellOfLeaf(const ao::AoCells& cells, std::uint64_t leaf)
     return std::size_t(std::upper_bound(cells.leafBegin.begin(), cells.leafBegin.end(), leaf) - cells.leafBegin.begin()) - 1;
 }
 
+/** CloudCompare's output of @p ply (refused, before any work, when its point count is not the scan's). */
+stylos::bench::PcvCloud readPcvOf(const fs::path& pcvPath, const fs::path& ply)
+{
+    auto read = stylos::bench::readPcvCloud(pcvPath);
+    if (!read) fail(read.error().message);
+    auto scan = stylos::core::io::openPointReader(ply);
+    if (!scan) fail(scan.error().message);
+    const auto scanPoints = scan.value()->header().declaredPoints.value_or(0);
+    if (read->positions.size() != scanPoints)
+        fail(pcvPath.string() + ": " + std::to_string(read->positions.size()) + " points, the scan " + ply.string() +
+             " has " + std::to_string(scanPoints) + ": not CloudCompare's output of this scan");
+    return std::move(read).value();
+}
+
+/**
+ * CloudCompare's PCV at the true points (the nearest PCV point to each posed one) against the analytic
+ * truth, per part, in PCV's definition and in ours, beside the method in both; @p points in the object
+ * frame, @p directions the method's turned into it.
+ */
+json pcvReport(const Settings& s, const stylos::bench::PcvCloud& pcv, const std::vector<TruePoint>& points,
+               const Eigen::Affine3d& pose, const std::vector<std::array<double, 3>>& directions,
+               const std::vector<double>& truth, const std::vector<double>& method)
+{
+    const double radius = 4.0 * s.scan.spacing;
+    const stylos::bench::PointGrid grid(pcv.positions, radius);
+    std::vector<double> value(points.size()), distance(points.size()), front(points.size());
+    for (std::size_t i = 0; i < points.size(); ++i) {
+        const Eigen::Vector3d q = pose * points[i].p;
+        const std::size_t k = grid.nearest(q);
+        if (k == SIZE_MAX)
+            fail(s.pcv.string() + ": no point within " + std::to_string(radius) + " m of a true point: not this scan");
+        const auto& c = pcv.positions[k];
+        distance[i] = (Eigen::Vector3d(c[0], c[1], c[2]) - q).norm();
+        value[i] = pcv.values[k];
+        const Eigen::Vector3d& n = points[i].n;
+        front[i] = stylos::bench::frontFraction(directions, {float(n.x()), float(n.y()), float(n.z())});
+    }
+    std::vector<double> sortedDistance = distance, all = pcv.values;
+    std::sort(sortedDistance.begin(), sortedDistance.end());
+    std::sort(all.begin(), all.end());
+    const auto at = [&](double q) { return all[std::min(all.size() - 1, std::size_t(q * double(all.size())))]; };
+    json out{{"file", s.pcv.string()}, {"field", pcv.field}, {"points", pcv.positions.size()},
+             {"matchRadius", radius}, {"pointDistanceMedian", sortedDistance[sortedDistance.size() / 2]},
+             {"pointDistanceMax", sortedDistance.back()},
+             {"percentiles", {{"5", at(0.05)}, {"50", at(0.5)}, {"95", at(0.95)}}}};
+    std::map<std::string, std::vector<std::size_t>> parts;
+    for (std::size_t i = 0; i < points.size(); ++i) parts[points[i].part].push_back(i), parts["all"].push_back(i);
+    for (const auto& [part, ids] : parts) {
+        std::vector<double> pcvOwn, pcvOurs, pcvRatio, truthOwn, truthOurs, methodOwn, methodOurs, f;
+        for (const std::size_t i : ids) {
+            pcvOwn.push_back(value[i]);
+            pcvRatio.push_back(front[i] > 0 ? value[i] / front[i] : 0.0);
+            pcvOurs.push_back(std::min(1.0, pcvRatio.back()));
+            truthOwn.push_back(truth[i] * front[i]);
+            truthOurs.push_back(truth[i]);
+            methodOwn.push_back(method[i] * front[i]);
+            methodOurs.push_back(method[i]);
+            f.push_back(front[i]);
+        }
+        json& o = out["parts"][part];
+        o["pcvDefinition"]["pcv"] = agreement(pcvOwn, truthOwn);
+        o["pcvDefinition"]["method"] = agreement(methodOwn, truthOwn);
+        o["stylosDefinition"]["pcv"] = agreement(pcvOurs, truthOurs);
+        o["stylosDefinition"]["pcvUnclipped"] = agreement(pcvRatio, truthOurs); // PCV leaks: above 1
+        o["stylosDefinition"]["method"] = agreement(methodOurs, truthOurs);
+        o["meanFrontFraction"] = std::accumulate(f.begin(), f.end(), 0.0) / double(f.size());
+    }
+    const auto meanOf = [&](const char* part) {
+        return out["parts"].contains(part) ? out["parts"][part]["stylosDefinition"]["pcvUnclipped"]["mean"].get<double>() : -1.0;
+    };
+    out["flutesDarkerThanFillets"] = meanOf("flute") < meanOf("fillet");
+    return out;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -274,6 +362,8 @@ int main(int argc, char** argv)
         auto made = synth::generateScan(s.kind, s.scan, ply);
         if (!made) fail(made.error().message);
     }
+    std::optional<stylos::bench::PcvCloud> pcv;
+    if (!s.pcv.empty()) pcv = readPcvOf(s.pcv, ply);
     if (!fs::exists(poct)) {
         std::cerr << "building " << poct << "...\n";
         oct::BuildOptions build;
@@ -373,6 +463,7 @@ int main(int argc, char** argv)
     }
     const auto meanOf = [&](const char* part) { return out["parts"].contains(part) ? out["parts"][part]["mean"].get<double>() : -1.0; };
     out["flutesDarkerThanFillets"] = meanOf("flute") < meanOf("fillet");
+    if (pcv) out["pcv"] = pcvReport(s, *pcv, points, pose, directions, truth, method);
     if (!s.csv.empty()) {
         std::ofstream csv(s.csv);
         csv << "part,truth,method,cellReference,leafDistance,x,y,z,nx,ny,nz\n";
