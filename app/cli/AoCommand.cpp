@@ -106,6 +106,9 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
         return problem = "--depth must be between " + std::to_string(oct::MinOctreeDepth) + " and " +
                          std::to_string(oct::MaxOctreeDepth), false;
     r.build.depth = int(depth);
+    // One pass over the (normal-estimated) points: the same cells and memory as Optimal's pass per level,
+    // which only pays under a memory limit, which this command does not take.
+    r.build.method = oct::BuildMethod::Streaming;
     r.build.threads = threads > 0 ? unsigned(threads) : std::max(1u, std::thread::hardware_concurrency());
     if (!parseReadOptions(cl, r.read, problem)) return false;
     if (cl.value("level")) {
