@@ -1,5 +1,5 @@
 // GapFill: the 3D view's screen-space gap filling, exactly, on small hand-made frames: what it closes (enclosed
-// gaps, slits narrower than 2 r, notches along an outline, a far surface seen through a narrow gap) and what it
+// gaps, slits up to r wide, notches along an outline, a far surface seen through a narrow gap) and what it
 // keeps (an opening of 2 r or wider, a straight outline, a convex corner, a groove within the depth margin).
 #include "stylos/core/view/GapFill.h"
 
@@ -84,17 +84,21 @@ TEST(GapFillTest, TheFillTakesTheNearestInDepthOfTheEnclosingNeighbours)
     EXPECT_EQ(colourAt(f, 10, 9), 0xff00ff00u);
 }
 
-TEST(GapFillTest, ASlitIsFilledUpToTwoReachesLessOneAndAWiderOneStaysOpen)
+TEST(GapFillTest, ASlitUpToOneReachWideClosesAWiderOneOnlyInItsMiddleAndOneOfTwoReachesStaysOpen)
 {
+    // A pixel of a slit sees both walls (W, E and the four diagonals: 6 directions) only when both are within
+    // its reach r = 4; near one wall it sees 3.
     GapFrame f = blank(60, 20);
     paint(f, 0, 0, 60, 20, 1.0f);
-    clear(f, 10, 0, 17, 20); // 7 wide = 2 r − 1, through the whole frame
-    clear(f, 30, 0, 38, 20); // 8 wide = 2 r
-    clear(f, 45, 0, 54, 20); // 9 wide
+    clear(f, 10, 0, 14, 20); // 4 wide = r
+    clear(f, 25, 0, 31, 20); // 6 wide: the 2 middle columns are within 4 of both walls
+    clear(f, 45, 0, 53, 20); // 8 wide = 2 r
     fillGaps(f);
-    EXPECT_EQ(backgroundIn(f, 10, 2, 17, 18), 0); // away from the picture's border (off it, nothing encloses)
-    EXPECT_EQ(backgroundIn(f, 30, 0, 38, 20), 8 * 20);
-    EXPECT_EQ(backgroundIn(f, 45, 0, 54, 20), 9 * 20);
+    // Rows more than r from the picture's border (the walks leave the picture there, enclosing nothing):
+    EXPECT_EQ(backgroundIn(f, 10, 4, 14, 16), 0);
+    EXPECT_EQ(backgroundIn(f, 25, 4, 31, 16), 4 * 12);
+    EXPECT_EQ(backgroundIn(f, 27, 4, 29, 16), 0);
+    EXPECT_EQ(backgroundIn(f, 45, 0, 53, 20), 8 * 20);
 }
 
 TEST(GapFillTest, AnOpeningWiderThanTwoReachesStaysButForItsConcaveCorners)

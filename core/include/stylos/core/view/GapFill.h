@@ -15,12 +15,12 @@
  * around it could have left). p is filled when at least minDirections of the 8 directions enclose it, from the
  * enclosing q of smallest depth (the first in the order E, W, N, S, NE, NW, SE, SW on a tie).
  *
- * What it closes and what it keeps, with minDirections 5 and walks of r = min(maxSteps, reach) steps: enclosed
- * gaps and slits narrower than about 2 r (seen from both sides and from below or above), notches along an outline
- * (a notch pixel sees the two discs beside it and the surface under it: 5 directions); a straight outline (3
- * directions) and a convex corner (at most 3) stay; an opening wider than 2 r stays, except its concave corners
- * (at most an r × r square each, the same rounding as any closing at that scale). Pixels off the picture enclose
- * nothing.
+ * What it closes and what it keeps, with minDirections 5 and walks of r = min(maxSteps, reach) steps: an enclosed
+ * gap or a slit up to r wide (a pixel in it sees both walls: W, E and four diagonals); of a slit between r and 2 r
+ * only the middle, where both walls are within r; notches along an outline up to r wide (a notch pixel sees the
+ * two discs beside it and the surface under it: 5 directions). A straight outline (3 directions), a convex corner
+ * (at most 3) and a slit or opening 2 r wide or wider stay, except an opening's concave corners (an r × r square
+ * each, the rounding of any closing at that scale). Walks that leave the picture enclose nothing.
  *
  * Thread-safety: pure functions. Units: pixels, the caller's depth unit. Failure modes: none (arrays whose size is
  * not width × height are a programmer error, asserted).
