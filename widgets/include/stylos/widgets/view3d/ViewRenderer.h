@@ -64,6 +64,13 @@ public:
     void setMotionResolution(double scale);
     double motionScale() const { return m_motionResolution; }
     void setCullBackFacesWhileMoving(bool cull) { m_cullWhileMoving = cull; }
+    /**
+     * @brief Whether the composite pass fills the gaps between splats (default true; ViewComposite,
+     *        core/view/GapFill.h). On, every still frame goes through the offscreen frame and the composite
+     *        pass; moving frames do not fill gaps.
+     */
+    void setGapFilling(bool on) { m_gapFill = on; }
+    bool gapFilling() const { return m_gapFill; }
 
     /**
      * @brief Clears @p target (of @p size) and draws about @p limit points (0: all) of the visible
@@ -92,8 +99,9 @@ private:
     };
 
     void clear(float alpha);
-    bool needsComposite() const;
-    ViewComposite::Options compositeOptions() const;
+    /** Moving frames fill no gaps (their splats are enlarged, and on llvmpipe the pass costs more than the frame). */
+    bool needsComposite(bool moving) const;
+    ViewComposite::Options compositeOptions(bool moving) const;
     void initializeOverlay(Overlay& entry);
 
     PointRenderer m_points;
@@ -108,6 +116,7 @@ private:
     std::uint64_t m_imagePoints = 0;
     double m_motionResolution = 1;
     bool m_cullWhileMoving = true;
+    bool m_gapFill = true;
     bool m_software = false;
 };
 
