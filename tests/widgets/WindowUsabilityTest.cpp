@@ -43,6 +43,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollArea>
+#include <QCheckBox>
 #include <QSettings>
 #include <QSlider>
 #include <QStatusBar>
