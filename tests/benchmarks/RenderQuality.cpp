@@ -1,7 +1,7 @@
 // The 3D view's picture, measured (docs/benchmarks.md, "Splats that close the surface"):
 //   stylos_render_quality FILE [--leaf-pixels 8] [--size 1280x800] [--splat 1.5] [--shading headlight|eyedome]
 //                         [--view front|back|left|right|top|bottom] [--image OUT.png] [--holes OUT.png]
-//                         [--all-leaves] [--no-gap-fill]
+//                         [--all-leaves] [--no-gap-fill] [--gap-steps 8] [--gap-directions 5]
 // FILE: a point file (its octree is built first, default depth) or a .poct. The view (ViewportWidget, as in the
 // workbench) is fitted to the object, its centre pixel picked, the camera brought to that surface point at the
 // distance where a leaf edge spans --leaf-pixels pixels, and the refined image taken. Prints JSON:
@@ -46,7 +46,7 @@ int main(int argc, char** argv)
     const QStringList args = app.arguments();
     if (args.size() < 2) {
         std::fprintf(stderr, "usage: stylos_render_quality FILE [--leaf-pixels N] [--size WxH] [--splat F] "
-                             "[--shading headlight|eyedome] [--view V] [--image OUT.png] [--holes OUT.png] [--all-leaves] [--no-gap-fill]\n");
+                             "[--shading headlight|eyedome] [--view V] [--image OUT.png] [--holes OUT.png] [--all-leaves] [--no-gap-fill] [--gap-steps N] [--gap-directions N]\n");
         return 2;
     }
     auto option = [&](const char* name, const QString& fallback) {
@@ -86,6 +86,10 @@ int main(int argc, char** argv)
     view.show();
     view.setSplatFactor(splat);
     view.setGapFilling(!args.contains("--no-gap-fill"));
+    stylos::core::view::GapFillOptions gap;
+    gap.maxSteps = option("--gap-steps", QString::number(gap.maxSteps)).toInt();
+    gap.minDirections = option("--gap-directions", QString::number(gap.minDirections)).toInt();
+    view.setGapFillOptions(gap);
     view.setShading(shading == "eyedome" ? stylos::widgets::PointRenderer::Shading::EyeDome
                                          : stylos::widgets::PointRenderer::Shading::Headlight);
     stylos::core::view::ViewFragment f;
@@ -186,6 +190,8 @@ int main(int argc, char** argv)
     o["pointsDrawn"] = double(view.lastPointsDrawn());
     o["allLeaves"] = args.contains("--all-leaves");
     o["gapFill"] = view.gapFilling();
+    o["gapSteps"] = gap.maxSteps;
+    o["gapDirections"] = gap.minDirections;
     o["silhouettePixels"] = double(coverage.silhouette);
     o["holes"] = coverage.holeFraction();
     o["holesThrough"] = coverage.throughFraction();

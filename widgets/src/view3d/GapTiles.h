@@ -1,7 +1,7 @@
 #pragma once
 /** @file
  * @brief The gap-filling pass's shortcut (ViewComposite): the nearest linear depth in each 8 × 8 tile of a depth
- *        texture, in a small R32F texture (background: 3e38). A pixel whose walks (at most maxSteps ≤ 8 pixels,
+ *        texture, in a small R32F texture (background: 3e38). A pixel whose walks (maxSteps pixels each way,
  *        core/view/GapFill.h) cover tiles with nothing in front of it cannot be enclosed, so the composite pass
  *        skips its walks — the same result, without walking the wide smooth parts of the picture.
  *

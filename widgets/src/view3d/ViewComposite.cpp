@@ -151,7 +151,7 @@ void ViewComposite::draw(const OffscreenFrame& source, unsigned target, const QS
                          const core::view::Camera& camera, const Options& options)
 {
     const Eigen::Matrix4d projection = camera.projectionMatrix();
-    const bool tiles = options.gapFill && options.gap.maxSteps <= GapTiles::Tile && m_tiles &&
+    const bool tiles = options.gapFill && m_tiles &&
                        m_tiles->update(source.depthTexture(), source.size(), camera.isOrthographic(),
                                        float(projection(2, 2)), float(projection(2, 3)));
     glBindFramebuffer(GL_FRAMEBUFFER, target);

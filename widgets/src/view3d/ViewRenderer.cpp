@@ -111,6 +111,7 @@ ViewComposite::Options ViewRenderer::compositeOptions(bool moving) const
     options.eyeDome = m_points.shading() == PointRenderer::Shading::EyeDome;
     options.outline = m_points.hasSelection();
     options.gapFill = m_gapFill && !moving;
+    options.gap = m_gapOptions;
     return options;
 }
 

@@ -296,6 +296,12 @@ void ViewportWidget::setGapFilling(bool on)
     requestFrame();
 }
 
+void ViewportWidget::setGapFillOptions(const core::view::GapFillOptions& options)
+{
+    m_renderer.setGapFillOptions(options);
+    requestFrame();
+}
+
 void ViewportWidget::setRoundSplats(bool round)
 {
     m_renderer.points().setRoundSplats(round);

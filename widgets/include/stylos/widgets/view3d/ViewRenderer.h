@@ -71,6 +71,8 @@ public:
      */
     void setGapFilling(bool on) { m_gapFill = on; }
     bool gapFilling() const { return m_gapFill; }
+    void setGapFillOptions(const core::view::GapFillOptions& options) { m_gapOptions = options; }
+    const core::view::GapFillOptions& gapFillOptions() const { return m_gapOptions; }
 
     /**
      * @brief Clears @p target (of @p size) and draws about @p limit points (0: all) of the visible
@@ -117,6 +119,7 @@ private:
     double m_motionResolution = 1;
     bool m_cullWhileMoving = true;
     bool m_gapFill = true;
+    core::view::GapFillOptions m_gapOptions;
     bool m_software = false;
 };
 
