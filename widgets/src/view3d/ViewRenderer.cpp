@@ -86,12 +86,12 @@ std::uint64_t ViewRenderer::drawQuick(const core::view::Camera& camera, unsigned
     pass.cullBackFaces = moving && m_cullWhileMoving;
     pass.pixelScale = devicePixelRatio * scale;
     const QSize reduced(std::max(1, int(size.width() * scale)), std::max(1, int(size.height() * scale)));
-    const bool composite = m_composite.isInitialized() && (needsComposite(moving) || scale < 1.0);
+    const bool composite = m_composite.isInitialized() && (needsComposite() || scale < 1.0);
     if (composite && m_lowRes.bind(reduced)) {
         pass.selectionInAlpha = true;
         clear(0.0f);
         const std::uint64_t drawn = m_points.draw(camera, pass);
-        m_composite.draw(m_lowRes, target, size, camera, compositeOptions(moving));
+        m_composite.draw(m_lowRes, target, size, camera, compositeOptions(false));
         return drawn;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -100,17 +100,17 @@ std::uint64_t ViewRenderer::drawQuick(const core::view::Camera& camera, unsigned
     return m_points.draw(camera, pass);
 }
 
-bool ViewRenderer::needsComposite(bool moving) const
+bool ViewRenderer::needsComposite() const
 {
-    return (m_gapFill && !moving) || m_points.shading() == PointRenderer::Shading::EyeDome || m_points.hasSelection();
+    return m_points.shading() == PointRenderer::Shading::EyeDome || m_points.hasSelection();
 }
 
-ViewComposite::Options ViewRenderer::compositeOptions(bool moving) const
+ViewComposite::Options ViewRenderer::compositeOptions(bool fillGaps) const
 {
     ViewComposite::Options options;
     options.eyeDome = m_points.shading() == PointRenderer::Shading::EyeDome;
     options.outline = m_points.hasSelection();
-    options.gapFill = m_gapFill && !moving;
+    options.gapFill = m_gapFill && fillGaps;
     options.gap = m_gapOptions;
     return options;
 }
@@ -148,7 +148,7 @@ bool ViewRenderer::presentImage(unsigned target, const QSize& size)
 {
     if (!isImageComplete() || m_image.size() != size) return false;
     if (m_composite.isInitialized() && m_imageCamera)
-        m_composite.draw(m_image, target, size, *m_imageCamera, compositeOptions(false));
+        m_composite.draw(m_image, target, size, *m_imageCamera, compositeOptions(true));
     else
         m_image.blitTo(target, size);
     return true;

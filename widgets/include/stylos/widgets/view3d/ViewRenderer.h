@@ -66,8 +66,8 @@ public:
     void setCullBackFacesWhileMoving(bool cull) { m_cullWhileMoving = cull; }
     /**
      * @brief Whether the composite pass fills the gaps between splats (default true; ViewComposite,
-     *        core/view/GapFill.h). On, every still frame goes through the offscreen frame and the composite
-     *        pass; moving frames do not fill gaps.
+     *        core/view/GapFill.h) when it presents the complete full-detail image; quick frames (moving, or
+     *        while the image is drawn) do not.
      */
     void setGapFilling(bool on) { m_gapFill = on; }
     bool gapFilling() const { return m_gapFill; }
@@ -101,9 +101,10 @@ private:
     };
 
     void clear(float alpha);
-    /** Moving frames fill no gaps (their splats are enlarged, and on llvmpipe the pass costs more than the frame). */
-    bool needsComposite(bool moving) const;
-    ViewComposite::Options compositeOptions(bool moving) const;
+    bool needsComposite() const;
+    /** Only the complete image fills gaps (@p fillGaps): quick frames' splats are enlarged, their time steers the
+     *  level of detail, and on llvmpipe the pass costs more than such a frame. */
+    ViewComposite::Options compositeOptions(bool fillGaps) const;
     void initializeOverlay(Overlay& entry);
 
     PointRenderer m_points;
