@@ -421,6 +421,14 @@
         <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), in the scan&apos;s colours, by eye-dome lighting (the relief from the depth alone), or tinted by each cell&apos;s class in the annotation layer below</source>
         <translation>Πώς φωτίζονται τα σημεία: με φως στο μάτι (προβολέας), με τον ουρανό που βλέπει κάθε κελί (skydome· απαιτεί Εργαλεία › Υπολογισμός skydome, αλλιώς ο προβολέας), με τα χρώματα της σάρωσης, με φωτισμό eye-dome (το ανάγλυφο μόνο από το βάθος), ή χρωματισμένα κατά την κλάση κάθε κελιού στο στρώμα σχολιασμού παρακάτω</translation>
     </message>
+    <message>
+        <source>Close the small gaps between the drawn points on screen, and hide a far surface seen through a narrow gap in a nearer one, when the view stops; openings of the scan wider than the points stay open</source>
+        <translation>Κλείνει στην οθόνη τα μικρά κενά ανάμεσα στα σχεδιασμένα σημεία και κρύβει μια μακρινή επιφάνεια που φαίνεται μέσα από στενό κενό μιας πλησιέστερης, όταν η προβολή σταματά· τα ανοίγματα της σάρωσης που είναι φαρδύτερα από τα σημεία μένουν ανοιχτά</translation>
+    </message>
+    <message>
+        <source>Fill gaps</source>
+        <translation>Κάλυψη κενών</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DockingActions</name>

@@ -421,6 +421,14 @@
         <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), in the scan&apos;s colours, by eye-dome lighting (the relief from the depth alone), or tinted by each cell&apos;s class in the annotation layer below</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Close the small gaps between the drawn points on screen, and hide a far surface seen through a narrow gap in a nearer one, when the view stops; openings of the scan wider than the points stay open</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fill gaps</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DockingActions</name>

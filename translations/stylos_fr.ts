@@ -421,6 +421,14 @@
         <source>How the points are lit: by a light at the eye (headlight), by the sky each cell sees (skydome; needs Tools › Compute skydome, else the headlight), in the scan&apos;s colours, by eye-dome lighting (the relief from the depth alone), or tinted by each cell&apos;s class in the annotation layer below</source>
         <translation>Comment les points sont éclairés : par une lumière à l’œil (phare), par le ciel que voit chaque cellule (skydome ; demande Outils › Calculer le skydome, sinon le phare), dans les couleurs du relevé, par éclairage eye-dome (le relief tiré de la seule profondeur), ou teintés par la classe de chaque cellule dans la couche d’annotation ci-dessous</translation>
     </message>
+    <message>
+        <source>Close the small gaps between the drawn points on screen, and hide a far surface seen through a narrow gap in a nearer one, when the view stops; openings of the scan wider than the points stay open</source>
+        <translation>Combler à l’écran les petits vides entre les points dessinés, et cacher une surface lointaine vue par un vide étroit d’une surface plus proche, quand la vue s’arrête ; les ouvertures du relevé plus larges que les points restent ouvertes</translation>
+    </message>
+    <message>
+        <source>Fill gaps</source>
+        <translation>Combler les vides</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DockingActions</name>

@@ -2,6 +2,7 @@
 
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
+#include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QEvent>
@@ -23,6 +24,7 @@ using Mode = widgets::LodScheduler::Mode;
 const auto ShadingKey = QStringLiteral("view/shading");
 const auto SplatKey = QStringLiteral("view/splatFactor");
 const auto BudgetKey = QStringLiteral("view/pointBudgetMillions");
+const auto GapFillKey = QStringLiteral("view/gapFill");
 const auto DetailKey = QStringLiteral("view/globalLevel");  ///< −1: view-dependent
 constexpr int MaxLevel = 21;                                 ///< the octree's depth limit
 } // namespace
@@ -31,7 +33,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     : QWidget(parent), m_viewport(viewport), m_form(new QFormLayout(this)), m_shading(new QComboBox(this)),
       m_layer(new QComboBox(this)),
       m_splat(new QDoubleSpinBox(this)), m_budget(new QDoubleSpinBox(this)), m_detail(new QComboBox(this)),
-      m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this))
+      m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this)), m_gapFill(new QCheckBox(this))
 {
     setObjectName(QStringLiteral("displaySettings"));
     m_shading->addItems({QString(), QString(), QString(), QString(), QString()});
@@ -55,21 +57,22 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     // and Greek labels): the fields keep their full width either way.
     m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
     m_form->setFieldGrowthPolicy(QFormLayout::AllNonFixedFieldsGrow);
-    const std::array<QWidget*, 6> fields = {m_shading, m_layer, m_splat, m_budget, m_detail, m_level};
+    const std::array<QWidget*, 7> fields = {m_shading, m_layer, m_splat, m_budget, m_detail, m_level, m_gapFill};
     for (std::size_t row = 0; row < fields.size(); ++row) {
         auto* label = new QLabel(this);
         label->setBuddy(fields[row]);
         m_labels[row] = label;
-        if (row + 1 < fields.size())
-            m_form->addRow(label, fields[row]);
-        else
+        if (fields[row] == m_level)
             m_form->addRow(label, levelRow);
+        else
+            m_form->addRow(label, fields[row]);
     }
     m_shading->setObjectName(QStringLiteral("displayShading"));
     m_splat->setObjectName(QStringLiteral("displaySplat"));
     m_budget->setObjectName(QStringLiteral("displayBudget"));
     m_detail->setObjectName(QStringLiteral("displayDetail"));
     m_level->setObjectName(QStringLiteral("displayLevel"));
+    m_gapFill->setObjectName(QStringLiteral("displayGapFill"));
 
     const QSettings settings;
     m_updating = true;
@@ -79,6 +82,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     const int level = settings.value(DetailKey, -1).toInt();
     m_detail->setCurrentIndex(level < 0 ? 0 : 1);
     m_level->setValue(level < 0 ? 8 : std::min(level, MaxLevel));
+    m_gapFill->setChecked(settings.value(GapFillKey, true).toBool());
     m_updating = false;
 
     for (QComboBox* box : {m_shading, m_detail})
@@ -86,6 +90,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     for (QDoubleSpinBox* spin : {m_splat, m_budget})
         connect(spin, &QDoubleSpinBox::valueChanged, this, &DisplaySettingsWidget::apply);
     connect(m_level, &QSlider::valueChanged, this, &DisplaySettingsWidget::apply);
+    connect(m_gapFill, &QCheckBox::toggled, this, &DisplaySettingsWidget::apply);
     connect(m_layer, &QComboBox::currentIndexChanged, this, [this](int index) {
         if (!m_updating) Q_EMIT annotationLayerChanged(index);
     });
@@ -115,6 +120,7 @@ void DisplaySettingsWidget::apply()
     if (m_updating) return;
     m_viewport.setShading(static_cast<Shading>(m_shading->currentIndex()));
     m_viewport.setSplatFactor(m_splat->value());
+    m_viewport.setGapFilling(m_gapFill->isChecked());
     widgets::LodScheduler& scheduler = m_viewport.scheduler();
     scheduler.setPointBudget(static_cast<std::uint64_t>(std::llround(m_budget->value() * 1e6)));
     widgets::LodScheduler::Settings lod = scheduler.settings();
@@ -132,6 +138,7 @@ void DisplaySettingsWidget::save() const
     settings.setValue(SplatKey, m_splat->value());
     settings.setValue(BudgetKey, m_budget->value());
     settings.setValue(DetailKey, m_detail->currentIndex() == 1 ? m_level->value() : -1);
+    settings.setValue(GapFillKey, m_gapFill->isChecked());
 }
 
 void DisplaySettingsWidget::changeEvent(QEvent* event)
@@ -163,8 +170,11 @@ void DisplaySettingsWidget::retranslateUi()
     m_detail->setToolTip(tr("View-dependent: finer cells near the camera, within the point budget; global level: "
                             "every fragment drawn at the one octree level below"));
     m_level->setToolTip(tr("The octree level drawn when the level of detail is global (0: the root cell)"));
+    m_gapFill->setToolTip(tr("Close the small gaps between the drawn points on screen, and hide a far surface "
+                             "seen through a narrow gap in a nearer one, when the view stops; openings of the scan "
+                             "wider than the points stay open"));
     const QStringList labels = {tr("Shading"), tr("Annotation layer"), tr("Splat size"), tr("Point budget"),
-                                tr("Level of detail"), tr("Octree level")};
+                                tr("Level of detail"), tr("Octree level"), tr("Fill gaps")};
     for (std::size_t row = 0; row < m_labels.size(); ++row) {
         m_labels[row]->setText(labels.value(static_cast<int>(row)));
         m_labels[row]->setToolTip(m_form->itemAt(static_cast<int>(row), QFormLayout::FieldRole)->widget()

@@ -3,13 +3,15 @@
  * @brief The display settings of the 3D view, shown in the Properties dock: shading (headlight, skydome,
  *        scan colour, eye-dome lighting, annotation) and the annotation layer the Annotation shading tints by
  *        (material or tool mark: announced, the owner hands it to AnnotationSync), splat size, point budget (millions of points while the view refines), and level of
- *        detail — view-dependent under the budget, or the paper's global level slider. Applied to the view
+ *        detail — view-dependent under the budget, or the paper's global level slider —, and whether the gaps
+ *        between splats are filled on screen (ViewportWidget::setGapFilling, on by default). Applied to the view
  *        at once and kept in QSettings (group "view"). GUI thread only.
  */
 #include <QWidget>
 
 #include <array>
 
+class QCheckBox;
 class QComboBox;
 class QDoubleSpinBox;
 class QFormLayout;
@@ -37,7 +39,8 @@ public:
     /** @brief Shows @p layer (an AnnotationLayer as int) without announcing it. */
     void setAnnotationLayer(int layer);
     QSlider* levelSlider() const { return m_level; }
-    /** @brief The label of row @p row (0 shading, 1 annotation layer … 5 level), for tests. */
+    QCheckBox* gapFillBox() const { return m_gapFill; }
+    /** @brief The label of row @p row (0 shading, 1 annotation layer … 5 level, 6 gap filling), for tests. */
     QLabel* label(int row) const { return m_labels.at(static_cast<std::size_t>(row)); }
 
     /** @brief Shows the view's current shading (after a menu changed it). */
@@ -64,7 +67,8 @@ private:
     QComboBox* m_detail;
     QSlider* m_level;
     QLabel* m_levelValue;
-    std::array<QLabel*, 6> m_labels{};
+    QCheckBox* m_gapFill;
+    std::array<QLabel*, 7> m_labels{};
     bool m_updating = false;
 };
 

@@ -1,7 +1,7 @@
 // The 3D view's picture, measured (docs/benchmarks.md, "Splats that close the surface"):
 //   stylos_render_quality FILE [--leaf-pixels 8] [--size 1280x800] [--splat 1.5] [--shading headlight|eyedome]
 //                         [--view front|back|left|right|top|bottom] [--image OUT.png] [--holes OUT.png]
-//                         [--all-leaves]
+//                         [--all-leaves] [--no-gap-fill] [--gap-steps 8] [--gap-directions 5]
 // FILE: a point file (its octree is built first, default depth) or a .poct. The view (ViewportWidget, as in the
 // workbench) is fitted to the object, its centre pixel picked, the camera brought to that surface point at the
 // distance where a leaf edge spans --leaf-pixels pixels, and the refined image taken. Prints JSON:
@@ -13,7 +13,7 @@
 //          0.5, / object pixels.
 // --holes writes the picture with the hole pixels in red (through) and orange (edge), the isolated dark pixels in
 // yellow. --all-leaves draws every leaf (no level-of-detail cut, no frustum culling): holes that stay are not the
-// cut's.
+// cut's. --no-gap-fill measures the splats alone, without the composite pass's gap filling (core/view/GapFill.h).
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/view/ImageCoverage.h"
@@ -46,7 +46,7 @@ int main(int argc, char** argv)
     const QStringList args = app.arguments();
     if (args.size() < 2) {
         std::fprintf(stderr, "usage: stylos_render_quality FILE [--leaf-pixels N] [--size WxH] [--splat F] "
-                             "[--shading headlight|eyedome] [--view V] [--image OUT.png] [--holes OUT.png] [--all-leaves]\n");
+                             "[--shading headlight|eyedome] [--view V] [--image OUT.png] [--holes OUT.png] [--all-leaves] [--no-gap-fill] [--gap-steps N] [--gap-directions N]\n");
         return 2;
     }
     auto option = [&](const char* name, const QString& fallback) {
@@ -85,6 +85,11 @@ int main(int argc, char** argv)
     view.resize(size.value(0).toInt(), size.value(1).toInt());
     view.show();
     view.setSplatFactor(splat);
+    view.setGapFilling(!args.contains("--no-gap-fill"));
+    stylos::core::view::GapFillOptions gap;
+    gap.maxSteps = option("--gap-steps", QString::number(gap.maxSteps)).toInt();
+    gap.minDirections = option("--gap-directions", QString::number(gap.minDirections)).toInt();
+    view.setGapFillOptions(gap);
     view.setShading(shading == "eyedome" ? stylos::widgets::PointRenderer::Shading::EyeDome
                                          : stylos::widgets::PointRenderer::Shading::Headlight);
     stylos::core::view::ViewFragment f;
@@ -156,7 +161,23 @@ int main(int argc, char** argv)
         }
     const QString holesPath = option("--holes", QString());
     if (!holesPath.isEmpty()) marked.save(holesPath);
+    // The cost of presenting the complete image (the composite pass and the overlays, then glFinish), with and
+    // without the gap filling: the median of 9 frames each, alternating.
+    std::vector<double> presentOn, presentOff;
+    const bool gapFill = view.gapFilling();
+    for (int i = 0; i < 18; ++i) {
+        view.setGapFilling(i % 2 == 0);
+        view.grabFramebuffer();
+        (i % 2 == 0 ? presentOn : presentOff).push_back(view.lastFrameMs());
+    }
+    view.setGapFilling(gapFill);
+    auto median = [](std::vector<double> v) {
+        std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+        return v[v.size() / 2];
+    };
     QJsonObject o;
+    o["presentMsGapFill"] = median(presentOn);
+    o["presentMsPlain"] = median(presentOff);
     o["file"] = args[1];
     o["leaves"] = double(octree->cellCount(octree->depth()));
     o["leafEdgeM"] = leafEdge;
@@ -168,6 +189,9 @@ int main(int argc, char** argv)
     o["shading"] = shading;
     o["pointsDrawn"] = double(view.lastPointsDrawn());
     o["allLeaves"] = args.contains("--all-leaves");
+    o["gapFill"] = view.gapFilling();
+    o["gapSteps"] = gap.maxSteps;
+    o["gapDirections"] = gap.minDirections;
     o["silhouettePixels"] = double(coverage.silhouette);
     o["holes"] = coverage.holeFraction();
     o["holesThrough"] = coverage.throughFraction();

@@ -43,6 +43,7 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QScrollArea>
+#include <QCheckBox>
 #include <QSettings>
 #include <QSlider>
 #include <QStatusBar>
@@ -88,6 +89,7 @@ private Q_SLOTS:
     void init();
     void cleanup();
     void displayControlsAreLabelledAndTranslated();
+    void gapFillingIsOnByDefaultSwitchesOffAndIsKept();
     void undoAndRedoFromANumberFieldOrATextField();
     void renameByF2OrDoubleClickOnly();
     void undoTextsFollowTheLanguage();
@@ -155,10 +157,11 @@ void WindowUsabilityTest::displayControlsAreLabelledAndTranslated()
     app::DisplaySettingsWidget* display = window->propertiesDock().displaySettings();
     if (!display) QSKIP("no OpenGL 3.3: no 3D view, no display settings");
     const QList<QWidget*> fields = {display->shadingBox(), display->annotationLayerBox(), display->splatSpin(),
-                                    display->budgetSpin(), display->detailBox(), display->levelSlider()};
+                                    display->budgetSpin(), display->detailBox(), display->levelSlider(),
+                                    display->gapFillBox()};
     const QStringList english = {QStringLiteral("Shading"), QStringLiteral("Annotation layer"), QStringLiteral("Splat size"),
                                  QStringLiteral("Point budget"), QStringLiteral("Level of detail"),
-                                 QStringLiteral("Octree level")};
+                                 QStringLiteral("Octree level"), QStringLiteral("Fill gaps")};
     for (int row = 0; row < fields.size(); ++row) {
         QLabel* label = display->label(row);
         QVERIFY(label);
@@ -175,6 +178,23 @@ void WindowUsabilityTest::displayControlsAreLabelledAndTranslated()
             QCOMPARE(text, QCoreApplication::translate("stylos::app::DisplaySettingsWidget", qPrintable(english[row])));
         }
     }
+}
+
+void WindowUsabilityTest::gapFillingIsOnByDefaultSwitchesOffAndIsKept()
+{
+    {
+        auto window = makeWindow();
+        app::DisplaySettingsWidget* display = window->propertiesDock().displaySettings();
+        if (!display) QSKIP("no OpenGL 3.3: no 3D view, no display settings");
+        QVERIFY(display->gapFillBox()->isChecked());
+        QVERIFY(window->viewport()->gapFilling());
+        display->gapFillBox()->setChecked(false);
+        QVERIFY(!window->viewport()->gapFilling());
+        QCOMPARE(QSettings().value(QStringLiteral("view/gapFill")).toBool(), false);
+    }
+    auto window = makeWindow(); // a new session restores it
+    QVERIFY(!window->propertiesDock().displaySettings()->gapFillBox()->isChecked());
+    QVERIFY(!window->viewport()->gapFilling());
 }
 
 void WindowUsabilityTest::undoAndRedoFromANumberFieldOrATextField()

@@ -41,6 +41,7 @@ out vec3 vColour;
 out vec3 vNormal;               // view space, unit, turned toward the eye (two-sided)
 out vec3 vCentre;               // view space
 out float vRadius;              // metres (view space) covered by half the sprite
+flat out float vReach;          // half the sprite in pixels, rounded to 1..127: the gap-filling pass's reach
 void main()
 {
     vec4 viewPosition = uModelView * vec4(aPosition, 1.0);
@@ -48,6 +49,7 @@ void main()
     float depth = uOrthographic ? 1.0 : max(-viewPosition.z, 1e-6);
     gl_PointSize = clamp(aSize * uSizeScale * uPixelsPerMetre / depth, 1.0, uMaxPointSize);
     vRadius = 0.5 * gl_PointSize * depth / uPixelsPerMetre;
+    vReach = clamp(floor(0.5 * gl_PointSize + 0.5), 1.0, 127.0);
     vCentre = viewPosition.xyz;
     vec3 n = uNormalMatrix * aNormal.xyz;
     float len = length(n);
@@ -85,16 +87,19 @@ void main()
 // Round splats are discs in the plane of the cell's normal (the sprite's pixels outside the projected disc are
 // discarded), their depth that of the disc at each pixel, so that neighbouring discs cut each other along clean
 // seams instead of stacking by drawing order; the normal's view z is kept above 0.35 so that grazing discs stay
-// wide enough to close the surface. Alpha carries the selection for the composite pass (ViewComposite).
+// wide enough to close the surface. With uEncodeAlpha, alpha carries for the composite pass (ViewComposite) the
+// selection (128) plus the splat's reach in pixels (1..127, core/view/GapFill.h), else it is 1.
 const char* const FragmentShader = R"(#version 330 core
 in vec3 vColour;
 in vec3 vNormal;
 in vec3 vCentre;
 in float vRadius;
+flat in float vReach;
 uniform bool uRound;
+uniform bool uEncodeAlpha;
+uniform bool uSelected;
 uniform bool uOrthographic;
 uniform mat4 uProjection;
-uniform float uAlpha;
 out vec4 fragColour;
 void main()
 {
@@ -109,7 +114,7 @@ void main()
     } else {
         gl_FragDepth = gl_FragCoord.z;
     }
-    fragColour = vec4(vColour, uAlpha);
+    fragColour = vec4(vColour, uEncodeAlpha ? ((uSelected ? 128.0 : 0.0) + vReach) / 255.0 : 1.0);
 }
 )";
 
@@ -384,7 +389,8 @@ std::uint64_t PointRenderer::draw(const core::view::Camera& camera, const Pass& 
         m_program->setUniformValue("uShading", shading);
         m_program->setUniformValue("uBaseColour", float(f.colour[0]) / 255.0f, float(f.colour[1]) / 255.0f,
                                    float(f.colour[2]) / 255.0f);
-        m_program->setUniformValue("uAlpha", pass.selectionInAlpha ? (f.selected ? 1.0f : 0.5f) : 1.0f);
+        m_program->setUniformValue("uEncodeAlpha", pass.selectionInAlpha);
+        m_program->setUniformValue("uSelected", f.selected);
         QOpenGLVertexArrayObject::Binder bind(&slot.vao);
         glDrawArrays(GL_POINTS, GLint(first), GLsizei(last - first));
         drawn += last - first;

@@ -1,4 +1,5 @@
 #include "stylos/widgets/view3d/ViewComposite.h"
+#include "view3d/GapTiles.h"
 #include "view3d/ShaderProgram.h"
 
 #include <QOpenGLShaderProgram>
@@ -31,13 +32,62 @@ uniform vec3 uOutlineColour;
 uniform bool uOrthographic;
 uniform float uA;             // projection (2,2) and (2,3): NDC depth → linear depth
 uniform float uB;
+uniform bool uGapFill;
+uniform int uGapSteps;
+uniform int uGapMinDirections;
+uniform float uGapKeep;       // 1 − the depth margin
+uniform bool uHasTiles;
+uniform sampler2D uTiles;     // GapTiles: the nearest linear depth of each 8 × 8 tile
 out vec4 fragColour;
 
-float logDepth(float d)
+float linearDepth(float d)
 {
     float z = d * 2.0 - 1.0;
-    float linear = uOrthographic ? (uB - z) / uA : uB / (z + uA);
-    return log2(max(linear, 1e-6));
+    return uOrthographic ? (uB - z) / uA : uB / (z + uA);
+}
+
+float logDepth(float d) { return log2(max(linearDepth(d), 1e-6)); }
+
+bool selected(float alpha) { return alpha >= 0.5; } // alpha = (128 if selected) + the splat's reach, of 255
+
+// core/view/GapFill.h's rule, step for step (the same directions in the same order, in texel coordinates).
+const ivec2 Directions[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, -1), ivec2(0, 1),
+                                     ivec2(1, -1), ivec2(-1, -1), ivec2(1, 1), ivec2(-1, 1));
+const float Background = 3.0e38;
+
+void fillGap(ivec2 p, inout vec4 colour, inout float depth)
+{
+    ivec2 size = textureSize(uDepth, 0);
+    float front = depth < 1.0 ? linearDepth(depth) * uGapKeep : Background;
+    if (uHasTiles) { // nothing in front of p in the tiles its walks cover: nothing encloses it (the same result)
+        ivec2 lo = max(p - uGapSteps, ivec2(0)) / 8, hi = min(p + uGapSteps, size - 1) / 8;
+        float nearest = Background;
+        for (int ty = lo.y; ty <= hi.y; ++ty)
+            for (int tx = lo.x; tx <= hi.x; ++tx) nearest = min(nearest, texelFetch(uTiles, ivec2(tx, ty), 0).r);
+        if (!(nearest < front)) return;
+    }
+    int enclosing = 0;
+    float nearest = Background;
+    ivec2 best = p;
+    for (int k = 0; k < 8; ++k) {
+        for (int s = 1; s <= uGapSteps; ++s) {
+            ivec2 q = p + Directions[k] * s;
+            if (q.x < 0 || q.y < 0 || q.x >= size.x || q.y >= size.y) break;
+            float d = texelFetch(uDepth, q, 0).r;
+            if (d >= 1.0) continue;
+            float z = linearDepth(d);
+            if (!(z < front)) continue;
+            int reach = int(texelFetch(uColour, q, 0).a * 255.0 + 0.5) & 127;
+            if (s <= reach) {
+                ++enclosing;
+                if (z < nearest) { nearest = z; best = q; }
+            }
+            break;
+        }
+    }
+    if (enclosing < uGapMinDirections) return;
+    colour = texelFetch(uColour, best, 0);
+    depth = texelFetch(uDepth, best, 0).r;
 }
 
 const vec2 Ring[8] = vec2[8](vec2(1, 0), vec2(-1, 0), vec2(0, 1), vec2(0, -1),
@@ -47,6 +97,7 @@ void main()
 {
     vec4 colour = texture(uColour, vUv);
     float depth = texture(uDepth, vUv).r;
+    if (uGapFill) fillGap(ivec2(vUv * vec2(textureSize(uDepth, 0))), colour, depth);
     vec3 rgb = colour.rgb;
     if (uEyeDome && depth < 1.0) {
         float here = logDepth(depth);
@@ -57,11 +108,11 @@ void main()
         }
         rgb *= exp(-sum / 8.0 * 300.0 * uStrength);
     }
-    if (uOutline && colour.a < 0.75) {
+    if (uOutline && !selected(colour.a)) {
         float near = 0.0;
         for (int i = 0; i < 8; ++i) {
-            near = max(near, step(0.75, texture(uColour, vUv + Ring[i] * uTexel).a));
-            near = max(near, step(0.75, texture(uColour, vUv + Ring[i] * 2.5 * uTexel).a) * 0.8);
+            near = max(near, step(0.5, texture(uColour, vUv + Ring[i] * uTexel).a));
+            near = max(near, step(0.5, texture(uColour, vUv + Ring[i] * 2.5 * uTexel).a) * 0.8);
         }
         rgb = mix(rgb, uOutlineColour, near);
         if (near > 0.0) depth = min(depth, 0.99999);
@@ -81,6 +132,8 @@ bool ViewComposite::initialize()
     initializeOpenGLFunctions();
     m_program = linkShaderProgram(VertexShader, FragmentShader);
     if (!m_program) return false;
+    m_tiles = std::make_unique<GapTiles>();
+    if (!m_tiles->initialize()) m_tiles.reset();
     glGenVertexArrays(1, &m_vao);
     return true;
 }
@@ -90,11 +143,17 @@ void ViewComposite::release()
     if (m_vao) glDeleteVertexArrays(1, &m_vao);
     m_vao = 0;
     m_program.reset();
+    if (m_tiles) m_tiles->release();
+    m_tiles.reset();
 }
 
 void ViewComposite::draw(const OffscreenFrame& source, unsigned target, const QSize& targetSize,
                          const core::view::Camera& camera, const Options& options)
 {
+    const Eigen::Matrix4d projection = camera.projectionMatrix();
+    const bool tiles = options.gapFill && m_tiles &&
+                       m_tiles->update(source.depthTexture(), source.size(), camera.isOrthographic(),
+                                       float(projection(2, 2)), float(projection(2, 3)));
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, targetSize.width(), targetSize.height());
     glEnable(GL_DEPTH_TEST);
@@ -112,13 +171,22 @@ void ViewComposite::draw(const OffscreenFrame& source, unsigned target, const QS
     m_program->setUniformValue("uOutline", options.outline);
     m_program->setUniformValue("uOutlineColour", float(options.outlineColour.redF()),
                                float(options.outlineColour.greenF()), float(options.outlineColour.blueF()));
-    const Eigen::Matrix4d projection = camera.projectionMatrix();
     m_program->setUniformValue("uOrthographic", camera.isOrthographic());
     m_program->setUniformValue("uA", float(projection(2, 2)));
     m_program->setUniformValue("uB", float(projection(2, 3)));
+    m_program->setUniformValue("uGapFill", options.gapFill);
+    m_program->setUniformValue("uGapSteps", options.gap.maxSteps);
+    m_program->setUniformValue("uGapMinDirections", options.gap.minDirections);
+    m_program->setUniformValue("uGapKeep", 1.0f - options.gap.depthMargin);
+    m_program->setUniformValue("uHasTiles", tiles);
+    m_program->setUniformValue("uTiles", 2);
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, tiles ? m_tiles->texture() : 0);
     glBindVertexArray(m_vao);
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glBindVertexArray(0);
+    glBindTexture(GL_TEXTURE_2D, 0);
+    glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);

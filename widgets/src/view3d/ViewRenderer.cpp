@@ -91,7 +91,7 @@ std::uint64_t ViewRenderer::drawQuick(const core::view::Camera& camera, unsigned
         pass.selectionInAlpha = true;
         clear(0.0f);
         const std::uint64_t drawn = m_points.draw(camera, pass);
-        m_composite.draw(m_lowRes, target, size, camera, compositeOptions());
+        m_composite.draw(m_lowRes, target, size, camera, compositeOptions(false));
         return drawn;
     }
     glBindFramebuffer(GL_FRAMEBUFFER, target);
@@ -105,11 +105,13 @@ bool ViewRenderer::needsComposite() const
     return m_points.shading() == PointRenderer::Shading::EyeDome || m_points.hasSelection();
 }
 
-ViewComposite::Options ViewRenderer::compositeOptions() const
+ViewComposite::Options ViewRenderer::compositeOptions(bool fillGaps) const
 {
     ViewComposite::Options options;
     options.eyeDome = m_points.shading() == PointRenderer::Shading::EyeDome;
     options.outline = m_points.hasSelection();
+    options.gapFill = m_gapFill && fillGaps;
+    options.gap = m_gapOptions;
     return options;
 }
 
@@ -146,7 +148,7 @@ bool ViewRenderer::presentImage(unsigned target, const QSize& size)
 {
     if (!isImageComplete() || m_image.size() != size) return false;
     if (m_composite.isInitialized() && m_imageCamera)
-        m_composite.draw(m_image, target, size, *m_imageCamera, compositeOptions());
+        m_composite.draw(m_image, target, size, *m_imageCamera, compositeOptions(true));
     else
         m_image.blitTo(target, size);
     return true;

@@ -289,6 +289,19 @@ void ViewportWidget::setSplatFactor(double factor)
     invalidateImage(true);
 }
 
+void ViewportWidget::setGapFilling(bool on)
+{
+    if (on == m_renderer.gapFilling()) return;
+    m_renderer.setGapFilling(on); // the image's splats stay; only the composite pass changes
+    requestFrame();
+}
+
+void ViewportWidget::setGapFillOptions(const core::view::GapFillOptions& options)
+{
+    m_renderer.setGapFillOptions(options);
+    requestFrame();
+}
+
 void ViewportWidget::setRoundSplats(bool round)
 {
     m_renderer.points().setRoundSplats(round);

@@ -28,6 +28,7 @@ public:
     void blitTo(GLuint target, const QSize& targetSize);
     QSize size() const { return m_size; }
     /** @brief The colour (RGBA8) and depth (24-bit) textures; 0 before the first successful bind(). */
+    GLuint framebuffer() const { return m_fbo; }
     GLuint colourTexture() const { return m_colour; }
     GLuint depthTexture() const { return m_depth; }
     void release();

@@ -20,7 +20,8 @@
  * that is no class (setClassColours) or of a fragment without labels keep the plain shading). The labels are
  * one buffer texture (R8UI, one byte a leaf) per fragment, apart from the splats: an edit re-sends the
  * touched range (updateLabels: glBufferSubData), never the splats. The selection is not tinted: with
- * Pass::selectionInAlpha it goes to alpha and ViewComposite outlines it.
+ * Pass::selectionInAlpha it goes to alpha, with each splat's radius on screen (its reach), and ViewComposite
+ * outlines it and fills the gaps between splats.
  *
  * Parts of the buffers: draw() draws the same slice [from, to) of every buffer (fractions of its
  * length). The buffers are shuffled, so a prefix is an even subsample: a moving frame draws [0, limit /
@@ -72,7 +73,9 @@ public:
         bool enlarge = false;           ///< splats × √(1 / (to − from)) (a subsample standing for the whole)
         bool cullBackFaces = false;     ///< skip splats whose normal faces away from the eye
         double pixelScale = 1.0;        ///< device pixels per logical pixel of the camera's viewport
-        bool selectionInAlpha = false;  ///< alpha 1 for selected fragments, 0.5 for the others (else 1)
+        /// alpha (of 255) = 128 for selected fragments + the splat's reach, its radius in pixels rounded to 1..127
+        /// (the gap-filling pass's, core/view/GapFill.h); else alpha 1
+        bool selectionInAlpha = false;
     };
 
     PointRenderer();

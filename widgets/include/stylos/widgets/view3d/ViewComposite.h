@@ -1,7 +1,10 @@
 #pragma once
 /** @file
  * @brief The pass that brings an offscreen frame (OffscreenFrame: colour, with the selection in alpha,
- *        and depth) to the widget's framebuffer: a full-screen triangle that copies the colour, adds
+ *        and depth) to the widget's framebuffer: a full-screen triangle that copies the colour, fills the gaps
+ *        between splats (core/view/GapFill.h's rule, step for step: background or a far surface enclosed by
+ *        nearer splats takes the colour and depth of the nearest of them; each splat's reach comes in alpha,
+ *        PointRenderer::Pass::selectionInAlpha), adds
  *        eye-dome lighting (Boucheny's EDL as Potree and CloudCompare draw it: each pixel darkened by how
  *        much nearer it is than its 8 neighbours 1.5 px away, in log₂ of the linear depth) and an outline
  *        around the selected fragments (pixels not selected within 2 px of a selected one), and writes the
@@ -10,6 +13,7 @@
  * GL context current, GUI thread only. Failure modes: initialize() returns false (then the caller blits).
  */
 #include "stylos/core/view/Camera.h"
+#include "stylos/core/view/GapFill.h"
 #include "stylos/widgets/view3d/OffscreenFrame.h"
 
 #include <QColor>
@@ -21,6 +25,8 @@ class QOpenGLShaderProgram;
 
 namespace stylos::widgets {
 
+class GapTiles;
+
 class ViewComposite : protected QOpenGLFunctions_3_3_Core {
 public:
     struct Options {
@@ -28,6 +34,8 @@ public:
         float eyeDomeStrength = 1.0f;
         bool outline = false;
         QColor outlineColour = QColor(90, 170, 255);
+        bool gapFill = false;
+        core::view::GapFillOptions gap;
     };
 
     ViewComposite();
@@ -42,6 +50,7 @@ public:
 
 private:
     std::unique_ptr<QOpenGLShaderProgram> m_program;
+    std::unique_ptr<GapTiles> m_tiles; ///< the pass's shortcut; none when it does not build (every pixel walks)
     GLuint m_vao = 0;
 };
 

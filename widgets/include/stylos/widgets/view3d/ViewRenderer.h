@@ -64,6 +64,15 @@ public:
     void setMotionResolution(double scale);
     double motionScale() const { return m_motionResolution; }
     void setCullBackFacesWhileMoving(bool cull) { m_cullWhileMoving = cull; }
+    /**
+     * @brief Whether the composite pass fills the gaps between splats (default true; ViewComposite,
+     *        core/view/GapFill.h) when it presents the complete full-detail image; quick frames (moving, or
+     *        while the image is drawn) do not.
+     */
+    void setGapFilling(bool on) { m_gapFill = on; }
+    bool gapFilling() const { return m_gapFill; }
+    void setGapFillOptions(const core::view::GapFillOptions& options) { m_gapOptions = options; }
+    const core::view::GapFillOptions& gapFillOptions() const { return m_gapOptions; }
 
     /**
      * @brief Clears @p target (of @p size) and draws about @p limit points (0: all) of the visible
@@ -93,7 +102,9 @@ private:
 
     void clear(float alpha);
     bool needsComposite() const;
-    ViewComposite::Options compositeOptions() const;
+    /** Only the complete image fills gaps (@p fillGaps): quick frames' splats are enlarged, their time steers the
+     *  level of detail, and on llvmpipe the pass costs more than such a frame. */
+    ViewComposite::Options compositeOptions(bool fillGaps) const;
     void initializeOverlay(Overlay& entry);
 
     PointRenderer m_points;
@@ -108,6 +119,8 @@ private:
     std::uint64_t m_imagePoints = 0;
     double m_motionResolution = 1;
     bool m_cullWhileMoving = true;
+    bool m_gapFill = true;
+    core::view::GapFillOptions m_gapOptions;
     bool m_software = false;
 };
 

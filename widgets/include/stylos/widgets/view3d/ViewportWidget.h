@@ -120,6 +120,11 @@ public:
     void setSplatFactor(double factor);
     double splatFactor() const { return m_renderer.points().splatFactor(); }
     void setRoundSplats(bool round);
+    /** @brief Whether the gaps between splats are filled on screen (ViewRenderer::setGapFilling; default on). */
+    void setGapFilling(bool on);
+    bool gapFilling() const { return m_renderer.gapFilling(); }
+    /** @brief The rule's parameters (core/view/GapFill.h; the defaults unless a benchmark changes them). */
+    void setGapFillOptions(const core::view::GapFillOptions& options);
     /** @brief Resolution of moving frames relative to the view (see ViewRenderer::setMotionResolution). */
     void setMotionResolution(double scale);
     /** @brief Whether moving frames skip splats facing away (default true; still frames never do). */
