@@ -116,15 +116,14 @@ Status TempFile::commit()
     return {};
 }
 
-SectionStream::SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes, bool hashing)
-    : m_file(&file), m_offset(offset), m_buffer(bufferBytes), m_hashing(hashing)
+SectionStream::SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes)
+    : m_file(&file), m_offset(offset), m_buffer(bufferBytes)
 {
 }
 
 Status SectionStream::append(const void* data, std::size_t size)
 {
     const auto* p = static_cast<const std::uint8_t*>(data);
-    if (m_hashing) m_hash.update(p, size);
     while (size > 0) {
         if (m_used == 0 && size >= m_buffer.size()) {
             if (auto s = m_file->writeAt(m_offset, p, size); !s) return s;

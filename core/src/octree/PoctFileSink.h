@@ -1,6 +1,6 @@
 #pragma once
 // Internal: the output side of the `.poct` writer. A temporary file beside the target (removed unless
-// committed), positioned writes, and buffered hashing section streams that write at their own offsets
+// committed), positioned writes, and buffered section streams that write at their own offsets
 // so that all sections can be filled in one pass over the levels.
 #include "stylos/core/util/Hash64.h"
 #include "stylos/core/util/Result.h"
@@ -41,26 +41,21 @@ private:
     bool m_committed = false;
 };
 
-/** Appends to one section (or a part of one) at its offset through a buffer, hashing everything appended
- *  unless told not to (a part whose section is hashed as a whole when written). */
+/** Appends to one section (or a part of one) at its offset through a buffer; the section is hashed from the
+ *  file once complete (TempFile::hashRange). */
 class SectionStream {
 public:
-    SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes = std::size_t(1) << 20,
-                  bool hashing = true);
+    SectionStream(TempFile& file, std::uint64_t offset, std::size_t bufferBytes = std::size_t(1) << 20);
 
     Status append(const void* data, std::size_t size);
-    /** Writes what is buffered; call before reading checksum(). */
+    /** Writes what is buffered. */
     Status flush();
-    /** XXH64 of what was appended (a hashing stream only). */
-    std::uint64_t checksum() const { return m_hash.digest(); }
 
 private:
     TempFile* m_file;
     std::uint64_t m_offset;         ///< file offset of m_buffer[0]
     std::vector<std::uint8_t> m_buffer;
     std::size_t m_used = 0;
-    bool m_hashing = true;
-    Hash64 m_hash;
 };
 
 } // namespace stylos::core::octree::poct

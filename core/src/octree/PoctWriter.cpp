@@ -112,11 +112,11 @@ Result<std::uint64_t> writeFile(const OctreeLevels& levels, const fs::path& path
     {
         std::uint64_t before = 0;
         for (int l = 0; l <= depth; ++l) {
-            if (l < depth) maskStreams.emplace_back(*file, header.sections[0].offset + before, levelBuffer, false);
-            normalStreams.emplace_back(*file, header.sections[1].offset + 2 * before, levelBuffer, false);
+            if (l < depth) maskStreams.emplace_back(*file, header.sections[0].offset + before, levelBuffer);
+            normalStreams.emplace_back(*file, header.sections[1].offset + 2 * before, levelBuffer);
             before += d.cellsPerLevel[std::size_t(l)];
         }
-        if (colourFromLevels) colours.emplace(*file, header.sections[2].offset, levelBuffer, false);
+        if (colourFromLevels) colours.emplace(*file, header.sections[2].offset, levelBuffer);
     }
 
     std::uint64_t totalCells = 0, writtenCells = 0;
