@@ -6,6 +6,8 @@
 
 #include <Eigen/Core>
 
+#include <string>
+
 namespace stylos::widgets {
 
 namespace {
@@ -20,19 +22,19 @@ void main()
 }
 )";
 
-const char* const FragmentShader = R"(#version 330 core
+// The fragment shader's body: compiled once per combination of the passes in use (GAP_FILL, EYE_DOME, OUTLINE
+// defined or not, ViewComposite::programFor), because llvmpipe pays for code that a uniform switches off: with the
+// gap filling merely compiled in, the orbit's quick frames drew a quarter of the points at the same frame time.
+const char* const FragmentBody = R"(
 in vec2 vUv;
 uniform sampler2D uColour;
 uniform sampler2D uDepth;
 uniform vec2 uTexel;          // one source pixel in texture coordinates
-uniform bool uEyeDome;
 uniform float uStrength;
-uniform bool uOutline;
 uniform vec3 uOutlineColour;
 uniform bool uOrthographic;
 uniform float uA;             // projection (2,2) and (2,3): NDC depth → linear depth
 uniform float uB;
-uniform bool uGapFill;
 uniform int uGapSteps;
 uniform int uGapMinDirections;
 uniform float uGapKeep;       // 1 − the depth margin
@@ -48,8 +50,12 @@ float linearDepth(float d)
 
 float logDepth(float d) { return log2(max(linearDepth(d), 1e-6)); }
 
+#ifdef OUTLINE
 bool selected(float alpha) { return alpha >= 0.5; } // alpha = (128 if selected) + the splat's reach, of 255
 
+#endif
+
+#ifdef GAP_FILL
 // core/view/GapFill.h's rule, step for step (the same directions in the same order, in texel coordinates).
 const ivec2 Directions[8] = ivec2[8](ivec2(1, 0), ivec2(-1, 0), ivec2(0, -1), ivec2(0, 1),
                                      ivec2(1, -1), ivec2(-1, -1), ivec2(1, 1), ivec2(-1, 1));
@@ -89,6 +95,7 @@ void fillGap(ivec2 p, inout vec4 colour, inout float depth)
     colour = texelFetch(uColour, best, 0);
     depth = texelFetch(uDepth, best, 0).r;
 }
+#endif
 
 const vec2 Ring[8] = vec2[8](vec2(1, 0), vec2(-1, 0), vec2(0, 1), vec2(0, -1),
                              vec2(0.7071, 0.7071), vec2(-0.7071, 0.7071), vec2(0.7071, -0.7071), vec2(-0.7071, -0.7071));
@@ -97,9 +104,12 @@ void main()
 {
     vec4 colour = texture(uColour, vUv);
     float depth = texture(uDepth, vUv).r;
-    if (uGapFill) fillGap(ivec2(vUv * vec2(textureSize(uDepth, 0))), colour, depth);
+#ifdef GAP_FILL
+    fillGap(ivec2(vUv * vec2(textureSize(uDepth, 0))), colour, depth);
+#endif
     vec3 rgb = colour.rgb;
-    if (uEyeDome && depth < 1.0) {
+#ifdef EYE_DOME
+    if (depth < 1.0) {
         float here = logDepth(depth);
         float sum = 0.0;
         for (int i = 0; i < 8; ++i) {
@@ -108,7 +118,9 @@ void main()
         }
         rgb *= exp(-sum / 8.0 * 300.0 * uStrength);
     }
-    if (uOutline && !selected(colour.a)) {
+#endif
+#ifdef OUTLINE
+    if (!selected(colour.a)) {
         float near = 0.0;
         for (int i = 0; i < 8; ++i) {
             near = max(near, step(0.5, texture(uColour, vUv + Ring[i] * uTexel).a));
@@ -117,6 +129,7 @@ void main()
         rgb = mix(rgb, uOutlineColour, near);
         if (near > 0.0) depth = min(depth, 0.99999);
     }
+#endif
     fragColour = vec4(rgb, 1.0);
     gl_FragDepth = depth;
 }
@@ -130,8 +143,7 @@ ViewComposite::~ViewComposite() = default;
 bool ViewComposite::initialize()
 {
     initializeOpenGLFunctions();
-    m_program = linkShaderProgram(VertexShader, FragmentShader);
-    if (!m_program) return false;
+    if (!programFor(0)) return false; // the plain copy builds, or there is no composite pass
     m_tiles = std::make_unique<GapTiles>();
     if (!m_tiles->initialize()) m_tiles.reset();
     glGenVertexArrays(1, &m_vao);
@@ -142,10 +154,31 @@ void ViewComposite::release()
 {
     if (m_vao) glDeleteVertexArrays(1, &m_vao);
     m_vao = 0;
-    m_program.reset();
+    for (auto& program : m_programs) program.reset();
+    m_failed = 0;
     if (m_tiles) m_tiles->release();
     m_tiles.reset();
 }
+
+QOpenGLShaderProgram* ViewComposite::programFor(unsigned passes)
+{
+    std::unique_ptr<QOpenGLShaderProgram>& program = m_programs[passes];
+    if (program || (m_failed >> passes & 1u)) return program.get();
+    std::string source = "#version 330 core\n";
+    if (passes & GapFillPass) source += "#define GAP_FILL\n";
+    if (passes & EyeDomePass) source += "#define EYE_DOME\n";
+    if (passes & OutlinePass) source += "#define OUTLINE\n";
+    source += FragmentBody;
+    QString log;
+    program = linkShaderProgram(VertexShader, source.c_str(), &log);
+    if (!program) {
+        m_failed |= 1u << passes;
+        qWarning("ViewComposite: the composite program (passes %u) did not build: %s", passes, qPrintable(log));
+    }
+    return program.get();
+}
+
+bool ViewComposite::isInitialized() const { return m_programs[0] != nullptr; }
 
 void ViewComposite::draw(const OffscreenFrame& source, unsigned target, const QSize& targetSize,
                          const core::view::Camera& camera, const Options& options)
@@ -154,32 +187,34 @@ void ViewComposite::draw(const OffscreenFrame& source, unsigned target, const QS
     const bool tiles = options.gapFill && m_tiles &&
                        m_tiles->update(source.depthTexture(), source.size(), camera.isOrthographic(),
                                        float(projection(2, 2)), float(projection(2, 3)));
+    const unsigned passes = (options.gapFill ? GapFillPass : 0u) | (options.eyeDome ? EyeDomePass : 0u) |
+                            (options.outline ? OutlinePass : 0u);
+    QOpenGLShaderProgram* program = programFor(passes);
+    if (!program) program = programFor(0); // a variant that does not build: the plain copy rather than nothing
+    if (!program) return;
     glBindFramebuffer(GL_FRAMEBUFFER, target);
     glViewport(0, 0, targetSize.width(), targetSize.height());
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_ALWAYS);
-    m_program->bind();
+    program->bind();
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, source.colourTexture());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, source.depthTexture());
-    m_program->setUniformValue("uColour", 0);
-    m_program->setUniformValue("uDepth", 1);
-    m_program->setUniformValue("uTexel", 1.0f / float(source.size().width()), 1.0f / float(source.size().height()));
-    m_program->setUniformValue("uEyeDome", options.eyeDome);
-    m_program->setUniformValue("uStrength", options.eyeDomeStrength);
-    m_program->setUniformValue("uOutline", options.outline);
-    m_program->setUniformValue("uOutlineColour", float(options.outlineColour.redF()),
+    program->setUniformValue("uColour", 0);
+    program->setUniformValue("uDepth", 1);
+    program->setUniformValue("uTexel", 1.0f / float(source.size().width()), 1.0f / float(source.size().height()));
+    program->setUniformValue("uStrength", options.eyeDomeStrength);
+    program->setUniformValue("uOutlineColour", float(options.outlineColour.redF()),
                                float(options.outlineColour.greenF()), float(options.outlineColour.blueF()));
-    m_program->setUniformValue("uOrthographic", camera.isOrthographic());
-    m_program->setUniformValue("uA", float(projection(2, 2)));
-    m_program->setUniformValue("uB", float(projection(2, 3)));
-    m_program->setUniformValue("uGapFill", options.gapFill);
-    m_program->setUniformValue("uGapSteps", options.gap.maxSteps);
-    m_program->setUniformValue("uGapMinDirections", options.gap.minDirections);
-    m_program->setUniformValue("uGapKeep", 1.0f - options.gap.depthMargin);
-    m_program->setUniformValue("uHasTiles", tiles);
-    m_program->setUniformValue("uTiles", 2);
+    program->setUniformValue("uOrthographic", camera.isOrthographic());
+    program->setUniformValue("uA", float(projection(2, 2)));
+    program->setUniformValue("uB", float(projection(2, 3)));
+    program->setUniformValue("uGapSteps", options.gap.maxSteps);
+    program->setUniformValue("uGapMinDirections", options.gap.minDirections);
+    program->setUniformValue("uGapKeep", 1.0f - options.gap.depthMargin);
+    program->setUniformValue("uHasTiles", tiles);
+    program->setUniformValue("uTiles", 2);
     glActiveTexture(GL_TEXTURE2);
     glBindTexture(GL_TEXTURE_2D, tiles ? m_tiles->texture() : 0);
     glBindVertexArray(m_vao);
@@ -190,7 +225,7 @@ void ViewComposite::draw(const OffscreenFrame& source, unsigned target, const QS
     glBindTexture(GL_TEXTURE_2D, 0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, 0);
-    m_program->release();
+    program->release();
     glDepthFunc(GL_LESS);
 }
 

@@ -10,6 +10,10 @@
  *        around the selected fragments (pixels not selected within 2 px of a selected one), and writes the
  *        depth, so that overlays drawn afterwards are hidden by the surface where they should be.
  *
+ * Each combination of the three passes in use is its own program (the others compiled out, built on first use),
+ * since llvmpipe pays for shader code that a uniform switches off; a moving frame that only scales the image up
+ * runs a plain copy.
+ *
  * GL context current, GUI thread only. Failure modes: initialize() returns false (then the caller blits).
  */
 #include "stylos/core/view/Camera.h"
@@ -19,6 +23,7 @@
 #include <QColor>
 #include <QOpenGLFunctions_3_3_Core>
 
+#include <array>
 #include <memory>
 
 class QOpenGLShaderProgram;
@@ -42,14 +47,19 @@ public:
     ~ViewComposite();
     bool initialize();
     void release();
-    bool isInitialized() const { return m_program != nullptr; }
+    bool isInitialized() const;
 
     /** @brief Draws @p source into framebuffer @p target of @p targetSize (scaled) and leaves it bound. */
     void draw(const OffscreenFrame& source, unsigned target, const QSize& targetSize, const core::view::Camera& camera,
               const Options& options);
 
 private:
-    std::unique_ptr<QOpenGLShaderProgram> m_program;
+    enum Pass : unsigned { GapFillPass = 1, EyeDomePass = 2, OutlinePass = 4 };
+    /** @brief The program with @p passes (Pass bits) compiled in, linked on first use; null if it does not build. */
+    QOpenGLShaderProgram* programFor(unsigned passes);
+
+    std::array<std::unique_ptr<QOpenGLShaderProgram>, 8> m_programs;
+    unsigned m_failed = 0; ///< bit p: the program of passes p did not build (not tried again)
     std::unique_ptr<GapTiles> m_tiles; ///< the pass's shortcut; none when it does not build (every pixel walks)
     GLuint m_vao = 0;
 };
