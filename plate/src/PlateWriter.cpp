@@ -10,7 +10,7 @@
 #include <QRegularExpression>
 #include <QSvgGenerator>
 
-#include <OpenImageIO/imageio.h>
+#include "stylos/core/image/ImageLibrary.h"
 
 #include <algorithm>
 #include <cctype>
@@ -132,15 +132,33 @@ Status writeSvg(const PlateContent& plate, const fs::path& output)
 /** The TIFF DateTime of every image written: the PDF's fixed date, so that the same plate gives the same bytes. */
 constexpr const char* ReproducibleDateTime = "2000:01:01 00:00:00";
 
-Status writeImageFile(const OIIO::ImageSpec& spec, const void* pixels, const fs::path& output)
+Status writeImageFile(const core::image::ImageHeader& spec, const void* pixels, const fs::path& output)
 {
     const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
-    auto out = OIIO::ImageOutput::create(partial.string());
-    if (!out || !out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + OIIO::geterror());
-    const bool ok = out->write_image(spec.format, pixels);
+    auto library = core::image::imageLibrary();
+    if (!library) return Error::at(ErrorCode::WriteFailed, output.string(), {}, "cannot write images: " + library.error().message);
+    std::string problem;
+    auto out = (*library)->createWriter(partial.string(), &problem);
+    if (!out) return failed(partial, output, "cannot open for writing: " + problem);
+    if (!out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + out->takeError());
+    const bool ok = out->writeImage(spec.sample, pixels);
     const bool closed = out->close();
-    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->geterror());
+    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->takeError());
+    out.reset();
     return finish(partial, output);
+}
+
+/** A raster's header: its size, channels and depth, "Software" and the fixed DateTime. */
+core::image::ImageHeader imageHeader(int width, int height, int channels, bool sixteen)
+{
+    core::image::ImageHeader header;
+    header.width = width;
+    header.height = height;
+    header.channels = channels;
+    header.sample = sixteen ? core::image::ImageSample::UInt16 : core::image::ImageSample::UInt8;
+    header.set("Software", std::string("Stylos"));
+    header.set("DateTime", std::string(ReproducibleDateTime)); // else OpenImageIO stamps the second it writes
+    return header;
 }
 
 bool inColour(const PlateContent& plate)
@@ -173,13 +191,11 @@ Status writeRaster(const PlateContent& plate, const fs::path& output, PlateForma
         paintPlate(painter, plate);
     }
     const int channels = colour ? 3 : 1;
-    OIIO::ImageSpec spec(size.width(), size.height(), channels, sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-    spec.attribute("XResolution", float(plate.spec.dpi));
-    spec.attribute("YResolution", float(plate.spec.dpi));
-    spec.attribute("ResolutionUnit", "in");
-    spec.attribute("Software", "Stylos");
-    spec.attribute("DateTime", ReproducibleDateTime); // else OpenImageIO stamps the second it writes
-    if (format == PlateFormat::Tiff) spec.attribute("compression", "zip");
+    core::image::ImageHeader spec = imageHeader(size.width(), size.height(), channels, sixteen);
+    spec.set("XResolution", float(plate.spec.dpi));
+    spec.set("YResolution", float(plate.spec.dpi));
+    spec.set("ResolutionUnit", std::string("in"));
+    if (format == PlateFormat::Tiff) spec.set("compression", std::string("zip"));
     std::vector<std::uint8_t> buffer(std::size_t(size.width()) * std::size_t(size.height()) * std::size_t(channels) *
                                      (sixteen ? 2u : 1u));
     for (int y = 0; y < size.height(); ++y) {
@@ -226,11 +242,9 @@ Status writePanelImage(const core::plate::PanelImage& image, const fs::path& out
     if (!format || (*format != PlateFormat::Png && *format != PlateFormat::Tiff))
         return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "a view image is written as .png or .tif");
     const bool sixteen = bits == 16;
-    OIIO::ImageSpec spec(image.width, image.height, image.channels, sixteen ? OIIO::TypeDesc::UINT16 : OIIO::TypeDesc::UINT8);
-    spec.attribute("Software", "Stylos");
-    spec.attribute("DateTime", ReproducibleDateTime);
-    spec.attribute("stylos:pixel_size_m", float(image.pixelSizeM));
-    if (*format == PlateFormat::Tiff) spec.attribute("compression", "zip");
+    core::image::ImageHeader spec = imageHeader(image.width, image.height, image.channels, sixteen);
+    spec.set("stylos:pixel_size_m", float(image.pixelSizeM));
+    if (*format == PlateFormat::Tiff) spec.set("compression", std::string("zip"));
     std::vector<std::uint8_t> bytes;
     if (!sixteen) {
         bytes.resize(image.samples.size());

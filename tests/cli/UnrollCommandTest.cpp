@@ -1,6 +1,7 @@
 // stylos-cli unroll: a generated drum gives a développée whose JSON, image header and sidecar agree;
 // a given axis is kept; usage errors exit 2; a cloud that is no surface of revolution and an image
-// too large exit 1 naming the problem and leave no file; STYLOS_SKYDOME_KERNEL forces each kernel the
+// too large exit 1 naming the problem and leave no file; without the image module (STYLOS_IMAGE_MODULE naming a
+// missing file) it exits 1 naming the module and writes nothing; STYLOS_SKYDOME_KERNEL forces each kernel the
 // CPU runs (the same image) and a bad name exits 1.
 #include "CliRunner.h"
 #include "TestSupport.h"
@@ -122,6 +123,26 @@ TEST(CliUnroll, UsageErrorsExitTwo)
         EXPECT_NE(run.err.find("stylos-cli unroll"), std::string::npos) << run.err;
     }
     EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
+}
+
+TEST(CliUnroll, WithoutTheImageModuleItFailsNamingTheModuleAndWritesNothing)
+{
+    TempDir dir;
+    const auto scan = generate(dir, "drum", "0.03");
+    const auto out = (dir / "drum.png").string();
+    const std::string missing = (dir / "lib" / "libstylos_oiio.so").string();
+    ::setenv("STYLOS_IMAGE_MODULE", missing.c_str(), 1);
+    const auto run = runCli({"unroll", scan, "-o", out});
+    ::unsetenv("STYLOS_IMAGE_MODULE");
+    EXPECT_EQ(run.exitCode, 1) << run.err;
+    EXPECT_NE(run.err.find(out), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find("the image library module (OpenImageIO) cannot be loaded"), std::string::npos) << run.err;
+    EXPECT_NE(run.err.find(missing + ": not there"), std::string::npos) << run.err;
+    EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
+
+    // The same command with the module found writes the image: the failure was the module's absence.
+    ASSERT_EQ(runCli({"unroll", scan, "-o", out}).exitCode, 0);
+    EXPECT_TRUE(fs::exists(out));
 }
 
 TEST(CliUnroll, NotASurfaceOfRevolutionAndTooLargeImagesFailAndWriteNothing)

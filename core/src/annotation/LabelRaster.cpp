@@ -4,7 +4,7 @@
 
 #include "../image/TemporaryImageFile.h"
 
-#include <OpenImageIO/imageio.h>
+#include "stylos/core/image/ImageLibrary.h"
 
 #include <Eigen/Core>
 
@@ -41,18 +41,21 @@ Result<LabelRaster> readLabelRaster(const fs::path& path)
     if (!fs::exists(status)) return Error::at(ErrorCode::NotFound, name, {}, "no such file");
     if (fs::is_directory(status)) return Error::at(ErrorCode::Unreadable, name, {}, "is a directory");
     if (!isRasterExtension(path)) return Error::at(ErrorCode::UnknownFormat, name, {}, "a label raster must be .png or .tif");
-    auto in = OIIO::ImageInput::open(name);
-    if (!in) return Error::at(ErrorCode::Unreadable, name, {}, "cannot read the image: " + OIIO::geterror());
-    const OIIO::ImageSpec& spec = in->spec();
-    if (spec.format != OIIO::TypeDesc::UINT8)
-        return Error::at(ErrorCode::Unsupported, name, {}, "a label raster has 8-bit samples, not " + std::string(spec.format.c_str()));
-    if (spec.nchannels != 1 && !(spec.nchannels == 2 && spec.alpha_channel == 1))
+    auto library = image::imageLibrary();
+    if (!library) return Error::at(ErrorCode::Unsupported, name, {}, "cannot read images: " + library.error().message);
+    std::string problem;
+    auto in = (*library)->openReader(name, &problem);
+    if (!in) return Error::at(ErrorCode::Unreadable, name, {}, "cannot read the image: " + problem);
+    const image::ImageHeader& spec = in->header();
+    if (!spec.sampleKnown || spec.sample != image::ImageSample::UInt8)
+        return Error::at(ErrorCode::Unsupported, name, {}, "a label raster has 8-bit samples, not " + spec.sampleName);
+    if (spec.channels != 1 && !(spec.channels == 2 && spec.alphaChannel == 1))
         return Error::at(ErrorCode::Unsupported, name, {},
-                         std::to_string(spec.nchannels) + " channels: a label raster is one grey channel of class ids, not colours");
+                         std::to_string(spec.channels) + " channels: a label raster is one grey channel of class ids, not colours");
     if (spec.width < 1 || spec.height < 1 || spec.depth > 1) return Error::at(ErrorCode::Unsupported, name, {}, "not a 2D image");
     LabelRaster raster(spec.width, spec.height);
-    if (!in->read_image(0, 0, 0, 1, OIIO::TypeDesc::UINT8, raster.ids.data()))
-        return Error::at(ErrorCode::Unreadable, name, {}, "cannot read the pixels: " + in->geterror());
+    if (!in->readImage(0, 1, image::ImageSample::UInt8, raster.ids.data()))
+        return Error::at(ErrorCode::Unreadable, name, {}, "cannot read the pixels: " + in->takeError());
     return raster;
 }
 
@@ -66,31 +69,39 @@ Status writeLabelRaster(const LabelRaster& raster, const fs::path& path, double 
         return Error::at(ErrorCode::InvalidArgument, name, {}, "the pixel size must be positive and finite");
     auto temporary = image::TemporaryImageFile::beside(path);
     if (!temporary) return temporary.error();
-    OIIO::ImageSpec spec(raster.width, raster.height, 1, OIIO::TypeDesc::UINT8);
-    spec.channelnames = {"Y"};
+    image::ImageHeader spec;
+    spec.width = raster.width;
+    spec.height = raster.height;
+    spec.channels = 1;
+    spec.sample = image::ImageSample::UInt8;
+    spec.channelNames = {"Y"};
     char size[64];
     std::snprintf(size, sizeof size, "%.17g", pixelSize);
-    spec.attribute("stylos:content", "labels");
-    spec.attribute("stylos:pixel_size_m", size);
-    spec.attribute("Software", "Stylos");
+    spec.set("stylos:content", std::string("labels"));
+    spec.set("stylos:pixel_size_m", std::string(size));
+    spec.set("Software", std::string("Stylos"));
     if (lowerExtension(path) == ".png") {
-        spec.attribute("png:compressionLevel", 6);
-        spec.attribute("XResolution", float(0.0254 / pixelSize));
-        spec.attribute("YResolution", float(0.0254 / pixelSize));
-        spec.attribute("ResolutionUnit", "inch");
+        spec.set("png:compressionLevel", 6);
+        spec.set("XResolution", float(0.0254 / pixelSize));
+        spec.set("YResolution", float(0.0254 / pixelSize));
+        spec.set("ResolutionUnit", std::string("inch"));
     } else {
-        spec.attribute("compression", "zip");
-        spec.attribute("XResolution", float(0.01 / pixelSize));
-        spec.attribute("YResolution", float(0.01 / pixelSize));
-        spec.attribute("ResolutionUnit", "cm");
-        spec.attribute("ImageDescription", std::string("stylos:content=labels\nstylos:pixel_size_m=") + size);
+        spec.set("compression", std::string("zip"));
+        spec.set("XResolution", float(0.01 / pixelSize));
+        spec.set("YResolution", float(0.01 / pixelSize));
+        spec.set("ResolutionUnit", std::string("cm"));
+        spec.set("ImageDescription", std::string("stylos:content=labels\nstylos:pixel_size_m=") + size);
     }
+    auto library = image::imageLibrary();
+    if (!library) return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write images: " + library.error().message);
     {
-        auto out = OIIO::ImageOutput::create(temporary->path().string());
-        if (!out || !out->open(temporary->path().string(), spec))
-            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + (out ? out->geterror() : OIIO::geterror()));
-        if (!out->write_image(OIIO::TypeDesc::UINT8, raster.ids.data()) || !out->close())
-            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + out->geterror());
+        std::string problem;
+        auto out = (*library)->createWriter(temporary->path().string(), &problem);
+        if (!out) return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + problem);
+        if (!out->open(temporary->path().string(), spec))
+            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + out->takeError());
+        if (!out->writeImage(image::ImageSample::UInt8, raster.ids.data()) || !out->close())
+            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + out->takeError());
     }
     return temporary->commit();
 }

@@ -30,8 +30,8 @@ bool isReservedNamespace(const std::string& ns)
 {
     const std::string lower = lowercase(ns);
     if (lower == "oiio" || lower == "exr") return true;
-    std::string formats;
-    OIIO::getattribute("format_list", formats);
+    auto library = imageLibrary(); // without it no image is written, and writing says so
+    const std::string formats = library ? (*library)->formatList() : std::string();
     std::string_view rest = formats;
     while (!rest.empty()) {
         const std::size_t comma = rest.find(',');
@@ -82,7 +82,7 @@ std::string shortestDecimal(double value)
     return std::string(text, result.ptr);
 }
 
-void addImageMetadata(OIIO::ImageSpec& spec, ImageFileFormat format, double pixelSize, const std::string& content,
+void addImageMetadata(ImageHeader& header, ImageFileFormat format, double pixelSize, const std::string& content,
                       const std::map<std::string, std::string>& metadata)
 {
     switch (format) {
@@ -91,22 +91,22 @@ void addImageMetadata(OIIO::ImageSpec& spec, ImageFileFormat format, double pixe
         // own unit conversions, so give it whole pixels per metre.
         const double perMetre = std::round(1.0 / pixelSize);
         if (perMetre >= 1.0 && perMetre <= 2147483647.0) {
-            spec.attribute("XResolution", float(perMetre));
-            spec.attribute("YResolution", float(perMetre));
-            spec.attribute("ResolutionUnit", "m");
+            header.set("XResolution", float(perMetre));
+            header.set("YResolution", float(perMetre));
+            header.set("ResolutionUnit", std::string("m"));
         }
         break;
     }
     case ImageFileFormat::Tiff:
-        spec.attribute("XResolution", float(0.01 / pixelSize));
-        spec.attribute("YResolution", float(0.01 / pixelSize));
-        spec.attribute("ResolutionUnit", "cm");
+        header.set("XResolution", float(0.01 / pixelSize));
+        header.set("YResolution", float(0.01 / pixelSize));
+        header.set("ResolutionUnit", std::string("cm"));
         break;
     case ImageFileFormat::Exr:
         // OIIO maps XResolution to OpenEXR's standard xDensity (pixels per inch). It converts other
         // units the wrong way (OIIO 2.4), so give it inches directly.
-        spec.attribute("XResolution", float(0.0254 / pixelSize));
-        spec.attribute("ResolutionUnit", "in");
+        header.set("XResolution", float(0.0254 / pixelSize));
+        header.set("ResolutionUnit", std::string("in"));
         break;
     }
 
@@ -115,12 +115,12 @@ void addImageMetadata(OIIO::ImageSpec& spec, ImageFileFormat format, double pixe
     text.emplace(std::string(kContentKey), content);
     std::string description;
     for (const auto& [key, value] : text) {
-        spec.attribute(key, value);
+        header.set(key, value);
         if (!description.empty()) description += '\n';
         description += key + "=" + value;
     }
-    spec.attribute("ImageDescription", description);
-    spec.attribute("Software", "Stylos");
+    header.set("ImageDescription", description);
+    header.set("Software", std::string("Stylos"));
 }
 
 } // namespace stylos::core::image

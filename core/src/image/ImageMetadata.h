@@ -1,9 +1,8 @@
 #pragma once
 // Internal: the file format chosen from an extension, and the metadata an image carries
 // (resolution, stylos text attributes, ImageDescription). See ImageWriter.h for what each format holds.
+#include "stylos/core/image/ImageLibrary.h"
 #include "stylos/core/util/Result.h"
-
-#include <OpenImageIO/imageio.h>
 
 #include <filesystem>
 #include <map>
@@ -23,11 +22,11 @@ Status checkMetadata(const std::filesystem::path& path, const std::map<std::stri
 std::string shortestDecimal(double value);
 
 /**
- * Sets on @p spec the resolution for @p format from @p pixelSize (metres), the text attributes
+ * Sets on @p header the resolution for @p format from @p pixelSize (metres), the text attributes
  * "stylos:pixel_size_m", "stylos:content" = @p content, every entry of @p metadata, "Software", and
  * the ImageDescription that repeats them as "key=value" lines.
  */
-void addImageMetadata(OIIO::ImageSpec& spec, ImageFileFormat format, double pixelSize, const std::string& content,
+void addImageMetadata(ImageHeader& header, ImageFileFormat format, double pixelSize, const std::string& content,
                       const std::map<std::string, std::string>& metadata);
 
 } // namespace stylos::core::image

@@ -1,0 +1,93 @@
+// The image module (core/image/ImageLibrary.h): loaded on demand, it names OpenImageIO's formats, writes and reads
+// back a file through the plain interface, reports errors as text, and refuses a caller of another version.
+#include "TestSupport.h"
+#include "stylos/core/image/ImageLibrary.h"
+
+#include <gtest/gtest.h>
+
+#include <dlfcn.h>
+
+#include <array>
+#include <cstdint>
+
+using namespace stylos::core::image;
+using stylos::test::TempDir;
+
+TEST(ImageLibrary, LoadsAndNamesTheFormatsStylosWrites)
+{
+    auto library = imageLibrary();
+    ASSERT_TRUE(library) << library.error().message;
+    const std::string formats = "," + (*library)->formatList() + ",";
+    for (const char* name : {",png,", ",tiff,", ",openexr,"}) EXPECT_NE(formats.find(name), std::string::npos) << formats;
+    EXPECT_EQ(imageLibrary().value(), library.value()); // loaded once
+}
+
+TEST(ImageLibrary, WritesAndReadsBackExactSamplesAndAttributes)
+{
+    TempDir dir;
+    const std::string path = (dir / "grey.png").string();
+    auto library = imageLibrary();
+    ASSERT_TRUE(library);
+    ImageHeader header;
+    header.width = 3;
+    header.height = 2;
+    header.channels = 1;
+    header.sample = ImageSample::UInt16;
+    header.set("Software", std::string("Stylos"));
+    const std::array<std::uint16_t, 6> samples{0, 1, 257, 32768, 65534, 65535};
+    {
+        std::string problem;
+        auto out = (*library)->createWriter(path, &problem);
+        ASSERT_TRUE(out) << problem;
+        ASSERT_TRUE(out->open(path, header)) << out->takeError();
+        ASSERT_TRUE(out->writeImage(ImageSample::UInt16, samples.data())) << out->takeError();
+        ASSERT_TRUE(out->close()) << out->takeError();
+    }
+    std::string problem;
+    auto in = (*library)->openReader(path, &problem);
+    ASSERT_TRUE(in) << problem;
+    EXPECT_EQ(in->header().width, 3);
+    EXPECT_EQ(in->header().height, 2);
+    EXPECT_EQ(in->header().channels, 1);
+    EXPECT_TRUE(in->header().sampleKnown);
+    EXPECT_EQ(in->header().sample, ImageSample::UInt16);
+    EXPECT_EQ(in->header().sampleName, "uint16");
+    std::array<std::uint16_t, 6> back{};
+    ASSERT_TRUE(in->readImage(0, 1, ImageSample::UInt16, back.data())) << in->takeError();
+    EXPECT_EQ(back, samples);
+}
+
+TEST(ImageLibrary, ErrorsAreTextNamingTheProblem)
+{
+    TempDir dir;
+    auto library = imageLibrary();
+    ASSERT_TRUE(library);
+    std::string problem;
+    EXPECT_FALSE((*library)->createWriter((dir / "picture.nosuchformat").string(), &problem));
+    EXPECT_FALSE(problem.empty());
+    problem.clear();
+    EXPECT_FALSE((*library)->openReader((dir / "missing.png").string(), &problem));
+    EXPECT_NE(problem.find("missing.png"), std::string::npos) << problem;
+
+    ImageHeader header;
+    header.width = 2;
+    header.height = 2;
+    header.channels = 1;
+    const std::string inMissingFolder = (dir / "no-such-folder" / "x.png").string();
+    auto out = (*library)->createWriter(inMissingFolder, &problem);
+    ASSERT_TRUE(out);
+    EXPECT_FALSE(out->open(inMissingFolder, header));
+    EXPECT_NE(out->takeError().find("No such file or directory"), std::string::npos);
+}
+
+TEST(ImageLibrary, TheModuleRefusesACallerOfAnotherVersion)
+{
+    void* handle = dlopen(STYLOS_IMAGE_MODULE_FILE, RTLD_NOW | RTLD_LOCAL);
+    ASSERT_NE(handle, nullptr) << dlerror();
+    using Entry = const ImageLibrary* (*)(int);
+    const auto entry = reinterpret_cast<Entry>(dlsym(handle, "stylos_image_library"));
+    ASSERT_NE(entry, nullptr);
+    EXPECT_NE(entry(ImageLibraryVersion), nullptr);
+    EXPECT_EQ(entry(ImageLibraryVersion + 1), nullptr);
+    EXPECT_EQ(entry(ImageLibraryVersion - 1), nullptr);
+}
