@@ -3,7 +3,7 @@
 //
 //   stylos_ao_pointref [--ply FILE] [--depth D] [--level L] [--directions N] [--points P] [--seed S]
 //                      [--skip K] [--radius-scale F] [--project J] [--threads T] [--dir WORK] [--csv OUT.csv]
-//                      [--one-sided] [--reference-one-sided]
+//                      [--one-sided] [--reference-one-sided] [--smoothing S]
 //   - The octree: buildOctreeFile(FILE) at depth D (default 12, normals estimated), as `stylos-cli ao`
 //     builds it, cached in WORK (default /tmp/stylos-ao-pointref).
 //   - The method: computeLeafSkydome (what `stylos-cli ao` writes: level L, default the closed-surface
@@ -52,6 +52,7 @@ struct Settings {
     fs::path ply = "/work/shared/data/scans/happy_buddha_1.1M.ply";
     int depth = 12;
     int level = -1;
+    double smoothing = -1.0; ///< < 0: computeLeafSkydome's default (SkydomeLayerOptions::smoothing)
     ao::AoOptions ao;
     std::size_t points = 2000;
     std::uint64_t seed = 7;
@@ -92,6 +93,7 @@ Settings parse(int argc, char** argv)
         else if (a == "--dir") s.dir = next();
         else if (a == "--csv") s.csv = next();
         else if (a == "--one-sided") s.ao.twoSided = false;
+        else if (a == "--smoothing") s.smoothing = std::stod(next());
         else if (a == "--reference-one-sided") s.referenceTwoSided = false;
         else fail("unknown option " + a + " (see the source's header)");
     }
@@ -142,6 +144,7 @@ int main(int argc, char** argv)
     ao::SkydomeLayerOptions layer;
     layer.ao = s.ao;
     if (s.level >= 0) layer.level = s.level;
+    if (s.smoothing >= 0.0) layer.smoothing = s.smoothing;
     ao::SkydomeLayerReport report;
     double start = now();
     auto values = ao::computeLeafSkydome(octree, layer, nullptr, &report);
@@ -220,7 +223,8 @@ int main(int argc, char** argv)
                    {"leafEdge", leaves.edge}};
     out["method"] = {{"level", report.level}, {"cells", report.cells}, {"leaves", report.leaves},
                      {"directions", s.ao.directions}, {"bias", s.ao.receiverBias}, {"twoSided", s.ao.twoSided},
-                     {"seconds", methodSeconds}, {"skydomeSeconds", report.aoSeconds}};
+                     {"seconds", methodSeconds}, {"skydomeSeconds", report.aoSeconds},
+                     {"smoothingRadius", report.smoothingRadius}, {"smoothingSeconds", report.smoothSeconds}};
     out["reference"] = {{"receivers", receivers.size()}, {"seed", s.seed}, {"medianRadius", medianRadius},
                         {"skipRadii", s.skip}, {"radiusScale", s.radiusScale}, {"projectionNeighbours", s.project}, {"twoSided", s.referenceTwoSided},
                         {"discSeconds", discSeconds}, {"seconds", referenceSeconds},

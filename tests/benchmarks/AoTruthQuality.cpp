@@ -5,12 +5,13 @@
 //   stylos_ao_truth [--kind drum|fragment] [--spacing M] [--noise M] [--seed K] [--depth D] [--level L]
 //                   [--directions N] [--method depthmap|slices] [--bias B] [--points P] [--point-seed S]
 //                   [--threads T] [--step M] [--dir WORK] [--csv OUT.csv] [--receivers leaves|cells]
-//                   [--one-sided] [--pcv OUT_PCV.ply]
+//                   [--one-sided] [--smoothing S] [--pcv OUT_PCV.ply]
 //   - The scan: generateScan(kind, spacing (default 2 mm), noise (0.33 mm), seed (1)), random pose, as
 //     `stylos-cli generate` writes it; its octree as `stylos-cli ao` builds it (depth 12, normals
 //     estimated); both cached in WORK (default /tmp/stylos-ao-truth).
 //   - The method: computeLeafSkydome (what `stylos-cli ao` writes: level L, default the closed-surface
-//     level), timed; --one-sided: leaves measured on their normal's side only (before AoOptions::twoSided).
+//     level), timed; --one-sided: leaves measured on their normal's side only (before AoOptions::twoSided);
+//     --smoothing S: SkydomeLayerOptions::smoothing (default 1.5 cell edges of the level; 0: the raw values).
 //   - P true surface points (default 2000, seed S): a patch by area, a uniform (a, b) on it, its position
 //     and normal without noise. Each point's analytic value over the method's directions (turned into
 //     the object frame) and the value of the leaf nearest to the posed point; also the cell reference
@@ -87,6 +88,7 @@ struct Settings {
     fs::path csv;
     fs::path pcv;
     std::optional<bool> leafReceivers; ///< default: computeLeafSkydome's
+    std::optional<double> smoothing;   ///< default: computeLeafSkydome's
 };
 
 [[noreturn]] void fail(const std::string& message)
@@ -130,6 +132,7 @@ Settings parse(int argc, char** argv)
         else if (a == "--dir") s.dir = next();
         else if (a == "--csv") s.csv = next();
         else if (a == "--one-sided") s.ao.twoSided = false;
+        else if (a == "--smoothing") s.smoothing = std::stod(next());
         else if (a == "--pcv") s.pcv = next();
         else if (a == "--receivers") {
             const std::string r = next();
@@ -380,6 +383,7 @@ int main(int argc, char** argv)
     layer.ao = s.ao;
     if (s.level >= 0) layer.level = s.level;
     if (s.leafReceivers) layer.leafReceivers = *s.leafReceivers;
+    if (s.smoothing) layer.smoothing = *s.smoothing;
     ao::SkydomeLayerReport report;
     double start = now();
     auto values = ao::computeLeafSkydome(octree, layer, nullptr, &report);
@@ -442,7 +446,8 @@ int main(int argc, char** argv)
                      {"edgeMetres", cells.edge}, {"leaves", report.leaves}, {"bias", layer.leafReceivers ? s.ao.receiverBias : s.ao.bias},
                      {"directions", s.ao.directions}, {"seconds", methodSeconds},
                      {"receivers", layer.leafReceivers && s.ao.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
-                     {"skydomeSeconds", report.aoSeconds}, {"twoSided", s.ao.twoSided}};
+                     {"skydomeSeconds", report.aoSeconds}, {"twoSided", s.ao.twoSided},
+                     {"smoothingRadius", report.smoothingRadius}, {"smoothingSeconds", report.smoothSeconds}};
     out["points"] = {{"count", points.size()}, {"seed", s.pointSeed}, {"analyticSeconds", analyticSeconds},
                      {"cellReferenceSeconds", referenceSeconds}, {"step", s.step}};
     std::vector<double> sortedDistance = distance;

@@ -309,6 +309,40 @@ TEST(CliAo, LeafReceiversByDefaultGiveLeavesTheirOwnValues)
     EXPECT_NE(bad.err.find("--receivers"), std::string::npos) << bad.err;
 }
 
+TEST(CliAo, SmoothingIsReportedAndZeroGivesTheRawLeafValues)
+{
+    // The default smooths each leaf's value with its neighbours' within 1.5 edges of the level's cells; 0 gives
+    // the raw values. On the drum at level 3 the smoothed values vary less between neighbouring leaves.
+    TempDir dir;
+    const auto poct = drumOctree(dir);
+    const auto smooth = dir / "smooth.ply", raw = dir / "raw.ply";
+    const auto a = runCli({"ao", poct.string(), "-o", smooth.string(), "--level", "3", "--directions", "32", "--json"});
+    const auto b = runCli({"ao", poct.string(), "-o", raw.string(), "--level", "3", "--directions", "32", "--json",
+                           "--smoothing", "0"});
+    ASSERT_EQ(a.exitCode, 0) << a.err;
+    ASSERT_EQ(b.exitCode, 0) << b.err;
+    const auto ja = nlohmann::json::parse(a.out), jb = nlohmann::json::parse(b.out);
+    const auto octree = openPoct(poct);
+    const auto cells = stylos::core::ao::cellsAtLevel(octree, 3);
+    ASSERT_TRUE(cells.ok());
+    EXPECT_EQ(ja["smoothing"], 1.5);
+    EXPECT_DOUBLE_EQ(ja["smoothing_radius_m"].get<double>(), 1.5 * cells->edge);
+    EXPECT_EQ(jb["smoothing"], 0.0);
+    EXPECT_EQ(jb["smoothing_radius_m"], 0.0);
+    const auto smoothed = readAoPly(smooth).scalars[0], values = readAoPly(raw).scalars[0];
+    ASSERT_EQ(smoothed.size(), values.size());
+    double stepsSmoothed = 0, stepsRaw = 0; // between consecutive leaves (neighbours in octree order, mostly)
+    std::size_t changed = 0;
+    for (std::size_t i = 1; i < values.size(); ++i) {
+        stepsSmoothed += std::abs(smoothed[i] - smoothed[i - 1]);
+        stepsRaw += std::abs(values[i] - values[i - 1]);
+        changed += smoothed[i] != values[i];
+    }
+    EXPECT_GT(changed, values.size() / 4); // (the open faces read 1 everywhere: unchanged)
+    EXPECT_LT(stepsSmoothed, stepsRaw);
+    for (const float v : smoothed) ASSERT_TRUE(v >= 0.0f && v <= 1.0f);
+}
+
 TEST(CliAo, NormalsTurnedIntoAClosedBoxReadAsIfRightUnlessOneSided)
 {
     // The six faces of a 32 cm cube sampled every 1 cm, every normal pointing INTO the cube (as the
@@ -388,6 +422,9 @@ TEST(CliAo, BadOptionsExitTwoAndWriteNothing)
         {{"ao", floor, "-o", out, "--directions", "65537"}, "--directions"},
         {{"ao", floor, "-o", out, "--method", "raytrace"}, "raytrace"},
         {{"ao", floor, "-o", out, "--bias", "-1"}, "--bias"},
+        {{"ao", floor, "-o", out, "--smoothing", "-1"}, "--smoothing"},
+        {{"ao", floor, "-o", out, "--smoothing", "101"}, "--smoothing"},
+        {{"ao", floor, "-o", out, "--smoothing", "wide"}, "--smoothing"},
         {{"ao", floor, "-o", out, "--upper"}, "--upper"},
     });
     EXPECT_EQ(entriesIn(dir.path()), (std::set<std::string>{"floor.ply"}));

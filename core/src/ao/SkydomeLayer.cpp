@@ -4,6 +4,7 @@
 
 #include "stylos/core/ao/AoCells.h"
 #include "stylos/core/ao/AoExport.h"
+#include "stylos/core/ao/SkydomeSmoothing.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include <numeric>
@@ -44,10 +45,22 @@ Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree
                 if (!read) return read.error();
                 receivers = std::move(read).value();
             }
-            SubProgress step(progress, 0.15, 1.0);
-            auto values = computeAmbientOcclusion(cells, receivers, options.ao, &step);
-            if (!values) return values.error();
-            perLeaf = std::move(values).value();
+            {
+                SubProgress step(progress, 0.15, 0.95);
+                auto values = computeAmbientOcclusion(cells, receivers, options.ao, &step);
+                if (!values) return values.error();
+                perLeaf = std::move(values).value();
+            }
+            if (options.smoothing > 0.0 && !perLeaf.empty()) {
+                const auto smoothStart = Clock::now();
+                report.smoothingRadius = options.smoothing * cells.edge;
+                SkydomeSmoothing smoothing;
+                smoothing.radius = options.smoothing; // the receivers' unit: the cells' edge
+                smoothing.threads = options.ao.threads;
+                SubProgress step(progress, 0.95, 1.0);
+                if (auto smoothed = smoothSkydome(receivers, perLeaf, smoothing, &step); !smoothed) return smoothed.error();
+                report.smoothSeconds = secondsSince(smoothStart);
+            }
         } else {
             SubProgress step(progress, 0.1, 1.0);
             auto values = computeAmbientOcclusion(cells, options.ao, &step);

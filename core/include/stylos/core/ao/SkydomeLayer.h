@@ -11,7 +11,7 @@
  * write starts (the last moment that leaves the output as it was); the writer then finishes or fails.
  * Memory: the cells of the level (AoCells), one float a leaf, and with leaf receivers 24 + 28 bytes a
  * leaf and 8 bytes a leaf per thread (the sums; two-sided: 16 per thread during the probe, then 8 more
- * a leaf for the probe's sums). Units: directions over the unit sphere;
+ * a leaf for the probe's sums); the smoothing 20 bytes a leaf and its bins. Units: directions over the unit sphere;
  * values are fractions of the sky in [0, 1]. Thread-safety: reentrant (the octree is only read).
  * Failure modes: InvalidArgument (a level outside 0..depth, options out of range), the writer's errors
  * (Unwritable, OutOfBudget), Cancelled.
@@ -39,6 +39,10 @@ struct SkydomeLayerOptions {
     /** DepthMap: measure every leaf at its own centre and normal against the level's cells (AoReceivers);
      *  false: measure each cell at its centre and give its value to the leaves under it. */
     bool leafReceivers = true;
+    /** With leaf receivers: the values smoothed over neighbouring leaves of the same surface (SkydomeSmoothing.h)
+     *  within this many edges of the level's cells (at the closed-surface level, one to two sampling
+     *  spacings); 0: the raw per-leaf values. */
+    double smoothing = 1.5;
     SkydomeOutput output = SkydomeOutput::Poct;
 };
 
@@ -48,7 +52,9 @@ struct SkydomeLayerReport {
     std::uint64_t leaves = 0;    ///< values written
     double meanAmbient = 0.0;    ///< mean over the leaves
     double readSeconds = 0.0;
-    double aoSeconds = 0.0;
+    double aoSeconds = 0.0;      ///< the skydome, its smoothing included
+    double smoothingRadius = 0.0;///< metres; 0 when not smoothed
+    double smoothSeconds = 0.0;
     double writeSeconds = 0.0;
 };
 

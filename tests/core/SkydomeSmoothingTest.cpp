@@ -1,0 +1,121 @@
+// The 3D skydome's smoothing over neighbouring leaves (core/ao/SkydomeSmoothing.h): hand-computed weighted means,
+// a uniform field kept, a crease whose sides keep their values, radius 0 and cancel leaving the values alone,
+// and the same result whatever the threads.
+#include "stylos/core/ao/SkydomeSmoothing.h"
+
+#include <gtest/gtest.h>
+
+#include <random>
+
+using namespace stylos::core::ao;
+
+namespace {
+
+void add(AoReceivers& r, std::array<float, 3> p, std::array<float, 3> n)
+{
+    r.positions.push_back(p);
+    r.normals.push_back(n);
+}
+
+class CancelAtOnce : public stylos::core::ProgressSink {
+public:
+    void update(double) override {}
+    bool isCancelRequested() const override { return true; }
+};
+
+} // namespace
+
+TEST(SkydomeSmoothing, TakesTheWeightedMeanWithinTheRadius)
+{
+    // Three receivers on a line, normals up; radius 2: weights (1 − d²/4)².
+    AoReceivers r;
+    add(r, {10.0f, 10.0f, 10.0f}, {0, 0, 1});
+    add(r, {11.0f, 10.0f, 10.0f}, {0, 0, 1}); // 1 from the first: weight 0.5625
+    add(r, {13.0f, 10.0f, 10.0f}, {0, 0, 1}); // 3 from the first (outside), 2 from the second (the edge: 0)
+    std::vector<float> values{0.2f, 0.6f, 1.0f};
+    SkydomeSmoothing options;
+    options.radius = 2.0;
+    options.threads = 1;
+    ASSERT_TRUE(smoothSkydome(r, values, options));
+    EXPECT_NEAR(values[0], (0.2 + 0.5625 * 0.6) / 1.5625, 1e-6);
+    EXPECT_NEAR(values[1], (0.6 + 0.5625 * 0.2) / 1.5625, 1e-6);
+    EXPECT_FLOAT_EQ(values[2], 1.0f); // no neighbour within the radius: unchanged
+}
+
+TEST(SkydomeSmoothing, KeepsAUniformFieldAndTheTwoSidesOfACrease)
+{
+    // Two perpendicular faces of a grid meeting along x = 0: the floor (z = 0, values 0.9) and a wall
+    // (x = 0, z > 0, values 0.3); their normals are 90° apart, so neither side reads the other.
+    AoReceivers r;
+    std::vector<float> values;
+    for (int i = 0; i < 20; ++i)
+        for (int j = 0; j < 20; ++j) {
+            add(r, {float(i) * 0.5f + 0.25f, float(j) * 0.5f, 0.0f}, {0, 0, 1});
+            values.push_back(0.9f);
+            add(r, {0.0f, float(j) * 0.5f, float(i) * 0.5f + 0.25f}, {1, 0, 0});
+            values.push_back(0.3f);
+        }
+    SkydomeSmoothing options;
+    options.radius = 1.5;
+    ASSERT_TRUE(smoothSkydome(r, values, options));
+    for (std::size_t i = 0; i < values.size(); ++i) EXPECT_NEAR(values[i], i % 2 == 0 ? 0.9f : 0.3f, 1e-6f) << i;
+}
+
+TEST(SkydomeSmoothing, ANormalTurnedOverStillCountsAsTheSameSurface)
+{
+    AoReceivers r;
+    add(r, {5.0f, 5.0f, 5.0f}, {0, 0, 1});
+    add(r, {5.0f, 5.5f, 5.0f}, {0, 0, -1}); // measured two-sided and turned: the same plane
+    std::vector<float> values{0.0f, 1.0f};
+    SkydomeSmoothing options;
+    options.radius = 1.0;
+    ASSERT_TRUE(smoothSkydome(r, values, options));
+    EXPECT_NEAR(values[0], 0.5625 / 1.5625, 1e-6); // weight (1 − 0.25)² = 0.5625
+    EXPECT_NEAR(values[1], 1.0 / 1.5625, 1e-6);
+}
+
+TEST(SkydomeSmoothing, ReducesNoiseAndGivesTheSameValuesWhateverTheThreads)
+{
+    AoReceivers r;
+    std::vector<float> values;
+    std::mt19937 random(3);
+    std::uniform_real_distribution<float> jitter(-0.1f, 0.1f), noise(-0.05f, 0.05f);
+    for (int i = 0; i < 300; ++i)
+        for (int j = 0; j < 300; ++j) {
+            add(r, {float(i) + jitter(random), float(j) + jitter(random), 7.0f + jitter(random)}, {0, 0, 1});
+            values.push_back(0.8f + noise(random));
+        }
+    auto spread = [](const std::vector<float>& v) {
+        double mean = 0, square = 0;
+        for (float x : v) mean += x;
+        mean /= double(v.size());
+        for (float x : v) square += (x - mean) * (x - mean);
+        return std::sqrt(square / double(v.size()));
+    };
+    std::vector<float> one = values, two = values;
+    SkydomeSmoothing options;
+    options.radius = 2.0;
+    options.threads = 1;
+    ASSERT_TRUE(smoothSkydome(r, one, options));
+    options.threads = 3;
+    ASSERT_TRUE(smoothSkydome(r, two, options));
+    EXPECT_EQ(one, two);
+    EXPECT_LT(spread(one), spread(values) / 2.0);
+}
+
+TEST(SkydomeSmoothing, RadiusZeroAndCancelLeaveTheValuesAlone)
+{
+    AoReceivers r;
+    add(r, {0.0f, 0.0f, 0.0f}, {0, 0, 1});
+    add(r, {0.5f, 0.0f, 0.0f}, {0, 0, 1});
+    std::vector<float> values{0.1f, 0.9f};
+    SkydomeSmoothing options;
+    ASSERT_TRUE(smoothSkydome(r, values, options)); // radius 0
+    EXPECT_EQ(values, (std::vector<float>{0.1f, 0.9f}));
+    options.radius = 1.0;
+    CancelAtOnce cancel;
+    const auto status = smoothSkydome(r, values, options, &cancel);
+    ASSERT_FALSE(status);
+    EXPECT_EQ(status.error().code, stylos::core::ErrorCode::Cancelled);
+    EXPECT_EQ(values, (std::vector<float>{0.1f, 0.9f}));
+}
