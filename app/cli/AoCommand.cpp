@@ -54,7 +54,7 @@ struct AoRequest {
     std::string input, output;
     bool poctInput = false, plyOutput = false, json = false, leafReceivers = true;
     std::optional<int> level;
-    double smoothing = ao::SkydomeLayerOptions{}.smoothing;
+    std::optional<double> smoothing; ///< metres; unset: SkydomeLayerOptions's default (edges of the level's cells)
     ao::AoOptions options;
     oct::BuildOptions build;
     core::io::ReadOptions read;
@@ -77,10 +77,15 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
     const bool biasGiven = cl.value("bias").has_value();
     double bias = r.options.bias;
     if (!cl.integer("directions", directions) || !cl.integer("threads", threads) || !cl.integer("depth", depth) ||
-        !cl.integer("level", level) || !cl.number("bias", bias) || !cl.number("smoothing", r.smoothing))
+        !cl.integer("level", level) || !cl.number("bias", bias))
         return problem = cl.error(), false;
-    if (!(r.smoothing >= 0.0 && r.smoothing <= 100.0))
-        return problem = "--smoothing must be between 0 (off) and 100 cell edges", false;
+    if (cl.value("smoothing")) {
+        double smoothing = 0.0;
+        if (!cl.number("smoothing", smoothing)) return problem = cl.error(), false;
+        if (!(smoothing >= 0.0 && smoothing <= 1.0))
+            return problem = "--smoothing must be a radius in metres between 0 (off) and 1", false;
+        r.smoothing = smoothing;
+    }
     if (directions < 1 || directions > 65536) return problem = "--directions must be between 1 and 65536", false;
     if (threads < 0 || threads > 1024) return problem = "--threads must be between 0 and 1024", false;
     if (!(bias >= 0.0) || !std::isfinite(bias)) return problem = "--bias must be a finite number of cell edges ≥ 0", false;
@@ -145,7 +150,7 @@ int runAo(const std::vector<std::string>& args)
                     {"upper-hemisphere", "", "only directions above the world's horizon (z > 0), as CloudCompare's PCV"},
                     {"cosine", "", "weight each direction by the cosine to the normal (irradiance)"},
                     {"bias", "B", "self-shadowing tolerance in cell edges: with leaf receivers beyond the occluder cube's reach along the leaf's normal (default 0.5); with cell receivers above the cell's tangent plane (default 1)"},
-                    {"smoothing", "S", "with leaf receivers: each leaf's value averaged with its neighbours' on the same surface within S edges of the level's cells (normals within 37°; default 1.5; 0: the raw values)"},
+                    {"smoothing", "M", "with leaf receivers: each leaf's value averaged with its neighbours' on the same surface within M metres (normals within 37°; default 1.5 edges of the level's cells; 0: the raw values)"},
                     {"receivers", "WHERE", "leaves (default: each leaf at its own centre and normal, against the level's cells; depthmap) or cells (each cell's value spread to its leaves)"},
                     {"one-sided", "", "leaves: measure only the side the normal points to (default: both sides, the one that sees more, so a normal turned into the object does not read dark)"},
                     {"depth", "N", "point-file input: leaf level of the octree built first, 1..21 (default 12)"},
@@ -194,7 +199,7 @@ int runAo(const std::vector<std::string>& args)
     layer.ao = r.options;
     layer.level = level;
     layer.leafReceivers = r.leafReceivers;
-    layer.smoothing = r.smoothing;
+    layer.smoothingRadius = r.smoothing;
     layer.output = r.plyOutput ? ao::SkydomeOutput::Ply : ao::SkydomeOutput::Poct;
     ao::SkydomeLayerReport made;
     {
@@ -225,8 +230,7 @@ int runAo(const std::vector<std::string>& args)
                          {"bias", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? r.options.receiverBias : r.options.bias},
                          {"receivers", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
                          {"two_sided", r.leafReceivers && ao::twoSidedApplies(r.options)},
-                         {"smoothing", made.smoothingRadius > 0.0 ? r.smoothing : 0.0},
-                         {"smoothing_radius_m", made.smoothingRadius},
+                         {"smoothing", made.smoothingRadius},
                          {"smoothing_seconds", made.smoothSeconds},
                          {"threads", threads},
                          {"mean_ambient", mean},

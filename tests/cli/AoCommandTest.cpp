@@ -311,8 +311,8 @@ TEST(CliAo, LeafReceiversByDefaultGiveLeavesTheirOwnValues)
 
 TEST(CliAo, SmoothingIsReportedAndZeroGivesTheRawLeafValues)
 {
-    // The default smooths each leaf's value with its neighbours' within 1.5 edges of the level's cells; 0 gives
-    // the raw values. On the drum at level 3 the smoothed values vary less between neighbouring leaves.
+    // The default smooths each leaf's value with its neighbours' within 1.5 edges of the level's cells; --smoothing
+    // gives the radius in metres, 0 the raw values. On the drum at level 3 the smoothed values vary less between neighbouring leaves.
     TempDir dir;
     const auto poct = drumOctree(dir);
     const auto smooth = dir / "smooth.ply", raw = dir / "raw.ply";
@@ -325,10 +325,13 @@ TEST(CliAo, SmoothingIsReportedAndZeroGivesTheRawLeafValues)
     const auto octree = openPoct(poct);
     const auto cells = stylos::core::ao::cellsAtLevel(octree, 3);
     ASSERT_TRUE(cells.ok());
-    EXPECT_EQ(ja["smoothing"], 1.5);
-    EXPECT_DOUBLE_EQ(ja["smoothing_radius_m"].get<double>(), 1.5 * cells->edge);
+    EXPECT_DOUBLE_EQ(ja["smoothing"].get<double>(), 1.5 * cells->edge); // the radius used, metres
     EXPECT_EQ(jb["smoothing"], 0.0);
-    EXPECT_EQ(jb["smoothing_radius_m"], 0.0);
+    // A radius given in metres is used as given.
+    const auto c = runCli({"ao", poct.string(), "-o", (dir / "c.ply").string(), "--level", "3", "--directions", "32",
+                           "--json", "--smoothing", "0.05"});
+    ASSERT_EQ(c.exitCode, 0) << c.err;
+    EXPECT_EQ(nlohmann::json::parse(c.out)["smoothing"], 0.05);
     const auto smoothed = readAoPly(smooth).scalars[0], values = readAoPly(raw).scalars[0];
     ASSERT_EQ(smoothed.size(), values.size());
     double stepsSmoothed = 0, stepsRaw = 0; // between consecutive leaves (neighbours in octree order, mostly)
@@ -423,7 +426,7 @@ TEST(CliAo, BadOptionsExitTwoAndWriteNothing)
         {{"ao", floor, "-o", out, "--method", "raytrace"}, "raytrace"},
         {{"ao", floor, "-o", out, "--bias", "-1"}, "--bias"},
         {{"ao", floor, "-o", out, "--smoothing", "-1"}, "--smoothing"},
-        {{"ao", floor, "-o", out, "--smoothing", "101"}, "--smoothing"},
+        {{"ao", floor, "-o", out, "--smoothing", "1.5"}, "--smoothing"},
         {{"ao", floor, "-o", out, "--smoothing", "wide"}, "--smoothing"},
         {{"ao", floor, "-o", out, "--upper"}, "--upper"},
     });

@@ -51,11 +51,12 @@ Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree
                 if (!values) return values.error();
                 perLeaf = std::move(values).value();
             }
-            if (options.smoothing > 0.0 && !perLeaf.empty()) {
+            const double radius = options.smoothingRadius.value_or(options.smoothing * cells.edge); // metres
+            if (radius > 0.0 && !perLeaf.empty()) {
                 const auto smoothStart = Clock::now();
-                report.smoothingRadius = options.smoothing * cells.edge;
+                report.smoothingRadius = radius;
                 SkydomeSmoothing smoothing;
-                smoothing.radius = options.smoothing; // the receivers' unit: the cells' edge
+                smoothing.radius = radius / cells.edge; // the receivers' unit: the cells' edge
                 smoothing.threads = options.ao.threads;
                 SubProgress step(progress, 0.95, 1.0);
                 if (auto smoothed = smoothSkydome(receivers, perLeaf, smoothing, &step); !smoothed) return smoothed.error();

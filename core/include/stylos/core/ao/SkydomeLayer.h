@@ -43,6 +43,8 @@ struct SkydomeLayerOptions {
      *  within this many edges of the level's cells (at the closed-surface level, one to two sampling
      *  spacings); 0: the raw per-leaf values. */
     double smoothing = 1.5;
+    /** The smoothing's radius in metres instead (0: off); unset: `smoothing` edges of the level's cells. */
+    std::optional<double> smoothingRadius;
     SkydomeOutput output = SkydomeOutput::Poct;
 };
 
