@@ -7,6 +7,8 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/ao/AoCells.h"
+#include "stylos/core/ao/SkydomeLayer.h"
+#include "stylos/core/ao/SkydomeSmoothing.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/skydome/SkydomeJob.h"
 #include "stylos/widgets/skydome/SkydomeRunner.h"
@@ -85,6 +87,12 @@ std::vector<float> coreValues(const QString& path, const SkydomeOptions& options
     if (!receivers) return {};
     auto values = ao::computeAmbientOcclusion(*cells, *receivers, options.aoOptions());
     if (!values) return {};
+    // Then the smoothing over neighbouring leaves, at the layer's default radius (in the receivers' unit, the
+    // cells' edge).
+    ao::SkydomeSmoothing smoothing;
+    smoothing.radius = ao::SkydomeLayerOptions{}.smoothing;
+    smoothing.threads = options.aoOptions().threads;
+    if (!ao::smoothSkydome(*receivers, *values, smoothing)) return {};
     return std::move(values).value();
 }
 
