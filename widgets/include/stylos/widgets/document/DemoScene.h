@@ -49,7 +49,7 @@ class DemoScene : public QObject {
     /** @brief Sampling of the scans, metres (about 2.3 M points in all; ~10 s on 2 busy cores). */
     static constexpr double DefaultSpacing = 0.002;
     /** @brief Bumped whenever the generated files change; an older cache is regenerated. */
-    static constexpr int Version = 5; // 5: the drum comes annotated
+    static constexpr int Version = 6; // 5: the drum comes annotated; 6: its skydome smoothed (SkydomeSmoothing.h)
     /** @brief Skydome directions (a Fibonacci sphere). */
     static constexpr int SkyDirections = 96;
 
