@@ -3,11 +3,16 @@
 #include "../shading/ParallelChunks.h"
 
 #include <algorithm>
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <cstdint>
 #include <utility>
 #include <vector>
+
+#if defined(__SSE2__)
+#include <emmintrin.h>
+#endif
 
 namespace stylos::core::ao {
 
@@ -32,6 +37,65 @@ struct Bins {
     static std::uint64_t keyOf(std::int64_t x, std::int64_t y, std::int64_t z)
     {
         return (std::uint64_t(z) << 42) | (std::uint64_t(y) << 21) | std::uint64_t(x);
+    }
+};
+
+/**
+ * The weighted sums of one receiver over runs of candidates: weight (1 − d²/r²)² where d² < r² and
+ * |n·n'| ≥ minCos, else 0. Four candidates at a time in SSE lanes (x86-64 always has SSE2), the rest one by one;
+ * the lanes are added in a fixed order, so the result depends only on the inputs, not on threads or addresses.
+ */
+struct Accumulator {
+    float x, y, z, nx, ny, nz, r2, inverse, minCos;
+#if defined(__SSE2__)
+    __m128 sum4 = _mm_setzero_ps(), weights4 = _mm_setzero_ps();
+#endif
+    float sum = 0.0f, weights = 0.0f;
+
+    void add(const float* X, const float* Y, const float* Z, const float* NX, const float* NY, const float* NZ,
+             const float* V, std::uint32_t from, std::uint32_t to)
+    {
+        std::uint32_t l = from;
+#if defined(__SSE2__)
+        const __m128 px = _mm_set1_ps(x), py = _mm_set1_ps(y), pz = _mm_set1_ps(z);
+        const __m128 mx = _mm_set1_ps(nx), my = _mm_set1_ps(ny), mz = _mm_set1_ps(nz);
+        const __m128 radius2 = _mm_set1_ps(r2), inv = _mm_set1_ps(inverse), cosine = _mm_set1_ps(minCos);
+        const __m128 one = _mm_set1_ps(1.0f), sign = _mm_set1_ps(-0.0f);
+        for (; l + 4 <= to; l += 4) {
+            const __m128 dx = _mm_sub_ps(_mm_loadu_ps(X + l), px), dy = _mm_sub_ps(_mm_loadu_ps(Y + l), py),
+                         dz = _mm_sub_ps(_mm_loadu_ps(Z + l), pz);
+            const __m128 d2 = _mm_add_ps(_mm_add_ps(_mm_mul_ps(dx, dx), _mm_mul_ps(dy, dy)), _mm_mul_ps(dz, dz));
+            const __m128 dot = _mm_add_ps(_mm_add_ps(_mm_mul_ps(mx, _mm_loadu_ps(NX + l)), _mm_mul_ps(my, _mm_loadu_ps(NY + l))),
+                                          _mm_mul_ps(mz, _mm_loadu_ps(NZ + l)));
+            const __m128 facing = _mm_andnot_ps(sign, dot);
+            const __m128 keep = _mm_and_ps(_mm_cmplt_ps(d2, radius2), _mm_cmpge_ps(facing, cosine));
+            const __m128 t = _mm_sub_ps(one, _mm_mul_ps(d2, inv));
+            const __m128 w = _mm_and_ps(keep, _mm_mul_ps(t, t));
+            sum4 = _mm_add_ps(sum4, _mm_mul_ps(w, _mm_loadu_ps(V + l)));
+            weights4 = _mm_add_ps(weights4, w);
+        }
+#endif
+        for (; l < to; ++l) {
+            const float dx = X[l] - x, dy = Y[l] - y, dz = Z[l] - z;
+            const float d2 = dx * dx + dy * dy + dz * dz;
+            const float facing = std::abs(nx * NX[l] + ny * NY[l] + nz * NZ[l]);
+            if (!(d2 < r2) || !(facing >= minCos)) continue;
+            const float t = 1.0f - d2 * inverse; // (1 − d²/r²)²: 1 at the centre, 0 at the radius
+            sum += t * t * V[l];
+            weights += t * t;
+        }
+    }
+
+    std::pair<float, float> total() const
+    {
+#if defined(__SSE2__)
+        alignas(16) float s[4], w[4];
+        _mm_store_ps(s, sum4);
+        _mm_store_ps(w, weights4);
+        return {((s[0] + s[1]) + (s[2] + s[3])) + sum, ((w[0] + w[1]) + (w[2] + w[3])) + weights};
+#else
+        return {sum, weights};
+#endif
     }
 };
 
@@ -67,17 +131,24 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
             bins.begin.push_back(std::uint32_t(i));
         }
     bins.begin.push_back(std::uint32_t(n));
-    // The receivers in bin order, so that a bin's neighbours are read as contiguous runs.
-    struct Leaf {
-        float x, y, z, nx, ny, nz, value;
-    };
-    std::vector<Leaf> leaves(n);
+    // The receivers in bin order, one array per coordinate, so that a bin's neighbours are read as contiguous
+    // runs, four at a time.
+    std::array<std::vector<float>, 7> soa; // x, y, z, nx, ny, nz, value
+    for (auto& column : soa) column.resize(n);
     for (std::size_t k = 0; k < n; ++k) {
         const std::uint32_t i = bins.sorted[k].second;
         const auto& p = receivers.positions[i];
         const auto& m = receivers.normals[i];
-        leaves[k] = {p[0], p[1], p[2], m[0], m[1], m[2], values[i]};
+        soa[0][k] = p[0], soa[1][k] = p[1], soa[2][k] = p[2];
+        soa[3][k] = m[0], soa[4][k] = m[1], soa[5][k] = m[2], soa[6][k] = values[i];
     }
+    const float* X = soa[0].data();
+    const float* Y = soa[1].data();
+    const float* Z = soa[2].data();
+    const float* NX = soa[3].data();
+    const float* NY = soa[4].data();
+    const float* NZ = soa[5].data();
+    const float* V = soa[6].data();
 
     const float r2 = float(options.radius * options.radius), inverse = 1.0f / r2;
     std::vector<float> smoothed(n);
@@ -108,20 +179,10 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
                     if (e > c) ranges[count++] = {bins.begin[c], bins.begin[e]};
                 }
                 for (std::uint32_t k = bins.begin[b]; k < bins.begin[b + 1]; ++k) {
-                    const Leaf& a = leaves[k];
-                    float sum = 0.0f, weights = 0.0f;
-                    for (std::size_t r = 0; r < count; ++r)
-                        for (std::uint32_t l = ranges[r].first; l < ranges[r].second; ++l) {
-                            const Leaf& o = leaves[l];
-                            const float dx = o.x - a.x, dy = o.y - a.y, dz = o.z - a.z;
-                            const float d2 = dx * dx + dy * dy + dz * dz;
-                            const float facing = std::abs(a.nx * o.nx + a.ny * o.ny + a.nz * o.nz);
-                            if (d2 >= r2 || facing < options.minCos) continue;
-                            const float t = 1.0f - d2 * inverse; // (1 − d²/r²)²: 1 at the centre, 0 at the radius
-                            sum += t * t * o.value;
-                            weights += t * t;
-                        }
-                    smoothed[bins.sorted[k].second] = weights > 0.0f ? sum / weights : a.value;
+                    Accumulator acc{X[k], Y[k], Z[k], NX[k], NY[k], NZ[k], r2, inverse, options.minCos};
+                    for (std::size_t r = 0; r < count; ++r) acc.add(X, Y, Z, NX, NY, NZ, V, ranges[r].first, ranges[r].second);
+                    const auto [sum, weights] = acc.total();
+                    smoothed[bins.sorted[k].second] = weights > 0.0f ? sum / weights : V[k];
                 }
             }
         });
