@@ -55,19 +55,24 @@ public:
     }
     bool open(const std::string& path, const ImageHeader& header) override
     {
-        return track(m_open = m_out->open(path, specOf(header)));
+        const OIIO::ImageSpec spec = specOf(header);
+        errno = 0; // so that the reason kept on failure is this call's
+        return track(m_open = m_out->open(path, spec));
     }
     bool writeScanline(int y, ImageSample sample, const void* samples) override
     {
+        errno = 0;
         return track(m_out->write_scanline(y, 0, typeOf(sample), samples));
     }
     bool writeImage(ImageSample sample, const void* samples) override
     {
+        errno = 0;
         return track(m_out->write_image(typeOf(sample), samples));
     }
     bool close() override
     {
         m_open = false;
+        errno = 0;
         return track(m_out->close());
     }
     std::string takeError() override
@@ -81,7 +86,6 @@ private:
     bool track(bool ok)
     {
         if (!ok) m_errno = errno;
-        errno = 0;
         return ok;
     }
 
@@ -136,7 +140,8 @@ std::unique_ptr<ImageFileReader> openReader(const std::string& path, std::string
     errno = 0;
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
-        if (error) *error = withReason(OIIO::geterror(), errno);
+        const int savedErrno = errno; // before geterror(), which may set it
+        if (error) *error = withReason(OIIO::geterror(), savedErrno);
         return nullptr;
     }
     return std::make_unique<Reader>(std::move(in));

@@ -332,6 +332,14 @@ TEST(CliAo, SmoothingIsReportedAndZeroGivesTheRawLeafValues)
                            "--json", "--smoothing", "0.05"});
     ASSERT_EQ(c.exitCode, 0) << c.err;
     EXPECT_EQ(nlohmann::json::parse(c.out)["smoothing"], 0.05);
+    // Wider than 16 edges of the level's cells: refused, naming the octree, nothing written.
+    const auto wide = dir / "wide.ply";
+    const auto d = runCli({"ao", poct.string(), "-o", wide.string(), "--level", "6", "--directions", "8",
+                           "--smoothing", "0.9"});
+    EXPECT_EQ(d.exitCode, 1);
+    EXPECT_NE(d.err.find("more than 16 edges of the level's cells"), std::string::npos) << d.err;
+    EXPECT_NE(d.err.find(poct.string()), std::string::npos) << d.err;
+    EXPECT_FALSE(fs::exists(wide));
     const auto smoothed = readAoPly(smooth).scalars[0], values = readAoPly(raw).scalars[0];
     ASSERT_EQ(smoothed.size(), values.size());
     double stepsSmoothed = 0, stepsRaw = 0; // between consecutive leaves (neighbours in octree order, mostly)

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 
 using namespace stylos::core::ao;
@@ -101,6 +102,55 @@ TEST(SkydomeSmoothing, ReducesNoiseAndGivesTheSameValuesWhateverTheThreads)
     ASSERT_TRUE(smoothSkydome(r, two, options));
     EXPECT_EQ(one, two);
     EXPECT_LT(spread(one), spread(values) / 2.0);
+}
+
+TEST(SkydomeSmoothing, EqualsABruteForceSearchOnRandomPositionsAndRadii)
+{
+    // Positions and radii that are not binary fractions, so that the bins' edges round (a margin of one bin
+    // below the lowest receiver could round to a coordinate 0, whose lower neighbours' keys would wrap), and
+    // values and normals at random: every receiver against every other one, in double.
+    std::mt19937 random(11);
+    for (const double radius : {0.1, 0.37, 1.3, 0.0715}) {
+        std::uniform_real_distribution<float> where(0.9f, 4.1f), normal(-1.0f, 1.0f), value(0.0f, 1.0f);
+        AoReceivers r;
+        std::vector<float> values;
+        for (int i = 0; i < 1500; ++i) {
+            // Half on a plane z = 1.0 (the lowest: its bins sit on the margin), half anywhere.
+            const float z = i % 2 == 0 ? 1.0f : where(random);
+            std::array<float, 3> n{normal(random), normal(random), normal(random)};
+            const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+            if (length < 0.1f) n = {0, 0, 1};
+            else n = {n[0] / length, n[1] / length, n[2] / length};
+            if (i % 2 == 0) n = {0.1f * normal(random), 0.1f * normal(random), 1.0f};
+            add(r, {where(random) / 3.0f + 1.0f, where(random) / 3.0f + 1.0f, z}, n);
+            values.push_back(value(random));
+        }
+        SkydomeSmoothing options;
+        options.radius = radius;
+        std::vector<float> got = values;
+        ASSERT_TRUE(smoothSkydome(r, got, options));
+        std::size_t changed = 0;
+        for (std::size_t i = 0; i < r.size(); ++i) {
+            double sum = 0.0, weights = 0.0;
+            const auto& p = r.positions[i];
+            const auto& m = r.normals[i];
+            for (std::size_t j = 0; j < r.size(); ++j) {
+                const auto& q = r.positions[j];
+                const auto& o = r.normals[j];
+                const float dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+                const float d2 = dx * dx + dy * dy + dz * dz;
+                const float r2 = float(radius * radius);
+                if (!(d2 < r2) || !(std::abs(m[0] * o[0] + m[1] * o[1] + m[2] * o[2]) >= options.minCos)) continue;
+                const double t = 1.0 - double(d2) * double(1.0f / r2);
+                sum += t * t * values[j];
+                weights += t * t;
+            }
+            const double expected = weights > 0.0 ? sum / weights : values[i];
+            ASSERT_NEAR(got[i], expected, 2e-5) << "receiver " << i << ", radius " << radius;
+            changed += got[i] != values[i];
+        }
+        EXPECT_GT(changed, r.size() / 4) << radius; // neighbours were found
+    }
 }
 
 TEST(SkydomeSmoothing, RadiusZeroAndCancelLeaveTheValuesAlone)

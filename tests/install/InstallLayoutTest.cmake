@@ -7,7 +7,7 @@ if(NOT rc EQUAL 0)
   message(FATAL_ERROR "cmake --install failed (${rc}): ${err}")
 endif()
 
-set(expected bin/stylos-cli share/doc/stylos/README.md)
+set(expected bin/stylos-cli lib/stylos/libstylos_oiio.so share/doc/stylos/README.md)
 if(GUI)
   list(APPEND expected bin/stylos share/applications/stylos.desktop share/mime/packages/stylos.xml
        share/icons/hicolor/scalable/apps/stylos.svg share/stylos/translations/stylos_fr.qm
@@ -42,6 +42,18 @@ endif()
 execute_process(COMMAND ${PREFIX}/bin/stylos-cli --version RESULT_VARIABLE rc OUTPUT_VARIABLE out)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "stylos-cli ${VERSION}")
   message(FATAL_ERROR "the installed stylos-cli --version: exit ${rc}, \"${out}\"")
+endif()
+# The installed stylos-cli writes an image through the installed module (it looks in ../lib/stylos beside itself;
+# the build tree's copy is only for programs inside the build tree).
+execute_process(COMMAND ${PREFIX}/bin/stylos-cli generate drum -o ${PREFIX}/drum.ply --spacing 0.03
+                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the installed stylos-cli generate: exit ${rc}: ${err}")
+endif()
+execute_process(COMMAND ${PREFIX}/bin/stylos-cli unroll ${PREFIX}/drum.ply -o ${PREFIX}/drum.png
+                RESULT_VARIABLE rc OUTPUT_QUIET ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT EXISTS ${PREFIX}/drum.png)
+  message(FATAL_ERROR "the installed stylos-cli could not write an image: exit ${rc}: ${err}")
 endif()
 if(GUI)
   execute_process(COMMAND ${CMAKE_COMMAND} -E env --unset=DISPLAY --unset=WAYLAND_DISPLAY --unset=QT_QPA_PLATFORM

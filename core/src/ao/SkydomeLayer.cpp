@@ -52,6 +52,11 @@ Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree
                 perLeaf = std::move(values).value();
             }
             const double radius = options.smoothingRadius.value_or(options.smoothing * cells.edge); // metres
+            if (!(radius >= 0.0) || radius > MaxSmoothingEdges * cells.edge)
+                return Error::at(ErrorCode::InvalidArgument, octree.path().string(), {},
+                                 "the smoothing radius " + std::to_string(radius) + " m is more than " +
+                                     std::to_string(int(MaxSmoothingEdges)) + " edges of the level's cells (" +
+                                     std::to_string(cells.edge) + " m): it would average whole parts of the object");
             if (radius > 0.0 && !perLeaf.empty()) {
                 const auto smoothStart = Clock::now();
                 report.smoothingRadius = radius;

@@ -28,11 +28,17 @@ struct Bins {
 
     static constexpr std::uint64_t kCoordMask = (1u << 21) - 1;
 
+    /** The bin of @p p, each coordinate in [1, 2^21 − 2], so that every neighbour bin's key is a valid key: the
+     *  margin of one bin below the lowest receiver can round to 0 ((1.0 − 0.9) / 0.1 < 1), and a key − 1 of a
+     *  coordinate 0 would wrap. A receiver moved so lies within rounding of the bin's edge, so its neighbours
+     *  within the radius still lie in the bins around it. */
     std::array<std::int64_t, 3> coordsOf(const std::array<float, 3>& p) const
     {
-        return {std::int64_t(std::floor((double(p[0]) - lower[0]) / edge)),
-                std::int64_t(std::floor((double(p[1]) - lower[1]) / edge)),
-                std::int64_t(std::floor((double(p[2]) - lower[2]) / edge))};
+        std::array<std::int64_t, 3> c{};
+        for (int a = 0; a < 3; ++a)
+            c[std::size_t(a)] = std::clamp(std::int64_t(std::floor((double(p[std::size_t(a)]) - lower[std::size_t(a)]) / edge)),
+                                           std::int64_t(1), std::int64_t(kCoordMask - 1));
+        return c;
     }
     static std::uint64_t keyOf(std::int64_t x, std::int64_t y, std::int64_t z)
     {
@@ -71,7 +77,7 @@ struct Accumulator {
             const __m128 keep = _mm_and_ps(_mm_cmplt_ps(d2, radius2), _mm_cmpge_ps(facing, cosine));
             const __m128 t = _mm_sub_ps(one, _mm_mul_ps(d2, inv));
             const __m128 w = _mm_and_ps(keep, _mm_mul_ps(t, t));
-            sum4 = _mm_add_ps(sum4, _mm_mul_ps(w, _mm_loadu_ps(V + l)));
+            sum4 = _mm_add_ps(sum4, _mm_and_ps(keep, _mm_mul_ps(w, _mm_loadu_ps(V + l)))); // (a far NaN stays out)
             weights4 = _mm_add_ps(weights4, w);
         }
 #endif
@@ -116,8 +122,8 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
         for (int a = 0; a < 3; ++a) bins.lower[a] = std::min(bins.lower[a], double(p[a])), upper[a] = std::max(upper[a], double(p[a]));
     // At most 2^21 bins along an axis: a radius too small for the extent is widened (a finer grid than that
     // would hold one receiver per million bins).
-    for (int a = 0; a < 3; ++a) bins.edge = std::max(bins.edge, (upper[a] - bins.lower[a]) / double(Bins::kCoordMask - 2));
-    for (int a = 0; a < 3; ++a) bins.lower[a] -= bins.edge; // a margin: every neighbour bin's coordinate ≥ 0
+    for (int a = 0; a < 3; ++a) bins.edge = std::max(bins.edge, (upper[a] - bins.lower[a]) / double(Bins::kCoordMask - 4));
+    for (int a = 0; a < 3; ++a) bins.lower[a] -= bins.edge; // a margin of one bin (coordsOf clamps what rounding moves)
 
     bins.sorted.resize(n);
     for (std::size_t i = 0; i < n; ++i) {

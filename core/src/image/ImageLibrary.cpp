@@ -32,8 +32,12 @@ std::vector<fs::path> candidates()
     if (const char* chosen = std::getenv("STYLOS_IMAGE_MODULE"); chosen && *chosen) return {fs::path(chosen)};
     const fs::path program = programDirectory();
     if (!program.empty()) paths.push_back(program / ".." / "lib" / "stylos" / ModuleName);
-#ifdef STYLOS_IMAGE_MODULE_BUILD_PATH
-    paths.emplace_back(STYLOS_IMAGE_MODULE_BUILD_PATH);
+#if defined(STYLOS_IMAGE_MODULE_BUILD_PATH) && defined(STYLOS_BUILD_TREE)
+    // The build tree's module, for its programs elsewhere in it (the tests): only for a program inside that tree,
+    // so that an installed copy never loads a file from the folder it was once built in.
+    std::error_code error;
+    const std::string tree = fs::weakly_canonical(fs::path(STYLOS_BUILD_TREE), error).string() + "/";
+    if (!error && (program.string() + "/").rfind(tree, 0) == 0) paths.emplace_back(STYLOS_IMAGE_MODULE_BUILD_PATH);
 #endif
     return paths;
 }

@@ -33,6 +33,10 @@ enum class SkydomeOutput {
     Ply,  ///< leaf centres, normals and an "ambient" float property
 };
 
+/** The widest smoothing, in edges of the level's cells: beyond it the smoothing averages whole parts of the object
+ *  (and its cost grows with the cube of the radius). */
+inline constexpr double MaxSmoothingEdges = 16.0;
+
 struct SkydomeLayerOptions {
     AoOptions ao;              ///< directions, method, bias, weighting, threads
     std::optional<int> level;  ///< the level of the cells; default closedSurfaceLevel(octree)
@@ -43,7 +47,8 @@ struct SkydomeLayerOptions {
      *  within this many edges of the level's cells (at the closed-surface level, one to two sampling
      *  spacings); 0: the raw per-leaf values. */
     double smoothing = 1.5;
-    /** The smoothing's radius in metres instead (0: off); unset: `smoothing` edges of the level's cells. */
+    /** The smoothing's radius in metres instead (0: off); unset: `smoothing` edges of the level's cells. Either
+     *  way at most MaxSmoothingEdges edges (InvalidArgument beyond). */
     std::optional<double> smoothingRadius;
     SkydomeOutput output = SkydomeOutput::Poct;
 };

@@ -9,7 +9,8 @@
  * sample type, named attributes) and writers and readers that report errors as text.
  *
  * The module is looked for beside the program (../lib/stylos/ from its directory: the installed tree, wherever its
- * prefix, and the build tree's bin/), then in the build tree that compiled this code (tests elsewhere); the
+ * prefix, and the build tree's bin/), then, for a program inside the build tree that compiled this code (tests
+ * elsewhere in it), in that tree's lib/stylos; the
  * environment variable STYLOS_IMAGE_MODULE, when set, names the one file to load instead.
  *
  * Thread-safe. Failure modes: imageLibrary() returns Unsupported naming each place tried and the loader's reason
