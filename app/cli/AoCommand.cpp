@@ -101,6 +101,8 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
             return problem = "--receivers must be leaves or cells, not \"" + *receivers + "\"", false;
         r.leafReceivers = *receivers == "leaves";
     }
+    if (r.smoothing && *r.smoothing > 0.0 && (!r.leafReceivers || r.options.method != ao::AoMethod::DepthMap))
+        return problem = "--smoothing applies to leaf receivers (--receivers leaves, --method depthmap) only", false;
     if (biasGiven) r.options.bias = r.options.receiverBias = bias;
     r.options.upperHemisphere = cl.flag("upper-hemisphere");
     r.options.cosineWeighted = cl.flag("cosine");

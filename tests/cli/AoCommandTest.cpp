@@ -436,6 +436,8 @@ TEST(CliAo, BadOptionsExitTwoAndWriteNothing)
         {{"ao", floor, "-o", out, "--smoothing", "-1"}, "--smoothing"},
         {{"ao", floor, "-o", out, "--smoothing", "1.5"}, "--smoothing"},
         {{"ao", floor, "-o", out, "--smoothing", "wide"}, "--smoothing"},
+        {{"ao", floor, "-o", out, "--smoothing", "0.01", "--receivers", "cells"}, "--smoothing applies to leaf receivers"},
+        {{"ao", floor, "-o", out, "--smoothing", "0.01", "--method", "slices"}, "--smoothing applies to leaf receivers"},
         {{"ao", floor, "-o", out, "--upper"}, "--upper"},
     });
     EXPECT_EQ(entriesIn(dir.path()), (std::set<std::string>{"floor.ply"}));
