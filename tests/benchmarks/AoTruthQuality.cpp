@@ -5,7 +5,7 @@
 //   stylos_ao_truth [--kind drum|fragment] [--spacing M] [--noise M] [--seed K] [--depth D] [--level L]
 //                   [--directions N] [--method depthmap|slices] [--bias B] [--points P] [--point-seed S]
 //                   [--threads T] [--step M] [--dir WORK] [--csv OUT.csv] [--receivers leaves|cells]
-//                   [--one-sided] [--smoothing S] [--pcv OUT_PCV.ply]
+//                   [--one-sided] [--smoothing S] [--pcv OUT_PCV.ply] [--discs J [--disc-normals true|estimated]]
 //   - The scan: generateScan(kind, spacing (default 2 mm), noise (0.33 mm), seed (1)), random pose, as
 //     `stylos-cli generate` writes it; its octree as `stylos-cli ao` builds it (depth 12, normals
 //     estimated); both cached in WORK (default /tmp/stylos-ao-truth).
@@ -19,6 +19,13 @@
 //   - Parts (object frame; "a few cells" = 3 level-L edges): bed faces away from edges, bed faces near an
 //     edge, flute bottoms (|φ| < half width / 2), flute walls, fillets (|φ| > half width), the claw band,
 //     the broken cavity's core (q < 0.5), the fracture faces (fragment), other (near a bed, the cavity's rim).
+//   - --discs J: what the samples themselves can tell — each true point's sky ray-cast against the scan's
+//     POINTS as discs (ao/DiscSkydome.h; centres projected onto the plane of their J nearest, 0 = raw),
+//     from the posed true point along its true normal (one-sided), discs within 2 spacings skipped: no
+//     cells. --disc-normals estimated: along the nearest disc's estimated normal instead (PCA, k = 16,
+//     as the octree's), what the samples tell of the orientation. Relief finer than the sampling, or
+//     under the noise, is lost to any method that works from these samples; the two runs show how much
+//     of what remains is the occluders' and how much the receivers' normals.
 //   - --pcv: CloudCompare's PCV output of the very same scan (the PLY above: `stylos-cli generate KIND
 //     --spacing M --noise M --seed K` writes it byte for byte; scripts/bench-pcv-truth.sh runs it): its
 //     point count must be the scan's; each posed true point takes the value of the nearest PCV point
@@ -30,6 +37,8 @@
 // One JSON document goes to stdout; progress to stderr.
 #include "stylos/core/ao/AoCells.h"
 #include "stylos/core/ao/Directions.h"
+#include "stylos/core/ao/DiscSkydome.h"
+#include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/ao/ReferenceAo.h"
 #include "stylos/core/ao/SkydomeLayer.h"
 #include "stylos/core/io/PointFileFormat.h"
@@ -89,6 +98,8 @@ struct Settings {
     fs::path pcv;
     std::optional<bool> leafReceivers; ///< default: computeLeafSkydome's
     std::optional<double> smoothing;   ///< default: computeLeafSkydome's
+    std::optional<std::size_t> discs;  ///< --discs J: the disc reference, J projection neighbours
+    bool discNormalsEstimated = false; ///< --disc-normals estimated: the nearest disc's normal, not the true one
 };
 
 [[noreturn]] void fail(const std::string& message)
@@ -133,6 +144,12 @@ Settings parse(int argc, char** argv)
         else if (a == "--csv") s.csv = next();
         else if (a == "--one-sided") s.ao.twoSided = false;
         else if (a == "--smoothing") s.smoothing = std::stod(next());
+        else if (a == "--discs") s.discs = std::stoul(next());
+        else if (a == "--disc-normals") {
+            const std::string v = next();
+            if (v != "true" && v != "estimated") fail("--disc-normals must be true or estimated");
+            s.discNormalsEstimated = v == "estimated";
+        }
         else if (a == "--pcv") s.pcv = next();
         else if (a == "--receivers") {
             const std::string r = next();
@@ -348,6 +365,48 @@ json pcvReport(const Settings& s, const stylos::bench::PcvCloud& pcv, const std:
     return out;
 }
 
+/** --discs: the sky of each posed true point against the scan's points as discs (see the header). */
+std::vector<double> discReference(const fs::path& ply, const Settings& s, const std::vector<TruePoint>& points,
+                                  const Eigen::Affine3d& pose, std::size_t projection)
+{
+    auto cloud = stylos::core::cloud::loadPointCloud(ply);
+    if (!cloud) fail(cloud.error().message);
+    std::vector<double> xyz(3 * cloud->size());
+    for (std::size_t i = 0; i < cloud->size(); ++i) {
+        const Eigen::Vector3d w = cloud->world(i);
+        for (int a = 0; a < 3; ++a) xyz[3 * i + std::size_t(a)] = w[a];
+    }
+    ao::DiscCloudOptions options;
+    options.threads = s.threads;
+    options.projectionNeighbours = projection;
+    auto discs = ao::discsFromPoints(xyz, options);
+    if (!discs) fail(discs.error().message);
+    const ao::DiscGrid grid(*discs);
+    const stylos::bench::PointGrid nearest(discs->centres, 4.0 * s.scan.spacing);
+    std::vector<std::array<double, 3>> directions;
+    for (const auto& d : ao::fibonacciDirections(s.ao.directions, s.ao.upperHemisphere)) directions.push_back({d[0], d[1], d[2]});
+    std::vector<double> values(points.size());
+    std::vector<std::thread> workers;
+    const unsigned threads = std::max(1u, s.threads);
+    for (unsigned w = 0; w < threads; ++w)
+        workers.emplace_back([&, w] {
+            for (std::size_t i = w; i < points.size(); i += threads) {
+                const Eigen::Vector3d q = pose * points[i].p;
+                Eigen::Vector3d n = pose.linear() * points[i].n;
+                if (s.discNormalsEstimated) { // the nearest disc's estimated normal, on the true normal's side
+                    const std::size_t k = nearest.nearest(q);
+                    if (k == SIZE_MAX) fail("no disc near a true point");
+                    const Eigen::Vector3d e(discs->normals[k][0], discs->normals[k][1], discs->normals[k][2]);
+                    n = e.dot(n) < 0 ? Eigen::Vector3d(-e) : e;
+                }
+                values[i] = ao::discSkydome(grid, {q.x(), q.y(), q.z()}, {n.x(), n.y(), n.z()}, directions,
+                                            2.0 * s.scan.spacing, false);
+            }
+        });
+    for (auto& t : workers) t.join();
+    return values;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -455,6 +514,13 @@ int main(int argc, char** argv)
     out["points"]["leafDistanceMedian"] = sortedDistance[sortedDistance.size() / 2];
     out["points"]["leafDistanceMax"] = sortedDistance.back();
 
+    std::vector<double> discValues;
+    if (s.discs) {
+        start = now();
+        discValues = discReference(ply, s, points, pose, *s.discs);
+        out["discs"] = {{"projectionNeighbours", *s.discs}, {"skip", 2.0 * s.scan.spacing}, {"seconds", now() - start},
+                        {"receiverNormals", s.discNormalsEstimated ? "estimated" : "true"}};
+    }
     std::map<std::string, std::vector<std::size_t>> parts;
     for (std::size_t i = 0; i < points.size(); ++i) parts[points[i].part].push_back(i);
     parts["all"].resize(points.size());
@@ -464,6 +530,11 @@ int main(int argc, char** argv)
         for (const std::size_t i : ids) m.push_back(method[i]), t.push_back(truth[i]), r.push_back((*cellRef)[i]);
         out["parts"][part] = agreement(m, t);
         out["parts"][part]["cellReference"] = agreement(r, t);
+        if (!discValues.empty()) {
+            std::vector<double> d;
+            for (const std::size_t i : ids) d.push_back(discValues[i]);
+            out["parts"][part]["discs"] = agreement(d, t);
+        }
         if (part == "bed" || part == "bedNearEdge") out["parts"][part]["low"] = lowTail(m);
     }
     const auto meanOf = [&](const char* part) { return out["parts"].contains(part) ? out["parts"][part]["mean"].get<double>() : -1.0; };
