@@ -495,9 +495,20 @@ TEST(AoDepthMap, SameThreadsSameBitsAndUniformWeightsIndependentOfThreads)
 TEST(AoDepthMap, EveryInstructionSetGivesTheSameBits)
 {
     // The passes compiled for AVX-512, AVX2 and plain x86-64 (those this processor runs) write the same
-    // map and the same sums, direction by direction.
+    // map and the same sums, direction by direction; off-lattice and two-sided, receivers moved off the
+    // cells' centres (by up to ±0.4 edge) with their normals tilted, and every normal flipped in turn.
     using namespace stylos::core::ao::detail;
     const PreparedCells cells = prepareCells(flutedDrum());
+    PreparedCells moved = cells;
+    for (std::size_t i = 0; i < moved.size(); ++i) {
+        const float j = float(i % 9) * 0.1f - 0.4f, sign = i % 2 == 0 ? 1.0f : -1.0f;
+        moved.x[i] += j;
+        moved.y[i] -= 0.5f * j;
+        moved.z[i] += 0.25f * j;
+        moved.nx[i] = sign * (moved.nx[i] + 0.2f * j);
+        moved.ny[i] = sign * moved.ny[i];
+        moved.nz[i] = sign * (moved.nz[i] - 0.1f * j);
+    }
     const auto variants = depthMapPassVariants();
     ASSERT_FALSE(variants.empty());
     EXPECT_STREQ(variants.back().isa, "portable");
@@ -514,18 +525,31 @@ TEST(AoDepthMap, EveryInstructionSetGivesTheSameBits)
     for (const Vec& d : fibonacciDirections(7, false)) {
         const DepthMapFrame f = makeDepthMapFrame({float(d[0]), float(d[1]), float(d[2])}, lo, hi);
         std::vector<std::int32_t> firstMap;
-        std::vector<float> firstSeen, firstTotal, firstOffLattice;
+        std::vector<float> firstSeen, firstTotal, firstOffLattice, firstMovedSeen, firstMovedTotal;
+        std::vector<std::vector<float>> firstTwoSided;
         for (const DepthMapPasses& passes : variants) {
             std::vector<std::int32_t> map(std::size_t(f.width) * std::size_t(f.height), 0);
-            Accumulator sums(cells.size()), offLattice(cells.size());
+            Accumulator sums(cells.size()), offLattice(cells.size()), movedSums(moved.size()), twoSided(moved.size(), true);
             passes.splat(f, cells, map.data(), *scratch);
             passes.test(f, cells, map.data(), facing.data(), 1.0f, true, sums, *scratch);
             passes.testOffLattice(f, cells, map.data(), facing.data(), 0.25f, true, offLattice, *scratch);
+            passes.testOffLattice(f, moved, map.data(), facing.data(), 0.5f, false, movedSums, *scratch);
+            passes.testTwoSided(f, moved, map.data(), facing.data(), 0.5f, false, twoSided, *scratch);
+            const std::vector<std::vector<float>> twoSidedSums{twoSided.seen, twoSided.total, twoSided.seenBack,
+                                                               twoSided.totalBack};
             if (firstMap.empty()) {
                 firstMap = map;
                 firstSeen = sums.seen;
                 firstTotal = sums.total;
                 firstOffLattice = offLattice.seen;
+                firstMovedSeen = movedSums.seen;
+                firstMovedTotal = movedSums.total;
+                firstTwoSided = twoSidedSums;
+                // Some receivers hidden and some seen on each side, so that equal sums say something.
+                EXPECT_GT(std::count_if(twoSided.seen.begin(), twoSided.seen.end(), [](float v) { return v > 0; }), 100);
+                EXPECT_GT(std::count_if(twoSided.seenBack.begin(), twoSided.seenBack.end(), [](float v) { return v > 0; }), 100);
+                EXPECT_GT(std::count_if(movedSums.seen.begin(), movedSums.seen.end(), [](float v) { return v > 0; }), 100);
+                EXPECT_NE(movedSums.seen, movedSums.total);
                 EXPECT_GT(std::count_if(map.begin(), map.end(), [](std::int32_t e) { return e != 0; }), 1000);
                 continue;
             }
@@ -533,6 +557,9 @@ TEST(AoDepthMap, EveryInstructionSetGivesTheSameBits)
             EXPECT_EQ(sums.seen, firstSeen) << passes.isa;
             EXPECT_EQ(sums.total, firstTotal) << passes.isa;
             EXPECT_EQ(offLattice.seen, firstOffLattice) << passes.isa;
+            EXPECT_EQ(movedSums.seen, firstMovedSeen) << passes.isa;
+            EXPECT_EQ(movedSums.total, firstMovedTotal) << passes.isa;
+            EXPECT_EQ(twoSidedSums, firstTwoSided) << passes.isa;
         }
     }
 }

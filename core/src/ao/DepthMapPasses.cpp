@@ -79,6 +79,51 @@ STYLOS_DEPTHMAP_INLINE void splatImpl(const DepthMapFrame& f, const PreparedCell
 }
 
 /**
+ * Pass 2's decision for one block of @p count receivers (see testBlocks), in a function of its own: its
+ * pointers are restrict, so the loop vectorises (without it, the eighteen arrays need more run-time alias
+ * checks than GCC makes, and the loop stayed scalar: 40 % of `stylos-cli ao` on the 2 mm drum).
+ */
+template <bool TwoSided, typename Hidden>
+STYLOS_DEPTHMAP_INLINE void decideBlock(std::size_t count, const float* __restrict x, const float* __restrict y,
+                                        const float* __restrict z, const float* __restrict nx,
+                                        const float* __restrict ny, const float* __restrict nz,
+                                        const std::int32_t* __restrict ownKey, const std::int32_t* __restrict entry,
+                                        const float* __restrict toPixelU, const float* __restrict toPixelV,
+                                        float* __restrict seen, float* __restrict total, float* __restrict seenBack,
+                                        float* __restrict totalBack, float d0, float d1, float d2, float inverse,
+                                        bool cosine, const Hidden& hidden)
+{
+    for (std::size_t k = 0; k < count; ++k) {
+        // The stored cell's centre relative to this receiver: along d from the keys, across d from this
+        // receiver's offset to its pixel centre plus the stored offset.
+        const std::int32_t p = entry[k];
+        const std::int32_t ahead = (p >> 8) - ownKey[k];
+        const float along = float(ahead) * inverse;
+        const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
+        const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
+        const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
+        if constexpr (TwoSided) {
+            // The side d lies on: the front (n·d > 0) or the back (n·d < 0, measured with −n); each
+            // direction adds to one side's sums, branch-free.
+            const float side = nd < 0.0f ? -1.0f : 1.0f;
+            const bool isHidden = hidden(x[k], y[k], z[k], side * nx[k], side * ny[k], side * nz[k], p, ahead, along,
+                                         across1, across2);
+            const float weight = directionWeight(side * nd, cosine);
+            const float front = nd > 0.0f ? weight : 0.0f, back = nd < 0.0f ? weight : 0.0f;
+            total[k] += front;
+            seen[k] += isHidden ? 0.0f : front;
+            totalBack[k] += back;
+            seenBack[k] += isHidden ? 0.0f : back;
+        } else {
+            const bool isHidden = hidden(x[k], y[k], z[k], nx[k], ny[k], nz[k], p, ahead, along, across1, across2);
+            const float weight = directionWeight(nd, cosine);
+            total[k] += weight;
+            seen[k] += isHidden ? 0.0f : weight;
+        }
+    }
+}
+
+/**
  * Pass 2's frame for every facing block: each receiver projected to its pixel (its key along d, the map entry
  * there, its offset to the pixel centre), then @p hidden decides from the stored occluder, and the direction's
  * weight is added. @p hidden(k, p, ahead, along, across1, across2) gets, for receiver k of the block, the map
@@ -120,38 +165,10 @@ STYLOS_DEPTHMAP_INLINE void testBlocks(const DepthMapFrame& f, const PreparedCel
         }
         for (std::size_t k = 0; k < count; ++k)
             entry[k] = map[index[k]];
-        float* seen = sums.seen.data() + first;
-        float* total = sums.total.data() + first;
         float* seenBack = TwoSided ? sums.seenBack.data() + first : nullptr;
         float* totalBack = TwoSided ? sums.totalBack.data() + first : nullptr;
-        for (std::size_t k = 0; k < count; ++k) {
-            // The stored cell's centre relative to this receiver: along d from the keys, across d from this
-            // receiver's offset to its pixel centre plus the stored offset.
-            const std::int32_t p = entry[k];
-            const std::int32_t ahead = (p >> 8) - ownKey[k];
-            const float along = float(ahead) * inverse;
-            const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
-            const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
-            const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
-            if constexpr (TwoSided) {
-                // The side d lies on: the front (n·d > 0) or the back (n·d < 0, measured with −n); each
-                // direction adds to one side's sums, branch-free.
-                const float side = nd < 0.0f ? -1.0f : 1.0f;
-                const bool isHidden = hidden(x[k], y[k], z[k], side * nx[k], side * ny[k], side * nz[k], p, ahead,
-                                             along, across1, across2);
-                const float weight = directionWeight(side * nd, cosine);
-                const float front = nd > 0.0f ? weight : 0.0f, back = nd < 0.0f ? weight : 0.0f;
-                total[k] += front;
-                seen[k] += isHidden ? 0.0f : front;
-                totalBack[k] += back;
-                seenBack[k] += isHidden ? 0.0f : back;
-            } else {
-                const bool isHidden = hidden(x[k], y[k], z[k], nx[k], ny[k], nz[k], p, ahead, along, across1, across2);
-                const float weight = directionWeight(nd, cosine);
-                total[k] += weight;
-                seen[k] += isHidden ? 0.0f : weight;
-            }
-        }
+        decideBlock<TwoSided>(count, x, y, z, nx, ny, nz, ownKey, entry, toPixelU, toPixelV, sums.seen.data() + first,
+                              sums.total.data() + first, seenBack, totalBack, d0, d1, d2, inverse, cosine, hidden);
     }
 }
 
