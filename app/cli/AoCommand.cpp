@@ -58,6 +58,10 @@ struct AoRequest {
     ao::AoOptions options;
     oct::BuildOptions build;
     core::io::ReadOptions read;
+
+    /** Each leaf measured at its own position and normal: leaf receivers asked for, and DepthMap (the
+     *  Slices method measures cells only). */
+    bool measuresLeaves() const { return leafReceivers && options.method == ao::AoMethod::DepthMap; }
 };
 
 /** Reads and checks the command line (all but the level against the octree); false with @p problem set. */
@@ -101,7 +105,7 @@ bool parseRequest(CommandLine& cl, AoRequest& r, std::string& problem)
             return problem = "--receivers must be leaves or cells, not \"" + *receivers + "\"", false;
         r.leafReceivers = *receivers == "leaves";
     }
-    if (r.smoothing && *r.smoothing > 0.0 && (!r.leafReceivers || r.options.method != ao::AoMethod::DepthMap))
+    if (r.smoothing && *r.smoothing > 0.0 && !r.measuresLeaves())
         return problem = "--smoothing applies to leaf receivers (--receivers leaves, --method depthmap) only", false;
     if (biasGiven) r.options.bias = r.options.receiverBias = bias;
     r.options.upperHemisphere = cl.flag("upper-hemisphere");
@@ -229,8 +233,8 @@ int runAo(const std::vector<std::string>& args)
                          {"method", ao::aoMethodName(r.options.method)},
                          {"upper_hemisphere", r.options.upperHemisphere},
                          {"cosine", r.options.cosineWeighted},
-                         {"bias", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? r.options.receiverBias : r.options.bias},
-                         {"receivers", r.leafReceivers && r.options.method == ao::AoMethod::DepthMap ? "leaves" : "cells"},
+                         {"bias", r.measuresLeaves() ? r.options.receiverBias : r.options.bias},
+                         {"receivers", r.measuresLeaves() ? "leaves" : "cells"},
                          {"two_sided", r.leafReceivers && ao::twoSidedApplies(r.options)},
                          {"smoothing", made.smoothingRadius},
                          {"smoothing_seconds", made.smoothSeconds},

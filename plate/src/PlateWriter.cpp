@@ -44,11 +44,17 @@ Status finish(const fs::path& partial, const fs::path& output)
     return {};
 }
 
+/** Removes @p partial and returns @p error. */
+Status discard(const fs::path& partial, Error error)
+{
+    std::error_code ignored;
+    fs::remove(partial, ignored);
+    return error;
+}
+
 Status failed(const fs::path& partial, const fs::path& output, const std::string& why)
 {
-    std::error_code error;
-    fs::remove(partial, error);
-    return Error::at(ErrorCode::WriteFailed, output.string(), {}, why);
+    return discard(partial, Error::at(ErrorCode::WriteFailed, output.string(), {}, why));
 }
 
 /** Replaces the clock- and random-dependent parts of a Qt PDF by fixed text of the same length. */
@@ -127,24 +133,16 @@ Status writeSvg(const PlateContent& plate, const fs::path& output)
     return finish(partial, output);
 }
 
-/** Writes @p pixels (@p spec's size, channels and format) as TIFF or PNG by @p output's extension, through a
- *  partial file renamed at the end. */
 /** The TIFF DateTime of every image written: the PDF's fixed date, so that the same plate gives the same bytes. */
 constexpr const char* ReproducibleDateTime = "2000:01:01 00:00:00";
 
+/** Writes @p pixels (@p spec's size, channels and format) as TIFF or PNG by @p output's extension, through a
+ *  partial file (the same extension, which chooses the format) renamed at the end. */
 Status writeImageFile(const core::image::ImageHeader& spec, const void* pixels, const fs::path& output)
 {
     const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
-    auto library = core::image::imageLibrary();
-    if (!library) return Error::at(ErrorCode::WriteFailed, output.string(), {}, "cannot write images: " + library.error().message);
-    std::string problem;
-    auto out = (*library)->createWriter(partial.string(), &problem);
-    if (!out) return failed(partial, output, "cannot open for writing: " + problem);
-    if (!out->open(partial.string(), spec)) return failed(partial, output, "cannot open for writing: " + out->takeError());
-    const bool ok = out->writeImage(spec.sample, pixels);
-    const bool closed = out->close();
-    if (!ok || !closed) return failed(partial, output, "writing failed: " + out->takeError());
-    out.reset();
+    if (auto written = core::image::writeWholeImage(partial.string(), spec, pixels, output.string()); !written)
+        return discard(partial, written.error()); // names the output, not the partial file
     return finish(partial, output);
 }
 

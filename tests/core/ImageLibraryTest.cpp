@@ -9,6 +9,7 @@
 
 #include <array>
 #include <cstdint>
+#include <filesystem>
 
 using namespace stylos::core::image;
 using stylos::test::TempDir;
@@ -78,6 +79,39 @@ TEST(ImageLibrary, ErrorsAreTextNamingTheProblem)
     ASSERT_TRUE(out);
     EXPECT_FALSE(out->open(inMissingFolder, header));
     EXPECT_NE(out->takeError().find("No such file or directory"), std::string::npos);
+}
+
+TEST(ImageLibrary, WriteWholeImageWritesEverySampleOrNamesTheFileShown)
+{
+    TempDir dir;
+    ImageHeader header;
+    header.width = 2;
+    header.height = 2;
+    header.channels = 2;
+    header.sample = ImageSample::UInt8;
+    const std::array<std::uint8_t, 8> samples{0, 255, 7, 255, 200, 0, 13, 255};
+    const std::string path = (dir / "whole.tif").string();
+    ASSERT_TRUE(writeWholeImage(path, header, samples.data(), "shown.tif"));
+    auto library = imageLibrary();
+    ASSERT_TRUE(library);
+    std::string problem;
+    auto in = (*library)->openReader(path, &problem);
+    ASSERT_TRUE(in) << problem;
+    EXPECT_EQ(in->header().channels, 2);
+    std::array<std::uint8_t, 8> back{};
+    ASSERT_TRUE(in->readImage(0, 2, ImageSample::UInt8, back.data())) << in->takeError();
+    EXPECT_EQ(back, samples);
+
+    // Failures name the file the user asked for, with the reason, and are WriteFailed.
+    const auto missing = writeWholeImage((dir / "no-such-folder" / "x.png").string(), header, samples.data(), "plate.png");
+    ASSERT_FALSE(missing);
+    EXPECT_EQ(missing.error().code, stylos::core::ErrorCode::WriteFailed);
+    EXPECT_NE(missing.error().message.find("plate.png"), std::string::npos) << missing.error().message;
+    EXPECT_NE(missing.error().message.find("No such file or directory"), std::string::npos) << missing.error().message;
+    const auto unknown = writeWholeImage((dir / "x.nosuchformat").string(), header, samples.data(), "x.nosuchformat");
+    ASSERT_FALSE(unknown);
+    EXPECT_EQ(unknown.error().code, stylos::core::ErrorCode::WriteFailed);
+    EXPECT_FALSE(std::filesystem::exists(dir / "x.nosuchformat"));
 }
 
 TEST(ImageLibrary, TheModuleRefusesACallerOfAnotherVersion)

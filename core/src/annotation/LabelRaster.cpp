@@ -92,17 +92,8 @@ Status writeLabelRaster(const LabelRaster& raster, const fs::path& path, double 
         spec.set("ResolutionUnit", std::string("cm"));
         spec.set("ImageDescription", std::string("stylos:content=labels\nstylos:pixel_size_m=") + size);
     }
-    auto library = image::imageLibrary();
-    if (!library) return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write images: " + library.error().message);
-    {
-        std::string problem;
-        auto out = (*library)->createWriter(temporary->path().string(), &problem);
-        if (!out) return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + problem);
-        if (!out->open(temporary->path().string(), spec))
-            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + out->takeError());
-        if (!out->writeImage(image::ImageSample::UInt8, raster.ids.data()) || !out->close())
-            return Error::at(ErrorCode::WriteFailed, name, {}, "cannot write: " + out->takeError());
-    }
+    if (auto written = image::writeWholeImage(temporary->path().string(), spec, raster.ids.data(), name); !written)
+        return written.error();
     return temporary->commit();
 }
 

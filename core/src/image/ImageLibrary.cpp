@@ -86,4 +86,19 @@ Result<const ImageLibrary*> imageLibrary()
                      "the image library module (OpenImageIO) cannot be loaded; tried:" + loaded.problem);
 }
 
+Status writeWholeImage(const std::string& path, const ImageHeader& header, const void* samples,
+                       const std::string& shownName)
+{
+    auto library = imageLibrary();
+    if (!library) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write images: " + library.error().message);
+    std::string problem;
+    auto out = (*library)->createWriter(path, &problem);
+    if (!out) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write: " + problem);
+    if (!out->open(path, header)) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write: " + out->takeError());
+    const bool written = out->writeImage(header.sample, samples);
+    const bool closed = out->close(); // even after a failed write: the library lets go of the file
+    if (!written || !closed) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write: " + out->takeError());
+    return {};
+}
+
 } // namespace stylos::core::image

@@ -94,4 +94,13 @@ inline constexpr int ImageLibraryVersion = 1;
 /** The loaded module (loaded on the first call), or Unsupported saying why it could not be loaded. */
 Result<const ImageLibrary*> imageLibrary();
 
+/**
+ * @brief Writes a whole image — @p header's size, channels and sample, rows top first — to @p path (its
+ *        format by the extension) through the module: create, open, write, close. WriteFailed naming
+ *        @p shownName (the file the user asked for, where @p path is its temporary), with the module's or
+ *        the library's reason. What was written of @p path on failure is the caller's to remove.
+ */
+Status writeWholeImage(const std::string& path, const ImageHeader& header, const void* samples,
+                       const std::string& shownName);
+
 } // namespace stylos::core::image
