@@ -25,14 +25,7 @@ samples=${SAMPLES:-2000}
 cmake -S "$repo" -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DSTYLOS_BUILD_GUI=OFF \
       -DSTYLOS_BUILD_BENCHMARKS=ON > /dev/null
 cmake --build "$build" --target stylos-cli stylos_ao_quality
-# program NAME: the build's own NAME (bin/ of the build tree), never a staged copy (the packages' trees
-# under _CPack_Packages hold older builds).
-program() {
-  local found
-  found=$(find "$build" -path "$build/_CPack_Packages" -prune -o -name "$1" -type f -perm -u+x -print | head -n 1)
-  [ -n "$found" ] || { echo "no $1 in $build" >&2; exit 1; }
-  echo "$found"
-}
+. "$repo/scripts/build-programs.sh"
 cli=$(program stylos-cli)
 quality=$(program stylos_ao_quality)
 mkdir -p "$work"
