@@ -529,14 +529,17 @@ TEST(AoDepthMap, EveryInstructionSetGivesTheSameBits)
         std::vector<std::vector<float>> firstTwoSided;
         for (const DepthMapPasses& passes : variants) {
             std::vector<std::int32_t> map(std::size_t(f.width) * std::size_t(f.height), 0);
-            Accumulator sums(cells.size()), offLattice(cells.size()), movedSums(moved.size()), twoSided(moved.size(), true);
+            Accumulator sums(cells.size()), offLattice(cells.size()), movedSums(moved.size()), twoSided(moved.size(), true),
+                cosineTwoSided(moved.size(), true);
             passes.splat(f, cells, map.data(), *scratch);
             passes.test(f, cells, map.data(), facing.data(), 1.0f, true, sums, *scratch);
             passes.testOffLattice(f, cells, map.data(), facing.data(), 0.25f, true, offLattice, *scratch);
             passes.testOffLattice(f, moved, map.data(), facing.data(), 0.5f, false, movedSums, *scratch);
             passes.testTwoSided(f, moved, map.data(), facing.data(), 0.5f, false, twoSided, *scratch);
-            const std::vector<std::vector<float>> twoSidedSums{twoSided.seen, twoSided.total, twoSided.seenBack,
-                                                               twoSided.totalBack};
+            passes.testTwoSided(f, moved, map.data(), facing.data(), 0.5f, true, cosineTwoSided, *scratch);
+            const std::vector<std::vector<float>> twoSidedSums{
+                twoSided.seen,       twoSided.total,       twoSided.seenBack,       twoSided.totalBack,
+                cosineTwoSided.seen, cosineTwoSided.total, cosineTwoSided.seenBack, cosineTwoSided.totalBack};
             if (firstMap.empty()) {
                 firstMap = map;
                 firstSeen = sums.seen;
