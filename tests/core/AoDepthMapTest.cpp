@@ -19,6 +19,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <memory>
 #include <numbers>
 #include <random>
@@ -565,6 +566,43 @@ TEST(AoDepthMap, EveryInstructionSetGivesTheSameBits)
             EXPECT_EQ(twoSidedSums, firstTwoSided) << passes.isa;
         }
     }
+}
+
+TEST(AoDepthMap, TheEnvironmentChoosesThePassesAndABadNameIsRefused)
+{
+    // STYLOS_AO_PASSES runs another instruction set's passes (to measure it on the same machine): the same
+    // values end to end, two-sided leaf receivers included; a name this processor does not run is an error
+    // naming the variable, not a silent fallback.
+    const AoCells drum = flutedDrum();
+    AoReceivers receivers;
+    for (std::size_t i = 0; i < drum.size(); ++i) {
+        const float j = float(i % 7) * 0.1f - 0.3f;
+        receivers.positions.push_back({float(drum.coords[i][0]) + 0.5f + j, float(drum.coords[i][1]) + 0.5f - j,
+                                       float(drum.coords[i][2]) + 0.5f});
+        receivers.normals.push_back(drum.normals[i]);
+    }
+    AoOptions o = depthMap(64);
+    o.twoSided = true;
+    const struct Restore {
+        ~Restore() { unsetenv("STYLOS_AO_PASSES"); }
+    } restore;
+    unsetenv("STYLOS_AO_PASSES");
+    const auto fastest = computeAmbientOcclusion(drum, receivers, o);
+    ASSERT_TRUE(fastest.ok()) << fastest.error().message;
+    for (const auto& variant : detail::depthMapPassVariants()) {
+        setenv("STYLOS_AO_PASSES", variant.isa, 1);
+        EXPECT_EQ(detail::depthMapPassesInUse().value(), variant.isa);
+        const auto values = computeAmbientOcclusion(drum, receivers, o);
+        ASSERT_TRUE(values.ok()) << variant.isa;
+        EXPECT_EQ(values.value(), fastest.value()) << variant.isa;
+    }
+    setenv("STYLOS_AO_PASSES", "sse9", 1);
+    const auto refused = computeAmbientOcclusion(drum, receivers, o);
+    ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(refused.error().code, ErrorCode::InvalidArgument);
+    EXPECT_NE(refused.error().message.find("STYLOS_AO_PASSES: 'sse9' is not one of"), std::string::npos)
+        << refused.error().message;
+    EXPECT_NE(refused.error().message.find("portable"), std::string::npos) << refused.error().message;
 }
 
 TEST(AoDepthMap, CancelReturnsCancelledAndProgressReachesOne)

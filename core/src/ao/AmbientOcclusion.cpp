@@ -76,6 +76,8 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
     if (receivers && options.method != AoMethod::DepthMap)
         return Error::at(ErrorCode::InvalidArgument, "skydome", "",
                          "receivers off the cells (leaves) need the depthmap method");
+    if (options.method == AoMethod::DepthMap)
+        if (auto passes = detail::depthMapPassesInUse(); !passes) return passes.error();
     const detail::PreparedCells prepared = detail::prepareCells(cells);
     detail::PreparedCells preparedReceivers = receivers ? detail::prepareReceivers(*receivers) : detail::PreparedCells{};
     const std::size_t measured = receivers ? preparedReceivers.size() : prepared.size();

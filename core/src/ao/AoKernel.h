@@ -4,6 +4,7 @@
 
 #include <array>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace stylos::core::ao::detail {
@@ -51,6 +52,14 @@ public:
     virtual ~DirectionKernel() = default;
     virtual void run(const std::array<float, 3>& d, Accumulator& sums) = 0;
 };
+
+/**
+ * The instruction set of the DepthMap passes that makeDepthMapKernel uses: "avx512", "avx2" or "portable", the
+ * best this processor runs, or the one that the environment variable STYLOS_AO_PASSES names (to measure
+ * another on the same machine; all give the same bits). InvalidArgument naming the variable when it names
+ * none that this processor runs.
+ */
+Result<std::string> depthMapPassesInUse();
 
 /** With @p receivers, pass 2 measures them (AoReceivers, off the cells' lattice) instead of the cells. */
 std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options,

@@ -41,7 +41,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <memory>
+#include <string>
+#include <string_view>
 #include <vector>
 
 namespace stylos::core::ao::detail {
@@ -143,11 +146,44 @@ private:
 
 } // namespace
 
+namespace {
+
+constexpr const char* kPassesVariable = "STYLOS_AO_PASSES";
+
+const std::vector<DepthMapPasses>& passVariants()
+{
+    static const std::vector<DepthMapPasses> variants = depthMapPassVariants(); // the fastest first
+    return variants;
+}
+
+/** The variant that STYLOS_AO_PASSES names, the fastest when it is unset or empty; null when it names none here. */
+const DepthMapPasses* chosenPasses()
+{
+    const char* named = std::getenv(kPassesVariable);
+    if (named == nullptr || *named == '\0') return &passVariants().front();
+    for (const DepthMapPasses& v : passVariants())
+        if (std::string_view(v.isa) == named) return &v;
+    return nullptr;
+}
+
+} // namespace
+
+Result<std::string> depthMapPassesInUse()
+{
+    if (const DepthMapPasses* passes = chosenPasses()) return std::string(passes->isa);
+    std::string names;
+    for (const DepthMapPasses& v : passVariants()) names += std::string(names.empty() ? "" : ", ") + v.isa;
+    std::string problem = "'";
+    problem += std::getenv(kPassesVariable);
+    problem += "' is not one of the passes this processor runs (" + names + ")";
+    return Error::at(ErrorCode::InvalidArgument, kPassesVariable, "", problem);
+}
+
 std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options,
                                                     const PreparedCells* receivers)
 {
-    static const DepthMapPasses fastest = depthMapPassVariants().front();
-    return std::make_unique<DepthMapKernel>(cells, receivers, options, fastest);
+    const DepthMapPasses* passes = chosenPasses(); // checked by depthMapPassesInUse() before any kernel is made
+    return std::make_unique<DepthMapKernel>(cells, receivers, options, passes ? *passes : passVariants().front());
 }
 
 } // namespace stylos::core::ao::detail
