@@ -105,6 +105,34 @@ struct Accumulator {
     }
 };
 
+/** Receivers per chunk of the parallel loops that key, and gather, them. */
+constexpr std::size_t kChunk = std::size_t(1) << 16;
+
+/**
+ * Sorts @p items (distinct pairs: the result does not depend on how) on @p threads threads: one run per
+ * thread sorted at once, then the runs merged pairwise, the merges of a round at once.
+ */
+void sortInParallel(std::vector<std::pair<std::uint64_t, std::uint32_t>>& items, unsigned threads)
+{
+    const std::size_t n = items.size();
+    const std::size_t runs = std::clamp<std::size_t>(threads, 1, std::max<std::size_t>(1, n / kChunk));
+    std::vector<std::size_t> bounds(runs + 1);
+    for (std::size_t r = 0; r <= runs; ++r) bounds[r] = n * r / runs;
+    shading::detail::parallelChunks(runs, 1, threads, nullptr, [&](std::size_t r, std::size_t, unsigned) {
+        std::sort(items.begin() + std::ptrdiff_t(bounds[r]), items.begin() + std::ptrdiff_t(bounds[r + 1]));
+    });
+    for (std::size_t width = 1; width < runs; width *= 2) {
+        const std::size_t merges = (runs + 2 * width - 1) / (2 * width);
+        shading::detail::parallelChunks(merges, 1, threads, nullptr, [&](std::size_t m, std::size_t, unsigned) {
+            const std::size_t first = bounds[2 * width * m];
+            const std::size_t middle = bounds[std::min(runs, 2 * width * m + width)];
+            const std::size_t last = bounds[std::min(runs, 2 * width * (m + 1))];
+            std::inplace_merge(items.begin() + std::ptrdiff_t(first), items.begin() + std::ptrdiff_t(middle),
+                               items.begin() + std::ptrdiff_t(last));
+        });
+    }
+}
+
 } // namespace
 
 Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, const SkydomeSmoothing& options,
@@ -125,12 +153,15 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
     for (int a = 0; a < 3; ++a) bins.edge = std::max(bins.edge, (upper[a] - bins.lower[a]) / double(Bins::kCoordMask - 4));
     for (int a = 0; a < 3; ++a) bins.lower[a] -= bins.edge; // a margin of one bin (coordsOf clamps what rounding moves)
 
+    const unsigned threads = shading::detail::resolveThreads(options.threads);
     bins.sorted.resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-        const auto c = bins.coordsOf(receivers.positions[i]);
-        bins.sorted[i] = {Bins::keyOf(c[0], c[1], c[2]), std::uint32_t(i)};
-    }
-    std::sort(bins.sorted.begin(), bins.sorted.end());
+    shading::detail::parallelChunks(n, kChunk, threads, nullptr, [&](std::size_t first, std::size_t last, unsigned) {
+        for (std::size_t i = first; i < last; ++i) {
+            const auto c = bins.coordsOf(receivers.positions[i]);
+            bins.sorted[i] = {Bins::keyOf(c[0], c[1], c[2]), std::uint32_t(i)};
+        }
+    });
+    sortInParallel(bins.sorted, threads);
     for (std::size_t i = 0; i < n; ++i)
         if (i == 0 || bins.sorted[i].first != bins.sorted[i - 1].first) {
             bins.keys.push_back(bins.sorted[i].first);
@@ -141,13 +172,15 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
     // runs, four at a time.
     std::array<std::vector<float>, 7> soa; // x, y, z, nx, ny, nz, value
     for (auto& column : soa) column.resize(n);
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::uint32_t i = bins.sorted[k].second;
-        const auto& p = receivers.positions[i];
-        const auto& m = receivers.normals[i];
-        soa[0][k] = p[0], soa[1][k] = p[1], soa[2][k] = p[2];
-        soa[3][k] = m[0], soa[4][k] = m[1], soa[5][k] = m[2], soa[6][k] = values[i];
-    }
+    shading::detail::parallelChunks(n, kChunk, threads, nullptr, [&](std::size_t first, std::size_t last, unsigned) {
+        for (std::size_t k = first; k < last; ++k) {
+            const std::uint32_t i = bins.sorted[k].second;
+            const auto& p = receivers.positions[i];
+            const auto& m = receivers.normals[i];
+            soa[0][k] = p[0], soa[1][k] = p[1], soa[2][k] = p[2];
+            soa[3][k] = m[0], soa[4][k] = m[1], soa[5][k] = m[2], soa[6][k] = values[i];
+        }
+    });
     const float* X = soa[0].data();
     const float* Y = soa[1].data();
     const float* Z = soa[2].data();
@@ -159,7 +192,7 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
     const float r2 = float(options.radius * options.radius), inverse = 1.0f / r2;
     std::vector<float> smoothed(n);
     const bool finished = shading::detail::parallelChunks(
-        bins.keys.size(), 256, shading::detail::resolveThreads(options.threads), progress,
+        bins.keys.size(), 256, threads, progress,
         [&](std::size_t first, std::size_t last, unsigned) {
             // The neighbours of bin (x, y, z) in row (y + dy, z + dz) are bins x − 1..x + 1 of that row: keys
             // key − 1 + offset .. key + 1 + offset, consecutive in the sorted keys, so one run of leaves. As the
