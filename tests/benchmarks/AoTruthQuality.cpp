@@ -159,6 +159,7 @@ Settings parse(int argc, char** argv)
         else fail("unknown option " + a + " (see the source's header)");
     }
     s.ao.threads = s.threads;
+    if (s.discNormalsEstimated && !s.discs) fail("--disc-normals needs --discs J");
     return s;
 }
 

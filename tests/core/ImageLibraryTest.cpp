@@ -18,7 +18,9 @@ TEST(ImageLibrary, LoadsAndNamesTheFormatsStylosWrites)
 {
     auto library = imageLibrary();
     ASSERT_TRUE(library) << library.error().message;
-    const std::string formats = "," + (*library)->formatList() + ",";
+    std::string formats = ","; // appended, not "," + …: GCC 12 warns falsely (-Wrestrict) on the latter
+    formats += (*library)->formatList();
+    formats += ",";
     for (const char* name : {",png,", ",tiff,", ",openexr,"}) EXPECT_NE(formats.find(name), std::string::npos) << formats;
     EXPECT_EQ(imageLibrary().value(), library.value()); // loaded once
 }
@@ -111,7 +113,7 @@ TEST(ImageLibrary, WriteWholeImageWritesEverySampleOrNamesTheFileShown)
     const auto unknown = writeWholeImage((dir / "x.nosuchformat").string(), header, samples.data(), "x.nosuchformat");
     ASSERT_FALSE(unknown);
     EXPECT_EQ(unknown.error().code, stylos::core::ErrorCode::WriteFailed);
-    EXPECT_FALSE(std::filesystem::exists(dir / "x.nosuchformat"));
+    EXPECT_EQ(unknown.error().message.rfind("x.nosuchformat: cannot write: ", 0), 0u) << unknown.error().message;
 }
 
 TEST(ImageLibrary, TheModuleRefusesACallerOfAnotherVersion)

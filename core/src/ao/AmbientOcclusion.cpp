@@ -76,8 +76,12 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
     if (receivers && options.method != AoMethod::DepthMap)
         return Error::at(ErrorCode::InvalidArgument, "skydome", "",
                          "receivers off the cells (leaves) need the depthmap method");
-    if (options.method == AoMethod::DepthMap)
-        if (auto passes = detail::depthMapPassesInUse(); !passes) return passes.error();
+    const detail::DepthMapPasses* passes = nullptr;
+    if (options.method == AoMethod::DepthMap) {
+        auto chosen = detail::chosenDepthMapPasses();
+        if (!chosen) return chosen.error();
+        passes = *chosen;
+    }
     const detail::PreparedCells prepared = detail::prepareCells(cells);
     detail::PreparedCells preparedReceivers = receivers ? detail::prepareReceivers(*receivers) : detail::PreparedCells{};
     const std::size_t measured = receivers ? preparedReceivers.size() : prepared.size();
@@ -112,7 +116,7 @@ Result<std::vector<float>> runSkydome(const AoCells& cells, const AoReceivers* r
             threads, 1, threads, progress, [&](std::size_t worker, std::size_t, unsigned) {
                 auto kernel = phaseOptions.method == AoMethod::Slices
                                   ? detail::makeSliceKernel(prepared, phaseOptions)
-                                  : detail::makeDepthMapKernel(prepared, phaseOptions,
+                                  : detail::makeDepthMapKernel(prepared, phaseOptions, *passes,
                                                                receivers ? &preparedReceivers : nullptr);
                 for (std::size_t j = worker; j < ids.size(); j += threads) {
                     if (progress && progress->isCancelRequested()) return;

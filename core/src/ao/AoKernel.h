@@ -53,16 +53,19 @@ public:
     virtual void run(const std::array<float, 3>& d, Accumulator& sums) = 0;
 };
 
+struct DepthMapPasses; // DepthMapPasses.h
+
 /**
- * The instruction set of the DepthMap passes that makeDepthMapKernel uses: "avx512", "avx2" or "portable", the
- * best this processor runs, or the one that the environment variable STYLOS_AO_PASSES names (to measure
- * another on the same machine; all give the same bits). InvalidArgument naming the variable when it names
- * none that this processor runs.
+ * The DepthMap passes to run: the best instruction set this processor runs (AVX-512, AVX2, plain x86-64), or
+ * the one that the environment variable STYLOS_AO_PASSES names ("avx512", "avx2", "portable": to measure
+ * another on the same machine; all give the same bits). Read once per skydome, before its kernels are made.
+ * InvalidArgument naming the variable when it names none that this processor runs.
  */
-Result<std::string> depthMapPassesInUse();
+Result<const DepthMapPasses*> chosenDepthMapPasses();
 
 /** With @p receivers, pass 2 measures them (AoReceivers, off the cells' lattice) instead of the cells. */
 std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options,
+                                                    const DepthMapPasses& passes,
                                                     const PreparedCells* receivers = nullptr);
 std::unique_ptr<DirectionKernel> makeSliceKernel(const PreparedCells& cells, const AoOptions& options);
 

@@ -44,7 +44,6 @@
 #include <cstdlib>
 #include <memory>
 #include <string>
-#include <string_view>
 #include <vector>
 
 namespace stylos::core::ao::detail {
@@ -146,44 +145,27 @@ private:
 
 } // namespace
 
-namespace {
-
-constexpr const char* kPassesVariable = "STYLOS_AO_PASSES";
-
-const std::vector<DepthMapPasses>& passVariants()
+Result<const DepthMapPasses*> chosenDepthMapPasses()
 {
     static const std::vector<DepthMapPasses> variants = depthMapPassVariants(); // the fastest first
-    return variants;
-}
-
-/** The variant that STYLOS_AO_PASSES names, the fastest when it is unset or empty; null when it names none here. */
-const DepthMapPasses* chosenPasses()
-{
-    const char* named = std::getenv(kPassesVariable);
-    if (named == nullptr || *named == '\0') return &passVariants().front();
-    for (const DepthMapPasses& v : passVariants())
-        if (std::string_view(v.isa) == named) return &v;
-    return nullptr;
-}
-
-} // namespace
-
-Result<std::string> depthMapPassesInUse()
-{
-    if (const DepthMapPasses* passes = chosenPasses()) return std::string(passes->isa);
+    const char* named = std::getenv("STYLOS_AO_PASSES"); // once: the kernels get what this returns
+    if (named == nullptr || *named == '\0') return &variants.front();
+    const std::string name = named;
     std::string names;
-    for (const DepthMapPasses& v : passVariants()) names += std::string(names.empty() ? "" : ", ") + v.isa;
+    for (const DepthMapPasses& v : variants) {
+        if (name == v.isa) return &v;
+        names += std::string(names.empty() ? "" : ", ") + v.isa;
+    }
     std::string problem = "'";
-    problem += std::getenv(kPassesVariable);
+    problem += name;
     problem += "' is not one of the passes this processor runs (" + names + ")";
-    return Error::at(ErrorCode::InvalidArgument, kPassesVariable, "", problem);
+    return Error::at(ErrorCode::InvalidArgument, "STYLOS_AO_PASSES", "", problem);
 }
 
 std::unique_ptr<DirectionKernel> makeDepthMapKernel(const PreparedCells& cells, const AoOptions& options,
-                                                    const PreparedCells* receivers)
+                                                    const DepthMapPasses& passes, const PreparedCells* receivers)
 {
-    const DepthMapPasses* passes = chosenPasses(); // checked by depthMapPassesInUse() before any kernel is made
-    return std::make_unique<DepthMapKernel>(cells, receivers, options, passes ? *passes : passVariants().front());
+    return std::make_unique<DepthMapKernel>(cells, receivers, options, passes);
 }
 
 } // namespace stylos::core::ao::detail
