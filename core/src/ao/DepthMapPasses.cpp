@@ -95,21 +95,26 @@ STYLOS_DEPTHMAP_INLINE void decideBlock(std::size_t count, const float* __restri
                                         float* __restrict totalBack, std::uint32_t* __restrict seenMask, float d0,
                                         float d1, float d2, float inverse, bool cosine, const Hidden& hidden)
 {
+    // Whether receiver k, measured with the normal (mx, my, mz), is hidden by the occluder stored at its pixel,
+    // whose centre relative to the receiver is found along d from the keys, across d from the receiver's offset
+    // to its pixel centre plus the stored offset.
+    const auto isHidden = [=](std::size_t k, float mx, float my, float mz) STYLOS_DEPTHMAP_LAMBDA_INLINE {
+        const std::int32_t p = entry[k];
+        const std::int32_t ahead = (p >> 8) - ownKey[k];
+        const float along = float(ahead) * inverse;
+        const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
+        const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
+        return hidden(x[k], y[k], z[k], mx, my, mz, p, ahead, along, across1, across2);
+    };
     if constexpr (TwoSided) {
         // Two loops: the test on the side d lies on, then the sums, the choices made with masks on the bits.
         // In one loop GCC sinks the test into a branch of the sums (with float operations in its arms, which it
         // cannot if-convert for AVX2: "could trap"), and the loop stays scalar.
         for (std::size_t k = 0; k < count; ++k) {
-            const std::int32_t p = entry[k];
-            const std::int32_t ahead = (p >> 8) - ownKey[k];
-            const float along = float(ahead) * inverse;
-            const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
-            const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
             // The side d lies on: the front (n·d > 0) or the back (n·d < 0, measured with −n). copysign
             // differs from "nd < 0 ? −1 : 1" only at nd = −0 or NaN, where both weights are 0 below.
             const float side = std::copysign(1.0f, nx[k] * d0 + ny[k] * d1 + nz[k] * d2);
-            seenMask[k] = std::uint32_t(hidden(x[k], y[k], z[k], side * nx[k], side * ny[k], side * nz[k], p, ahead,
-                                               along, across1, across2)) - 1u; // all ones when seen
+            seenMask[k] = std::uint32_t(isHidden(k, side * nx[k], side * ny[k], side * nz[k])) - 1u; // all ones: seen
         }
         // directionWeight(|n·d|) on the side d lies on, 0 on the other (and both 0 at n·d = 0 or NaN).
         const std::uint32_t cosineMask = cosine ? ~0u : 0u, one = std::bit_cast<std::uint32_t>(1.0f);
@@ -126,18 +131,11 @@ STYLOS_DEPTHMAP_INLINE void decideBlock(std::size_t count, const float* __restri
         return;
     }
     for (std::size_t k = 0; k < count; ++k) {
-        // The stored cell's centre relative to this receiver: along d from the keys, across d from this
-        // receiver's offset to its pixel centre plus the stored offset.
-        const std::int32_t p = entry[k];
-        const std::int32_t ahead = (p >> 8) - ownKey[k];
-        const float along = float(ahead) * inverse;
-        const float across1 = toPixelU[k] + float((p >> 4) & 15) * 0.125f - 0.9375f;
-        const float across2 = toPixelV[k] + float(p & 15) * 0.125f - 0.9375f;
         const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
-        const bool isHidden = hidden(x[k], y[k], z[k], nx[k], ny[k], nz[k], p, ahead, along, across1, across2);
+        const bool hiddenHere = isHidden(k, nx[k], ny[k], nz[k]);
         const float weight = directionWeight(nd, cosine);
         total[k] += weight;
-        seen[k] += isHidden ? 0.0f : weight;
+        seen[k] += hiddenHere ? 0.0f : weight;
     }
 }
 
