@@ -113,7 +113,14 @@ TEST(ImageLibrary, WriteWholeImageWritesEverySampleOrNamesTheFileShown)
     const auto unknown = writeWholeImage((dir / "x.nosuchformat").string(), header, samples.data(), "x.nosuchformat");
     ASSERT_FALSE(unknown);
     EXPECT_EQ(unknown.error().code, stylos::core::ErrorCode::WriteFailed);
-    EXPECT_EQ(unknown.error().message.rfind("x.nosuchformat: cannot write: ", 0), 0u) << unknown.error().message;
+    EXPECT_EQ(unknown.error().message.rfind("x.nosuchformat: the image library cannot write this format: ", 0), 0u)
+        << unknown.error().message;
+    // The missing folder: openImageWriter, the first steps of every write, names the temporary it could not create.
+    const std::string temporary = (dir / "no-such-folder" / "x.part.png").string();
+    const auto opened = openImageWriter(temporary, header, "plate.png");
+    ASSERT_FALSE(opened);
+    EXPECT_EQ(opened.error().message.rfind("plate.png: cannot create " + temporary + ": ", 0), 0u)
+        << opened.error().message;
 }
 
 TEST(ImageLibrary, TheModuleRefusesACallerOfAnotherVersion)

@@ -1,11 +1,12 @@
 // The 3D skydome's smoothing over neighbouring leaves (core/ao/SkydomeSmoothing.h): hand-computed weighted means,
-// a uniform field kept, a crease whose sides keep their values, radius 0 and cancel leaving the values alone,
-// and the same result whatever the threads.
+// a uniform field kept, a crease whose sides keep their values, radius 0 and a cancel (at once or half-way)
+// leaving the values alone, and the same result whatever the threads.
 #include "stylos/core/ao/SkydomeSmoothing.h"
 
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <numeric>
 #include <random>
@@ -24,6 +25,17 @@ class CancelAtOnce : public stylos::core::ProgressSink {
 public:
     void update(double) override {}
     bool isCancelRequested() const override { return true; }
+};
+
+/** Cancels from the (checks + 1)-th question on: the work before it has been done. */
+class CancelAfter : public stylos::core::ProgressSink {
+public:
+    explicit CancelAfter(int checks) : left_(checks) {}
+    void update(double) override {}
+    bool isCancelRequested() const override { return left_.fetch_sub(1) <= 0; }
+
+private:
+    mutable std::atomic<int> left_;
 };
 
 } // namespace
@@ -176,4 +188,31 @@ TEST(SkydomeSmoothing, RadiusZeroAndCancelLeaveTheValuesAlone)
     ASSERT_FALSE(status);
     EXPECT_EQ(status.error().code, stylos::core::ErrorCode::Cancelled);
     EXPECT_EQ(values, (std::vector<float>{0.1f, 0.9f}));
+}
+
+TEST(SkydomeSmoothing, ACancelHalfWayLeavesTheValuesAsTheyWere)
+{
+    // 40 × 40 receivers on a plane, values alternating: the smoothing changes every one. One thread, 256 bins
+    // a chunk: the first chunks are smoothed (their results written) before the cancel.
+    AoReceivers r;
+    std::vector<float> values;
+    for (int i = 0; i < 40; ++i)
+        for (int j = 0; j < 40; ++j) {
+            add(r, {float(i), float(j), 0.0f}, {0, 0, 1});
+            values.push_back((i + j) % 2 == 0 ? 0.25f : 0.75f);
+        }
+    SkydomeSmoothing options;
+    options.radius = 1.5;
+    options.threads = 1;
+    std::vector<float> whole = values;
+    ASSERT_TRUE(smoothSkydome(r, whole, options));
+    for (std::size_t i = 0; i < values.size(); ++i) ASSERT_NE(whole[i], values[i]) << i;
+    for (const int checks : {1, 2}) {
+        std::vector<float> got = values;
+        CancelAfter cancel(checks);
+        const auto status = smoothSkydome(r, got, options, &cancel);
+        ASSERT_FALSE(status) << checks;
+        EXPECT_EQ(status.error().code, stylos::core::ErrorCode::Cancelled);
+        EXPECT_EQ(got, values) << "cancelled after " << checks << " chunks";
+    }
 }

@@ -92,8 +92,9 @@ STYLOS_DEPTHMAP_INLINE void decideBlock(std::size_t count, const float* __restri
                                         const std::int32_t* __restrict ownKey, const std::int32_t* __restrict entry,
                                         const float* __restrict toPixelU, const float* __restrict toPixelV,
                                         float* __restrict seen, float* __restrict total, float* __restrict seenBack,
-                                        float* __restrict totalBack, std::uint32_t* __restrict seenMask, float d0,
-                                        float d1, float d2, float inverse, bool cosine, const Hidden& hidden)
+                                        float* __restrict totalBack, std::uint32_t* __restrict seenMask,
+                                        float* __restrict nDotD, float d0, float d1, float d2, float inverse,
+                                        bool cosine, const Hidden& hidden)
 {
     // Whether receiver k, measured with the normal (mx, my, mz), is hidden by the occluder stored at its pixel,
     // whose centre relative to the receiver is found along d from the keys, across d from the receiver's offset
@@ -113,13 +114,15 @@ STYLOS_DEPTHMAP_INLINE void decideBlock(std::size_t count, const float* __restri
         for (std::size_t k = 0; k < count; ++k) {
             // The side d lies on: the front (n·d > 0) or the back (n·d < 0, measured with −n). copysign
             // differs from "nd < 0 ? −1 : 1" only at nd = −0 or NaN, where both weights are 0 below.
-            const float side = std::copysign(1.0f, nx[k] * d0 + ny[k] * d1 + nz[k] * d2);
+            const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
+            nDotD[k] = nd; // kept for the sums
+            const float side = std::copysign(1.0f, nd);
             seenMask[k] = std::uint32_t(isHidden(k, side * nx[k], side * ny[k], side * nz[k])) - 1u; // all ones: seen
         }
         // directionWeight(|n·d|) on the side d lies on, 0 on the other (and both 0 at n·d = 0 or NaN).
         const std::uint32_t cosineMask = cosine ? ~0u : 0u, one = std::bit_cast<std::uint32_t>(1.0f);
         for (std::size_t k = 0; k < count; ++k) {
-            const float nd = nx[k] * d0 + ny[k] * d1 + nz[k] * d2;
+            const float nd = nDotD[k];
             const std::uint32_t weight = (std::bit_cast<std::uint32_t>(std::abs(nd)) & cosineMask) | (one & ~cosineMask);
             const std::uint32_t front = weight & (0u - std::uint32_t(nd > 0.0f));
             const std::uint32_t back = weight & (0u - std::uint32_t(nd < 0.0f));
@@ -184,8 +187,8 @@ STYLOS_DEPTHMAP_INLINE void testBlocks(const DepthMapFrame& f, const PreparedCel
         float* seenBack = TwoSided ? sums.seenBack.data() + first : nullptr;
         float* totalBack = TwoSided ? sums.totalBack.data() + first : nullptr;
         decideBlock<TwoSided>(count, x, y, z, nx, ny, nz, ownKey, entry, toPixelU, toPixelV, sums.seen.data() + first,
-                              sums.total.data() + first, seenBack, totalBack, scratch.seenMask, d0, d1, d2, inverse,
-                              cosine, hidden);
+                              sums.total.data() + first, seenBack, totalBack, scratch.seenMask, scratch.nDotD, d0,
+                              d1, d2, inverse, cosine, hidden);
     }
 }
 

@@ -21,6 +21,7 @@ struct DepthMapScratch {
     alignas(64) std::int32_t entry[kBlock];     ///< pass 2: the map at the cell's pixel
     alignas(64) float toPixel[2][kBlock];       ///< pass 2: pixel centre − the cell's projection
     alignas(64) std::uint32_t seenMask[kBlock]; ///< pass 2, two-sided: all ones where the receiver sees d
+    alignas(64) float nDotD[kBlock];            ///< pass 2, two-sided: n · d
 };
 
 /**

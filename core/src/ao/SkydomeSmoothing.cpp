@@ -190,7 +190,9 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
     const float* V = soa[6].data();
 
     const float r2 = float(options.radius * options.radius), inverse = 1.0f / r2;
-    std::vector<float> smoothed(n);
+    // The results go straight to values: every read is of V (the values in bin order), and each receiver is
+    // written once, by the worker of its bin.
+    float* out = values.data();
     const bool finished = shading::detail::parallelChunks(
         bins.keys.size(), 256, threads, progress,
         [&](std::size_t first, std::size_t last, unsigned) {
@@ -221,12 +223,14 @@ Status smoothSkydome(const AoReceivers& receivers, std::span<float> values, cons
                     Accumulator acc{X[k], Y[k], Z[k], NX[k], NY[k], NZ[k], r2, inverse, options.minCos};
                     for (std::size_t r = 0; r < count; ++r) acc.add(X, Y, Z, NX, NY, NZ, V, ranges[r].first, ranges[r].second);
                     const auto [sum, weights] = acc.total();
-                    smoothed[bins.sorted[k].second] = weights > 0.0f ? sum / weights : V[k];
+                    out[bins.sorted[k].second] = weights > 0.0f ? sum / weights : V[k];
                 }
             }
         });
-    if (!finished) return Error{ErrorCode::Cancelled, "the skydome's smoothing was cancelled"};
-    std::copy(smoothed.begin(), smoothed.end(), values.begin());
+    if (!finished) { // the values as they were: V holds them all
+        for (std::size_t k = 0; k < n; ++k) out[bins.sorted[k].second] = V[k];
+        return Error{ErrorCode::Cancelled, "the skydome's smoothing was cancelled"};
+    }
     return {};
 }
 

@@ -86,15 +86,25 @@ Result<const ImageLibrary*> imageLibrary()
                      "the image library module (OpenImageIO) cannot be loaded; tried:" + loaded.problem);
 }
 
+Result<std::unique_ptr<ImageFileWriter>> openImageWriter(const std::string& path, const ImageHeader& header,
+                                                         const std::string& shownName)
+{
+    const auto fail = [&](const std::string& why) { return Error::at(ErrorCode::WriteFailed, shownName, {}, why); };
+    auto library = imageLibrary();
+    if (!library) return fail("cannot write images: " + library.error().message);
+    std::string problem;
+    auto out = (*library)->createWriter(path, &problem);
+    if (!out) return fail("the image library cannot write this format: " + problem);
+    if (!out->open(path, header)) return fail("cannot create " + path + ": " + out->takeError());
+    return out;
+}
+
 Status writeWholeImage(const std::string& path, const ImageHeader& header, const void* samples,
                        const std::string& shownName)
 {
-    auto library = imageLibrary();
-    if (!library) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write images: " + library.error().message);
-    std::string problem;
-    auto out = (*library)->createWriter(path, &problem);
-    if (!out) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write: " + problem);
-    if (!out->open(path, header)) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write: " + out->takeError());
+    auto opened = openImageWriter(path, header, shownName);
+    if (!opened) return opened.error();
+    const auto& out = opened.value();
     const bool written = out->writeImage(header.sample, samples);
     const bool closed = out->close(); // even after a failed write: the library lets go of the file
     if (!written || !closed) return Error::at(ErrorCode::WriteFailed, shownName, {}, "cannot write: " + out->takeError());

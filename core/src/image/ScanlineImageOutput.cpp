@@ -70,14 +70,10 @@ Status writeScanlineImage(const std::filesystem::path& target, const ScanlineIma
     if (!temporary) return temporary.error();
     const std::string temporaryName = temporary->path().string();
     const ImageHeader header = makeHeader(job);
-    auto library = imageLibrary();
-    if (!library) return failure(target, "cannot write images: " + library.error().message);
-
+    auto opened = openImageWriter(temporaryName, header, target.string());
+    if (!opened) return opened.error();
     // Declared after `temporary`: destroyed (closed, its errors dropped) before the temporary file is removed.
-    std::string problem;
-    std::unique_ptr<ImageFileWriter> out = (*library)->createWriter(temporaryName, &problem);
-    if (!out) return failure(target, "OpenImageIO cannot write this format: " + problem);
-    if (!out->open(temporaryName, header)) return failure(target, "cannot create " + temporaryName + ": " + out->takeError());
+    std::unique_ptr<ImageFileWriter> out = std::move(opened.value());
 
     std::vector<std::byte> row(std::size_t(job.width) * 2 * sampleBytes(header.sample));
     ProgressSink* progress = job.options->progress;

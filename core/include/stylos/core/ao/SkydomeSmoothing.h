@@ -10,8 +10,9 @@
  * Measured against the analytic truth (docs/benchmarks.md, "3D skydome against the true geometry"): at 1.5
  * occluder cell edges (SkydomeLayer's default), r 0.891 → 0.910 on a generated 2 mm drum.
  *
- * Units: positions and radius in any one unit (SkydomeLayer passes the occluders' cell edges). Memory: 48
- * bytes a receiver (the sorted bins, the receivers in bin order, the result), plus the bin table. Threads: @p threads
+ * Units: positions and radius in any one unit (SkydomeLayer passes the occluders' cell edges). Memory: 44
+ * bytes a receiver (the sorted bins, the receivers in bin order; the results go straight to the values), plus
+ * the bin table. Threads: @p threads
  * (0: all cores). Thread-safety: reentrant. Failure modes: Cancelled (values left as they were).
  */
 #include "stylos/core/ao/AoCells.h"

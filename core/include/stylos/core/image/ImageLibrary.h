@@ -95,6 +95,14 @@ inline constexpr int ImageLibraryVersion = 1;
 Result<const ImageLibrary*> imageLibrary();
 
 /**
+ * @brief The module's writer for @p path (its format by the extension), opened with @p header: the first
+ *        steps of every image write (load the module, create, open). WriteFailed naming @p shownName (the
+ *        file the user asked for, where @p path is its temporary), with the library's reason.
+ */
+Result<std::unique_ptr<ImageFileWriter>> openImageWriter(const std::string& path, const ImageHeader& header,
+                                                         const std::string& shownName);
+
+/**
  * @brief Writes a whole image — @p header's size, channels and sample, rows top first — to @p path (its
  *        format by the extension) through the module: create, open, write, close. WriteFailed naming
  *        @p shownName (the file the user asked for, where @p path is its temporary), with the module's or
