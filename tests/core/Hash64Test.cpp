@@ -1,10 +1,10 @@
 // XXH64 (libxxhash behind our API) against published test vectors, incremental hashing in arbitrary
-// pieces, copies, and its speed. Golden digests of real files: Hash64FixtureTest.cpp.
+// pieces and copies (its speed: BM_Xxh64, tests/benchmarks/FileOpenBenchmark.cpp). Golden digests of real files:
+// Hash64FixtureTest.cpp.
 #include "stylos/core/util/Hash64.h"
 
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cstring>
 #include <random>
 #include <string>
@@ -108,20 +108,4 @@ TEST(Hash64, EveryByteMatters)
         data[i] ^= 0x01;
     }
     EXPECT_NE(xxh64(data.data(), data.size() - 1), base);
-}
-
-TEST(Hash64, Speed)
-{
-    std::vector<std::uint8_t> data(64u << 20);
-    for (std::size_t i = 0; i < data.size(); ++i) data[i] = static_cast<std::uint8_t>(i * 2654435761u >> 13);
-    xxh64(data.data(), data.size()); // warm the pages
-    const auto t0 = std::chrono::steady_clock::now();
-    volatile std::uint64_t sink = 0;
-    for (int i = 0; i < 4; ++i) sink = sink + xxh64(data.data(), data.size());
-    const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    const double gbps = 4.0 * double(data.size()) / s / 1e9;
-    std::printf("XXH64: %.2f GB/s\n", gbps);
-#ifdef NDEBUG
-    EXPECT_GT(gbps, 1.0);
-#endif
 }
