@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 namespace stylos::core::io {
 
@@ -66,27 +67,16 @@ public:
         return false;
     }
 
-    bool attributeInteger(const pugi::xml_node& node, const char* name, std::int64_t fallback, std::int64_t& out,
-                          std::string& problem) const
+    /** Attribute @p name of @p node as a T (an integer or a number), @p fallback when it is absent. */
+    template <typename T>
+    bool attribute(const pugi::xml_node& node, const char* name, T fallback, T& out, std::string& problem) const
     {
         const pugi::xml_attribute a = node.attribute(name);
         out = fallback;
         if (!a) return true;
         if (parseNumber(std::string_view(a.value()), out)) return true;
         problem = "prototype field <" + std::string(node.name()) + ">: attribute " + name + "=\"" + a.value() +
-                  "\" is not an integer";
-        return false;
-    }
-
-    bool attributeDouble(const pugi::xml_node& node, const char* name, double fallback, double& out,
-                         std::string& problem) const
-    {
-        const pugi::xml_attribute a = node.attribute(name);
-        out = fallback;
-        if (!a) return true;
-        if (parseNumber(std::string_view(a.value()), out)) return true;
-        problem = "prototype field <" + std::string(node.name()) + ">: attribute " + name + "=\"" + a.value() +
-                  "\" is not a number";
+                  (std::is_integral_v<T> ? "\" is not an integer" : "\" is not a number");
         return false;
     }
 
@@ -107,17 +97,17 @@ public:
                 f.type = E57Field::Type::Float;
                 f.singlePrecision = std::string_view(child.attribute("precision").value()) == "single";
                 const double big = std::numeric_limits<double>::max();
-                if (!attributeDouble(child, "minimum", -big, f.floatMinimum, problem) ||
-                    !attributeDouble(child, "maximum", big, f.floatMaximum, problem))
+                if (!attribute(child, "minimum", -big, f.floatMinimum, problem) ||
+                    !attribute(child, "maximum", big, f.floatMaximum, problem))
                     return false;
             } else if (type == "Integer" || type == "ScaledInteger") {
                 f.type = type == "Integer" ? E57Field::Type::Integer : E57Field::Type::ScaledInteger;
-                if (!attributeInteger(child, "minimum", std::numeric_limits<std::int64_t>::min(), f.minimum, problem) ||
-                    !attributeInteger(child, "maximum", std::numeric_limits<std::int64_t>::max(), f.maximum, problem))
+                if (!attribute(child, "minimum", std::numeric_limits<std::int64_t>::min(), f.minimum, problem) ||
+                    !attribute(child, "maximum", std::numeric_limits<std::int64_t>::max(), f.maximum, problem))
                     return false;
                 if (f.type == E57Field::Type::ScaledInteger &&
-                    (!attributeDouble(child, "scale", 1.0, f.scale, problem) ||
-                     !attributeDouble(child, "offset", 0.0, f.offset, problem)))
+                    (!attribute(child, "scale", 1.0, f.scale, problem) ||
+                     !attribute(child, "offset", 0.0, f.offset, problem)))
                     return false;
                 if (f.minimum > f.maximum) {
                     problem = "prototype field <" + name + ">: minimum " + std::to_string(f.minimum) +
