@@ -142,7 +142,7 @@ Status writeImageFile(const core::image::ImageHeader& spec, const void* pixels, 
 {
     const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
     if (auto written = core::image::writeWholeImage(partial.string(), spec, pixels, output.string()); !written)
-        return discard(partial, written.error()); // names the output, not the partial file
+        return discard(partial, written.error()); // names the output (and the partial file if it cannot be created)
     return finish(partial, output);
 }
 

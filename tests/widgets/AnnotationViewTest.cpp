@@ -218,5 +218,5 @@ void AnnotationViewTest::escapeCancelsTheLasso()
     QVERIFY(m_view->tool() == nullptr);
 }
 
-QTEST_MAIN(AnnotationViewTest)
+STYLOS_WIDGET_TEST_MAIN(AnnotationViewTest)
 #include "AnnotationViewTest.moc"

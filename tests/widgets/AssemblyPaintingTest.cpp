@@ -362,5 +362,5 @@ void AssemblyPaintingTest::aStaleDeveloppeeRefusesToPaint()
     QCOMPARE(labels(m_fragment), fragmentBefore);
 }
 
-QTEST_MAIN(AssemblyPaintingTest)
+STYLOS_WIDGET_TEST_MAIN(AssemblyPaintingTest)
 #include "AssemblyPaintingTest.moc"

@@ -3,6 +3,8 @@
 // outline, a far surface seen through a 2 px slit and through a wide opening, discs of two reaches, a convex
 // block on the background — is uploaded as colour (reach in alpha) and depth, composited, read back and compared
 // pixel for pixel with the CPU's result. Needs OpenGL 3.3 (xvfb-run); skipped without it.
+#include "WidgetTestSupport.h"
+
 #include "stylos/core/view/Camera.h"
 #include "stylos/core/view/GapFill.h"
 #include "stylos/widgets/view3d/OffscreenFrame.h"
@@ -150,5 +152,5 @@ void GapFillPassTest::theShaderFollowsTheRule()
     context.doneCurrent();
 }
 
-QTEST_MAIN(GapFillPassTest)
+STYLOS_WIDGET_TEST_MAIN(GapFillPassTest)
 #include "GapFillPassTest.moc"
