@@ -37,19 +37,6 @@ namespace fs = std::filesystem;
 using core::Clock;
 using core::secondsSince;
 
-std::string lowerExtension(const fs::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
-bool sameFile(const fs::path& a, const fs::path& b)
-{
-    std::error_code error;
-    return fs::equivalent(a, b, error) && !error;
-}
-
 struct AoRequest {
     std::string input, output;
     bool poctInput = false, plyOutput = false, json = false, leafReceivers = true;

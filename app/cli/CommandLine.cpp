@@ -3,6 +3,7 @@
 #include <CLI/CLI.hpp>
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <iostream>
 
@@ -162,6 +163,19 @@ int usageError(const CommandLine& cl, const std::string& message)
 {
     std::cerr << "stylos-cli: " << message << " (usage: " << cl.synopsis() << "; --help for the options)\n";
     return ExitUsage;
+}
+
+std::string lowerExtension(const std::filesystem::path& path)
+{
+    std::string ext = path.extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return ext;
+}
+
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b)
+{
+    std::error_code error;
+    return std::filesystem::equivalent(a, b, error) && !error;
 }
 
 } // namespace stylos::cli

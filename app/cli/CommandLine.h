@@ -4,6 +4,7 @@
 // "--" ending the options; a repeated option keeps its last value. The commands read the values as
 // text and convert them here (number(), integer()) so that each bad value is named in one message.
 // Usage errors print one line and end the program with exit code 2, per the command-line contract.
+#include <filesystem>
 #include <map>
 #include <memory>
 #include <optional>
@@ -67,5 +68,11 @@ enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2 };
  * options)", and returns ExitUsage.
  */
 int usageError(const CommandLine& cl, const std::string& message);
+
+/** The extension of @p path in lower case, with its dot (".ply"); empty without one. */
+std::string lowerExtension(const std::filesystem::path& path);
+
+/** Whether @p a and @p b name the same existing file (links and other spellings resolved). */
+bool sameFile(const std::filesystem::path& a, const std::filesystem::path& b);
 
 } // namespace stylos::cli

@@ -22,13 +22,6 @@ namespace {
 
 namespace ann = core::annotation;
 
-std::string lowerExtension(const std::filesystem::path& path)
-{
-    std::string ext = path.extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return ext;
-}
-
 } // namespace
 
 int runExport(const std::vector<std::string>& args)

@@ -34,6 +34,7 @@ int runGenerate(const std::vector<std::string>& args)
     if (!kind) return usageError(cl, "unknown kind \"" + cl.positionals()[0] + "\" (drum, omphalos or fragment)");
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "generate needs -o OUT.ply");
+    if (lowerExtension(*output) != ".ply") return usageError(cl, "the output must be a .ply file, not \"" + *output + "\"");
 
     core::synth::SyntheticOptions options;
     long long seed = static_cast<long long>(options.seed), scans = options.scans, designSeed = 0;

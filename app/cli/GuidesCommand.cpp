@@ -38,6 +38,8 @@ bool parseRequest(CommandLine& cl, GuidesRequest& r, std::string& problem)
     r.input = cl.positionals()[0];
     r.output = cl.value("output").value_or("");
     if (r.output.empty()) return problem = "guides needs -o GUIDES.json", false;
+    if (lowerExtension(r.output) != ".json") return problem = "the output must be a .json file, not \"" + r.output + "\"", false;
+    if (sameFile(r.input, r.output)) return problem = "the output " + r.output + " would replace the input", false;
     r.json = cl.flag("json");
     if (const auto axis = cl.value("axis")) {
         core::unroll::Axis a;

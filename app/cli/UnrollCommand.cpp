@@ -19,9 +19,11 @@
 
 #include <chrono>
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 #include <numbers>
+#include <vector>
 
 namespace stylos::cli {
 
@@ -139,14 +141,23 @@ int runUnroll(const std::vector<std::string>& args)
     core::image::ImageWriteOptions write;
     write.format = r.bits;
     write.metadata = {{"stylos:shading", shadingKey}, {"stylos:source", r.input}};
+    // All or nothing: a write that fails takes back the files this run wrote before it.
+    std::vector<std::string> written;
+    const auto failAfter = [&](const core::Error& error) {
+        std::error_code ignored;
+        for (const std::string& file : written) std::filesystem::remove(file, ignored);
+        return fail(error);
+    };
     if (auto s = core::image::writeShadedImage(d.shaded, r.output, write); !s) return fail(s.error());
+    written.push_back(r.output);
     if (!r.heights.empty()) {
         core::image::ImageWriteOptions heights;
         heights.metadata = {{"stylos:source", r.input}};
-        if (auto s = core::image::writeHeightImage(d.field, r.heights, heights); !s) return fail(s.error());
+        if (auto s = core::image::writeHeightImage(d.field, r.heights, heights); !s) return failAfter(s.error());
+        written.push_back(r.heights);
     }
     const std::string sidecar = r.output + ".json";
-    if (auto s = d.map.writeSidecar(sidecar); !s) return fail(s.error());
+    if (auto s = d.map.writeSidecar(sidecar); !s) return failAfter(s.error());
     const double seconds = secondsSince(start);
 
     const unroll::Surface& surface = d.fit.surface;

@@ -2,19 +2,13 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <filesystem>
 #include <numbers>
 
 namespace stylos::cli {
 
 namespace {
-
-std::string lowerExtension(const std::string& path)
-{
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
 
 core::Error invalid(const std::string& problem) { return core::Error{core::ErrorCode::InvalidArgument, problem}; }
 
@@ -34,7 +28,8 @@ bool parseShading(CommandLine& cl, core::developpee::DeveloppeeOptions& options,
         return problem = cl.error(), false;
     if (directions < dev::DeveloppeeOptions::kMinDirections || directions > dev::DeveloppeeOptions::kMaxDirections)
         return problem = "--directions must be between 1 and 4096", false;
-    if (elevation < 0.0 || elevation > 90.0) return problem = "--light-elevation must be between 0 and 90 degrees", false;
+    if (!(elevation >= 0.0 && elevation <= 90.0)) return problem = "--light-elevation must be between 0 and 90 degrees", false;
+    if (!std::isfinite(azimuth)) return problem = "--light-azimuth must be a finite number of degrees", false;
     if (cl.value("directions") && options.shading != dev::Shading::Skydome)
         return problem = "--directions applies to --shading skydome only", false;
     if (cl.flag("raw") && options.shading != dev::Shading::Skydome)
@@ -59,6 +54,20 @@ core::Status checkImagePaths(const std::string& output, const std::string& heigh
         const std::string h = lowerExtension(heights);
         if (h != ".tif" && h != ".tiff" && h != ".exr")
             return invalid("--heights must name a .tif or .exr file (float), not \"" + heights + "\"");
+    }
+    // Checked before the work, so that a target that cannot be written is not found after another was.
+    namespace fs = std::filesystem;
+    std::error_code ignored;
+    const auto key = [&](const std::string& path) { return fs::weakly_canonical(fs::absolute(path), ignored); };
+    const std::string map = output + ".json";
+    if (!heights.empty() && (key(heights) == key(output) || key(heights) == key(map)))
+        return invalid("--heights " + heights + " is the image or its map; name another file");
+    for (const std::string& target : {output, map, heights}) {
+        if (target.empty()) continue;
+        if (fs::is_directory(target)) return invalid(target + " is a folder; name a file");
+        const fs::path folder = fs::path(target).parent_path();
+        if (!folder.empty() && !fs::is_directory(folder))
+            return invalid(target + ": the folder " + folder.string() + " does not exist");
     }
     return {};
 }

@@ -16,7 +16,8 @@ namespace stylos::cli {
  *  set on a usage error. */
 bool parseShading(CommandLine& cl, core::developpee::DeveloppeeOptions& options, std::string& problem);
 /** The image extensions the writer takes: .png/.tif/.tiff/.exr for the shading, .tif/.tiff/.exr for the
- *  heights, no 8/16-bit EXR. InvalidArgument with the problem otherwise. */
+ *  heights, no 8/16-bit EXR; three different files (the image, the heights, the image's .json map), none of
+ *  them a folder, each in an existing folder. InvalidArgument with the problem otherwise. */
 core::Status checkImagePaths(const std::string& output, const std::string& heights,
                              std::optional<core::image::SampleFormat> bits);
 

@@ -41,6 +41,16 @@ TEST(CliGenerate, UsageErrorsAndFailuresLeaveNothing)
     EXPECT_EQ(runCli({"generate", "drum", "-o", out, "--spacing", "abc"}).exitCode, 2);
     EXPECT_EQ(runCli({"generate", "cube", "-o", out}).exitCode, 2);
     EXPECT_EQ(runCli({"generate", "drum"}).exitCode, 2);
+    const auto las = runCli({"generate", "drum", "-o", (dir / "x.las").string()}); // it writes PLY only
+    EXPECT_EQ(las.exitCode, 2);
+    EXPECT_NE(las.err.find("the output must be a .ply file"), std::string::npos) << las.err;
+    // A folder in the way: the rename's own reason, and nothing left.
+    std::filesystem::create_directory(dir / "folder.ply");
+    const auto folder = runCli({"generate", "drum", "-o", (dir / "folder.ply").string(), "--spacing", "0.05"});
+    EXPECT_EQ(folder.exitCode, 1);
+    EXPECT_NE(folder.err.find("cannot move the finished file into place: Is a directory"), std::string::npos)
+        << folder.err;
+    std::filesystem::remove(dir / "folder.ply");
     const auto huge = runCli({"generate", "drum", "-o", out, "--spacing", "0.00001"});
     EXPECT_EQ(huge.exitCode, 1);
     EXPECT_NE(huge.err.find("x.ply"), std::string::npos) << huge.err;

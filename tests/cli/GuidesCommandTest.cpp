@@ -151,6 +151,8 @@ TEST(CliGuides, UsageErrorsExitTwo)
         {"guides", "-o", out},
         {"guides", "a.ply", "b.ply", "-o", out},
         {"guides", "drum.ply", "-o", out, "--bogus"},
+        {"guides", "drum.ply", "-o", (dir / "g.ply").string()}, // not a .json: never over a scan
+        {"guides", "drum.ply", "-o", "drum.ply"},
     };
     for (const auto& args : bad) {
         const auto run = runCli(args);
@@ -158,6 +160,9 @@ TEST(CliGuides, UsageErrorsExitTwo)
         EXPECT_FALSE(run.err.empty());
     }
     EXPECT_FALSE(fs::exists(out));
+    EXPECT_EQ(entriesIn(dir.path()), 0u);
+    const auto named = runCli({"guides", "scan.ply", "-o", "scan.ply"});
+    EXPECT_NE(named.err.find("the output must be a .json file, not \"scan.ply\""), std::string::npos) << named.err;
     EXPECT_EQ(runCli({"guides", "--help"}).exitCode, 0);
 }
 

@@ -116,6 +116,10 @@ TEST(CliUnroll, UsageErrorsExitTwo)
         {"unroll", scan, "-o", out, "--pixel-size", "-1"},
         {"unroll", scan, "-o", (dir / "x.exr").string(), "--bits", "16"},
         {"unroll", scan, "-o", out, "--heights", (dir / "h.png").string()},
+        {"unroll", scan, "-o", (dir / "x.tif").string(), "--heights", (dir / "x.tif").string()}, // the image itself
+        {"unroll", scan, "-o", out, "--heights", (dir / "no-folder" / "h.tif").string()},
+        {"unroll", scan, "-o", out, "--shading", "light", "--light-azimuth", "nan"},
+        {"unroll", scan, "-o", out, "--shading", "light", "--light-elevation", "nan"},
     };
     for (const auto& args : bad) {
         const auto run = runCli(args);
@@ -123,6 +127,23 @@ TEST(CliUnroll, UsageErrorsExitTwo)
         EXPECT_NE(run.err.find("stylos-cli unroll"), std::string::npos) << run.err;
     }
     EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
+    EXPECT_NE(runCli({"unroll", scan, "-o", out, "--shading", "light", "--light-azimuth", "nan"})
+                  .err.find("--light-azimuth must be a finite number of degrees"),
+              std::string::npos);
+
+    // A target that cannot be written is found before the work: nothing written, not the image without its map.
+    fs::create_directory(out + ".json");
+    fs::create_directory(dir / "h.tif");
+    for (const auto& args : std::vector<std::vector<std::string>>{
+             {"unroll", scan, "-o", out},
+             {"unroll", scan, "-o", (dir / "y.png").string(), "--heights", (dir / "h.tif").string()}}) {
+        const auto run = runCli(args);
+        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_NE(run.err.find("is a folder; name a file"), std::string::npos) << run.err;
+    }
+    EXPECT_FALSE(fs::exists(out));
+    EXPECT_FALSE(fs::exists(dir / "y.png"));
+    EXPECT_EQ(entriesIn(dir.path()), 4u); // the scan, its truth, the two folders
 }
 
 TEST(CliUnroll, WithoutTheImageModuleItFailsNamingTheModuleAndWritesNothing)

@@ -120,6 +120,17 @@ TEST(PlateSpec, LayoutFileRoundTripAndErrorsByKey)
     bad = s.toJson();
     bad.erase("panels");
     EXPECT_FALSE(PlateSpec::fromJson(bad, "p.json").ok());
+    // Keys it does not know, misspelt ones first, are named rather than left at the defaults.
+    bad = s.toJson();
+    bad["pagee"] = "A4";
+    r = PlateSpec::fromJson(bad, "p.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message, "p.json: pagee: is not a key of a plate layout (a misspelling?)");
+    bad = s.toJson();
+    bad["panels"][1]["scael"] = 5;
+    r = PlateSpec::fromJson(bad, "p.json");
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message, "p.json: panels[1].scael: is not a key of a plate layout (a misspelling?)");
     EXPECT_EQ(PlateSpec::read("/no/such/plate.json").error().code, stylos::core::ErrorCode::NotFound);
 }
 
@@ -192,6 +203,15 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     const auto crowded = layoutPlate(s, std::span(&tall, 1), 0, 40);
     ASSERT_FALSE(crowded.ok());
     EXPECT_NE(crowded.error().message.find("of height"), std::string::npos) << crowded.error().message;
+    // A page too small for the panel's labels alone: no scale to name, only a larger page.
+    s.page = {10, 10};
+    s.pageName = "10x10";
+    s.marginMm = 0;
+    const std::array<double, 2> any{110, 112};
+    const auto tiny = layoutPlate(s, std::span(&any, 1), 0, 0);
+    ASSERT_FALSE(tiny.ok());
+    EXPECT_NE(tiny.error().message.find("no scale fits this page; use a larger page"), std::string::npos)
+        << tiny.error().message;
 }
 
 TEST(PlateSpec, TheProjectKeepsItsPlate)

@@ -198,7 +198,7 @@ Result<std::uint64_t> exportLeafLas(const octree::PackedOctree& octree, const st
     if (!out) return fail("writing failed (disk full?)");
     std::error_code ec;
     fs::rename(partial, output, ec);
-    if (ec) return fail("cannot rename the finished file into place");
+    if (ec) return fail("cannot rename the finished file into place: " + ec.message());
     if (progress) progress->update(1.0);
     return leaves;
 }

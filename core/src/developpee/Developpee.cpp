@@ -142,7 +142,8 @@ Status DeveloppeeOptions::check(const std::string& source) const
     if (pixelSize && !(std::isfinite(*pixelSize) && *pixelSize > 0.0))
         return invalid("the pixel size must be a positive length in metres");
     if (cutAngle && !std::isfinite(*cutAngle)) return invalid("the cut angle must be a finite number of radians");
-    if (!std::isfinite(light.azimuth) || !(light.elevation >= 0.0 && light.elevation <= 0.5 * std::numbers::pi))
+    if (!std::isfinite(light.azimuth)) return invalid("the light azimuth must be a finite number of degrees");
+    if (!(light.elevation >= 0.0 && light.elevation <= 0.5 * std::numbers::pi))
         return invalid("the light elevation must be between 0 and 90 degrees");
     if (axis && (!axis->point.allFinite() || !axis->direction.allFinite() || axis->direction.norm() < 1e-12))
         return invalid("the axis needs a finite point and a non-zero direction");

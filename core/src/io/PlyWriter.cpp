@@ -163,7 +163,8 @@ Status PlyWriter::finish()
     std::error_code ec;
     fs::rename(m_temporary, m_target, ec);
     if (ec) {
-        fs::remove(m_temporary, ec);
+        std::error_code ignored; // the rename's reason is the one to report
+        fs::remove(m_temporary, ignored);
         return failure("cannot move the finished file into place: " + ec.message());
     }
     m_finished = true;

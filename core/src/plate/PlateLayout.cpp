@@ -72,10 +72,15 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
         const double fixedH = needH - s[1];
         const double factor = std::max(s[0] / area.w, s[1] / std::max(1e-9, area.h - fixedH));
         const std::string name = letters ? std::string(1, char('A' + i)) + " " : std::string();
-        return Error{ErrorCode::InvalidArgument,
-                     "panel " + name + "(" + panelViewName(p.view) + ", " + scaleText(p.scale) + ") is " + mm(s[0]) +
-                         " × " + mm(s[1]) + " mm; " + pageText + ": use " + scaleText(std::ceil(p.scale * factor)) +
-                         " or smaller, or a larger page"};
+        const double smaller = std::ceil(p.scale * factor);
+        // Past 1:1,000,000 (the largest scale a panel takes), or with no height left beside the panel's labels,
+        // no scale fits: only a larger page does.
+        const std::string remedy = area.h - fixedH > 1e-9 && smaller <= 1e6
+                                       ? "use " + scaleText(smaller) + " or smaller, or a larger page"
+                                       : "no scale fits this page; use a larger page";
+        return Error{ErrorCode::InvalidArgument, "panel " + name + "(" + panelViewName(p.view) + ", " +
+                                                     scaleText(p.scale) + ") is " + mm(s[0]) + " × " + mm(s[1]) +
+                                                     " mm; " + pageText + ": " + remedy};
     }
 
     // Rows of stacked panels.

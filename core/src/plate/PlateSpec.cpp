@@ -13,6 +13,8 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <initializer_list>
+#include <optional>
 #include <sstream>
 
 namespace stylos::core::plate {
@@ -136,6 +138,18 @@ nlohmann::json PlateSpec::toJson() const
 Result<PlateSpec> PlateSpec::fromJson(const nlohmann::json& json, const std::string& source)
 {
     if (!json.is_object()) return malformed(source, {}, "not a JSON object");
+    // A key this version does not know is refused, named: a misspelt "pagee" or "scael" must not quietly
+    // give a plate at the defaults.
+    const auto unknownKey = [&](const nlohmann::json& obj, const std::string& at,
+                                std::initializer_list<const char*> known) -> std::optional<Error> {
+        for (auto it = obj.begin(); it != obj.end(); ++it)
+            if (std::none_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }))
+                return malformed(source, at + it.key(), "is not a key of a plate layout (a misspelling?)");
+        return std::nullopt;
+    };
+    if (auto e = unknownKey(json, "", {"format", "version", "page", "landscape", "margin_mm", "dpi", "bits", "caption",
+                                       "legend", "panels"}))
+        return *e;
     PlateSpec s;
     if (const auto f = json.find("format"); f != json.end() && (!f->is_string() || f->get<std::string>() != kFormat))
         return malformed(source, "format", std::string("must be \"") + kFormat + "\"");
@@ -191,6 +205,8 @@ Result<PlateSpec> PlateSpec::fromJson(const nlohmann::json& json, const std::str
         const nlohmann::json& p = (*panels)[i];
         const std::string at = "panels[" + std::to_string(i) + "].";
         if (!p.is_object()) return malformed(source, at.substr(0, at.size() - 1), "not an object");
+        if (auto e = unknownKey(p, at, {"view", "scale", "shading", "layer", "hatches", "fragment", "at_mm", "camera"}))
+            return *e;
         PanelSpec panel;
         const auto view = p.find("view");
         const auto v = view != p.end() && view->is_string() ? panelViewFromName(view->get<std::string>()) : std::nullopt;
