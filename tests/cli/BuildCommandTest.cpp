@@ -286,3 +286,17 @@ TEST(CliBuild, CtrlCCancelsCleanly)
     EXPECT_NE(std::string(err.begin(), err.end()).find("cancel"), std::string::npos);
     EXPECT_EQ(entriesIn(dir.path()), 0u);
 }
+
+TEST(CliBuild, AnEmptyScanIsNamedNotItsTemporaryNormals)
+{
+    // ZeroPoints.e57 reads (no normals, so they are estimated into a temporary file) and then has nothing to
+    // build: the message names the file the user gave, never the temporary.
+    SKIP_WITHOUT_SHARED_DATA();
+    TempDir dir;
+    const auto input = (stylos::test::sharedData() / "formats" / "e57" / "ZeroPoints.e57").string();
+    const auto out = (dir / "z.poct").string();
+    const auto run = runCli({"build", input, "-o", out});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.err, "stylos-cli: " + input + ": no points to build an octree from\n");
+    EXPECT_EQ(entriesIn(dir.path()), 0u);
+}

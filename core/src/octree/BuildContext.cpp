@@ -7,16 +7,17 @@
 
 namespace stylos::core::octree {
 
-std::string formatBytes(std::uint64_t bytes)
+std::string formatBytes(std::uint64_t bytes, bool up)
 {
     char text[64];
+    const auto round = [up](double x) { return up ? std::ceil(x) : std::floor(x); };
     const double mib = double(bytes) / double(1u << 20);
     if (bytes >= (std::uint64_t(10) << 20))
-        std::snprintf(text, sizeof text, "%.0f MiB", std::ceil(mib));
+        std::snprintf(text, sizeof text, "%.0f MiB", round(mib));
     else if (bytes >= (std::uint64_t(1) << 20))
-        std::snprintf(text, sizeof text, "%.1f MiB", std::ceil(mib * 10) / 10);
+        std::snprintf(text, sizeof text, "%.1f MiB", round(mib * 10) / 10);
     else
-        std::snprintf(text, sizeof text, "%.0f KiB", std::ceil(double(bytes) / 1024));
+        std::snprintf(text, sizeof text, "%.0f KiB", round(double(bytes) / 1024));
     return text;
 }
 
@@ -127,7 +128,7 @@ Error BuildContext::outOfBudget(std::uint64_t neededBytes, const std::string& wh
 {
     return Error::at(ErrorCode::OutOfBudget, m_name, "",
                      "the octree needs " + formatBytes(neededBytes) + " " + when + " but the memory limit " +
-                         "(--memory-limit) is " + formatBytes(m_options.memoryLimit));
+                         "(--memory-limit) is " + formatBytes(m_options.memoryLimit, false));
 }
 
 Error BuildContext::inputChanged(const std::string& what) const

@@ -61,7 +61,8 @@ private:
 /** @brief InvalidArgument for a depth out of range, zero threads or a bad root box. */
 Status checkBuildOptions(const BuildOptions& options);
 
-/** @brief "812 MiB", "3.5 MiB", "12 KiB" — sizes in messages. */
-std::string formatBytes(std::uint64_t bytes);
+/** @brief "812 MiB", "3.5 MiB", "12 KiB" — sizes in messages, rounded up (a need), or down (@p up false: a
+ *         limit), so that a need above a limit never reads as the same figure. */
+std::string formatBytes(std::uint64_t bytes, bool up = true);
 
 } // namespace stylos::core::octree

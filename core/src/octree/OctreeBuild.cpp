@@ -114,7 +114,7 @@ Result<BuildReport> buildOctree(const PointSourceFactory& open, const fs::path& 
                          "the octree needs " + formatBytes(report.constructionBytes + 4 * leaves) +
                              " with its leaves' spacing layer (" + std::to_string(leaves) +
                              " leaves × 4 bytes) but the memory limit (--memory-limit) is " +
-                             formatBytes(options.memoryLimit));
+                             formatBytes(options.memoryLimit, false));
     // The tree is pulled as it is written (no walk of its own for the writer); meanwhile another thread counts
     // what the spacing layer needs of its shape, which the pull does not change; the layer is finished once
     // the normals are pulled, after the cells.
@@ -167,7 +167,13 @@ Result<BuildReport> buildOctreeFile(const fs::path& input, const fs::path& outpu
 
     SubProgress building(progress, 0.4, 1.0);
     auto report = buildOctree([withNormals] { return io::openPointReader(withNormals); }, output, options, &building);
-    if (!report.ok()) return report.error();
+    if (!report.ok()) {
+        // The build read the temporary file of estimated normals: its errors name the input the user gave.
+        Error error = report.error();
+        const std::string temporary = withNormals.string();
+        if (error.message.rfind(temporary, 0) == 0) error.message = input.string() + error.message.substr(temporary.size());
+        return error;
+    }
     report->normalsEstimated = true;
     report->skippedPoints = estimated->skippedPoints;
     report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
