@@ -143,7 +143,7 @@ int runAo(const std::vector<std::string>& args)
                     {"upper-hemisphere", "", "only directions above the world's horizon (z > 0), as CloudCompare's PCV"},
                     {"cosine", "", "weight each direction by the cosine to the normal (irradiance)"},
                     {"bias", "B", "self-shadowing tolerance in cell edges: with leaf receivers beyond the occluder cube's reach along the leaf's normal (default 0.5); with cell receivers above the cell's tangent plane (default 1)"},
-                    {"smoothing", "M", "with leaf receivers: each leaf's value averaged with its neighbours' on the same surface within M metres (normals within 37°; default 1.5 edges of the level's cells; 0: the raw values)"},
+                    {"smoothing", "M", "with leaf receivers: each leaf's value averaged with its neighbours' on the same surface within M metres (normals within 37°; default 1.5 edges of the level's cells, at most 8 sampling spacings; 0: the raw values)"},
                     {"receivers", "WHERE", "leaves (default: each leaf at its own centre and normal, against the level's cells; depthmap) or cells (each cell's value spread to its leaves)"},
                     {"one-sided", "", "leaves: measure only the side the normal points to (default: both sides, the one that sees more, so a normal turned into the object does not read dark)"},
                     {"depth", "N", "point-file input: leaf level of the octree built first, 1..21 (default 12)"},

@@ -311,7 +311,8 @@ TEST(CliAo, LeafReceiversByDefaultGiveLeavesTheirOwnValues)
 
 TEST(CliAo, SmoothingIsReportedAndZeroGivesTheRawLeafValues)
 {
-    // The default smooths each leaf's value with its neighbours' within 1.5 edges of the level's cells; --smoothing
+    // The default smooths each leaf's value with its neighbours' within 1.5 edges of the level's cells (at most 8
+    // sampling spacings); --smoothing
     // gives the radius in metres, 0 the raw values. On the drum at level 3 the smoothed values vary less between neighbouring leaves.
     TempDir dir;
     const auto poct = drumOctree(dir);
@@ -325,8 +326,18 @@ TEST(CliAo, SmoothingIsReportedAndZeroGivesTheRawLeafValues)
     const auto octree = openPoct(poct);
     const auto cells = stylos::core::ao::cellsAtLevel(octree, 3);
     ASSERT_TRUE(cells.ok());
-    EXPECT_DOUBLE_EQ(ja["smoothing"].get<double>(), 1.5 * cells->edge); // the radius used, metres
+    // The radius used, metres: 1.5 edges of level 3's cells (0.22 m) would span a sixth of the drum, so the
+    // default stops at 8 sampling spacings (the generator's 2 cm; the leaves' median spacing is within 10 % of it).
+    EXPECT_LT(ja["smoothing"].get<double>(), 1.5 * cells->edge);
+    EXPECT_NEAR(ja["smoothing"].get<double>(), 8 * 0.02, 8 * 0.002);
     EXPECT_EQ(jb["smoothing"], 0.0);
+    // At level 5 the cells' 1.5 edges are within 8 spacings: they stand.
+    const auto fine = runCli({"ao", poct.string(), "-o", (dir / "fine.ply").string(), "--level", "5", "--directions",
+                              "8", "--json"});
+    ASSERT_EQ(fine.exitCode, 0) << fine.err;
+    const auto cells5 = stylos::core::ao::cellsAtLevel(octree, 5);
+    ASSERT_TRUE(cells5.ok());
+    EXPECT_DOUBLE_EQ(nlohmann::json::parse(fine.out)["smoothing"].get<double>(), 1.5 * cells5->edge);
     // A radius given in metres is used as given.
     const auto c = runCli({"ao", poct.string(), "-o", (dir / "c.ply").string(), "--level", "3", "--directions", "32",
                            "--json", "--smoothing", "0.05"});

@@ -7,11 +7,37 @@
 #include "stylos/core/ao/SkydomeSmoothing.h"
 #include "stylos/core/util/SubProgress.h"
 
+#include <algorithm>
+#include <cstdint>
 #include <numeric>
 #include <string>
 #include <vector>
 
 namespace stylos::core::ao {
+
+namespace {
+
+/**
+ * The default smoothing radius, metres: @p edges of the level's cells, at most MaxDefaultSmoothingSpacings
+ * median leaf spacings (a sample of 1001 leaves). The spacings are looked at only where the cap could apply: a
+ * leaf's spacing is at least its cell's edge, so below that many leaf cell edges the radius stands.
+ */
+double defaultSmoothingRadius(const octree::PackedOctree& octree, const AoCells& cells, double edges)
+{
+    const double radius = edges * cells.edge;
+    const double leafEdge = octree.box().size / double(std::uint64_t(1) << octree.depth());
+    if (radius <= MaxDefaultSmoothingSpacings * leafEdge) return radius;
+    const std::uint64_t leaves = octree.cellCount(octree.depth());
+    if (leaves == 0) return radius;
+    std::vector<float> spacings;
+    const std::uint64_t samples = std::min<std::uint64_t>(leaves, 1001);
+    for (std::uint64_t k = 0; k < samples; ++k) spacings.push_back(octree.leafSpacing(k * leaves / samples));
+    std::nth_element(spacings.begin(), spacings.begin() + std::ptrdiff_t(samples / 2), spacings.end());
+    const double median = spacings[samples / 2];
+    return median > 0.0 ? std::min(radius, MaxDefaultSmoothingSpacings * median) : radius;
+}
+
+} // namespace
 
 Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree, const SkydomeLayerOptions& options,
                                               ProgressSink* progress, SkydomeLayerReport* out)
@@ -51,7 +77,8 @@ Result<std::vector<float>> computeLeafSkydome(const octree::PackedOctree& octree
                 if (!values) return values.error();
                 perLeaf = std::move(values).value();
             }
-            const double radius = options.smoothingRadius.value_or(options.smoothing * cells.edge); // metres
+            const double radius = options.smoothingRadius ? *options.smoothingRadius
+                                                          : defaultSmoothingRadius(octree, cells, options.smoothing);
             if (!(radius >= 0.0) || radius > MaxSmoothingEdges * cells.edge)
                 return Error::at(ErrorCode::InvalidArgument, octree.path().string(), {},
                                  "the smoothing radius " + std::to_string(radius) + " m is more than " +

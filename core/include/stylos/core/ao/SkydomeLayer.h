@@ -37,6 +37,12 @@ enum class SkydomeOutput {
  *  (and its cost grows with the cube of the radius). */
 inline constexpr double MaxSmoothingEdges = 16.0;
 
+/** The default smoothing's widest radius in sampling spacings (the leaves' median spacing): at a coarse --level
+ *  the cells' 1.5 edges would span much of the object, and every leaf would be averaged with most others (the
+ *  cost, receivers × neighbours, then grows with the square of the leaves). At the closed-surface level the
+ *  default is 2–3 spacings, well within it. */
+inline constexpr double MaxDefaultSmoothingSpacings = 8.0;
+
 struct SkydomeLayerOptions {
     AoOptions ao;              ///< directions, method, bias, weighting, threads
     std::optional<int> level;  ///< the level of the cells; default closedSurfaceLevel(octree)
@@ -45,7 +51,7 @@ struct SkydomeLayerOptions {
     bool leafReceivers = true;
     /** With leaf receivers: the values smoothed over neighbouring leaves of the same surface (SkydomeSmoothing.h)
      *  within this many edges of the level's cells (at the closed-surface level, one to two sampling
-     *  spacings); 0: the raw per-leaf values. */
+     *  spacings), at most MaxDefaultSmoothingSpacings sampling spacings; 0: the raw per-leaf values. */
     double smoothing = 1.5;
     /** The smoothing's radius in metres instead (0: off); unset: `smoothing` edges of the level's cells. Either
      *  way at most MaxSmoothingEdges edges (InvalidArgument beyond). */
