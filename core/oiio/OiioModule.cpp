@@ -5,6 +5,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 
 namespace stylos::core::image {
@@ -21,9 +22,13 @@ OIIO::TypeDesc typeOf(ImageSample sample)
     return OIIO::TypeDesc::UNKNOWN;
 }
 
-/** @p message, with the system's reason for @p savedErrno when it is not in it already. */
+/** @p message on one line (the library's lines joined by "; "), with the system's reason for @p savedErrno when it
+ *  is not in it already. */
 std::string withReason(std::string message, int savedErrno)
 {
+    while (!message.empty() && (message.back() == '\n' || message.back() == ' ')) message.pop_back();
+    for (std::size_t at = message.find('\n'); at != std::string::npos; at = message.find('\n', at))
+        message.replace(at, 1, "; ");
     if (message.empty()) message = "OpenImageIO reported an error";
     if (savedErrno != 0) {
         const std::string reason = std::strerror(savedErrno);
@@ -137,11 +142,17 @@ std::unique_ptr<ImageFileWriter> createWriter(const std::string& path, std::stri
 
 std::unique_ptr<ImageFileReader> openReader(const std::string& path, std::string* error)
 {
-    errno = 0;
+    // The system's reason only where the file itself cannot be read: the library's own attempts (plugin
+    // folders, other formats) leave errno set to reasons that are not the file's.
+    if (std::FILE* file = std::fopen(path.c_str(), "rb")) {
+        std::fclose(file);
+    } else {
+        if (error) *error = "cannot open " + path + ": " + std::strerror(errno);
+        return nullptr;
+    }
     auto in = OIIO::ImageInput::open(path);
     if (!in) {
-        const int savedErrno = errno; // before geterror(), which may set it
-        if (error) *error = withReason(OIIO::geterror(), savedErrno);
+        if (error) *error = withReason(OIIO::geterror(), 0);
         return nullptr;
     }
     return std::make_unique<Reader>(std::move(in));

@@ -5,6 +5,8 @@
 
 #include <gtest/gtest.h>
 
+#include <fstream>
+
 #include <dlfcn.h>
 
 #include <array>
@@ -70,7 +72,17 @@ TEST(ImageLibrary, ErrorsAreTextNamingTheProblem)
     EXPECT_FALSE(problem.empty());
     problem.clear();
     EXPECT_FALSE((*library)->openReader((dir / "missing.png").string(), &problem));
-    EXPECT_NE(problem.find("missing.png"), std::string::npos) << problem;
+    EXPECT_NE(problem.find("missing.png: No such file or directory"), std::string::npos) << problem;
+    // A file that opens but is not an image: the library's reason alone, on one line (no stale system reason
+    // from the library's own attempts elsewhere).
+    {
+        std::ofstream((dir / "empty.png").string());
+    }
+    problem.clear();
+    EXPECT_FALSE((*library)->openReader((dir / "empty.png").string(), &problem));
+    EXPECT_FALSE(problem.empty());
+    EXPECT_EQ(problem.find('\n'), std::string::npos) << problem;
+    EXPECT_EQ(problem.find(" ("), std::string::npos) << problem;
 
     ImageHeader header;
     header.width = 2;
