@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cmath>
 #include <iostream>
 
 namespace stylos::cli {
@@ -132,6 +133,10 @@ bool CommandLine::number(const std::string& name, double& out)
     const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
     if (ec != std::errc() || end != v->data() + v->size() || v->empty()) {
         m_error = "--" + name + " expects a number, not \"" + *v + "\"";
+        return false;
+    }
+    if (!std::isfinite(out)) { // no option takes nan or inf: refused here, as a usage error, once for all
+        m_error = "--" + name + " expects a finite number, not \"" + *v + "\"";
         return false;
     }
     return true;

@@ -44,7 +44,7 @@ public:
     bool flag(const std::string& name) const { return m_values.count(name) > 0; }
     std::optional<std::string> value(const std::string& name) const;
 
-    /** Typed values; false with error() set when the text is not a valid number. */
+    /** Typed values; false with error() set when the text is not a valid number (or, for number(), not finite). */
     bool number(const std::string& name, double& out);
     bool integer(const std::string& name, long long& out);
 

@@ -128,7 +128,9 @@ TEST(CliUnroll, UsageErrorsExitTwo)
     }
     EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
     EXPECT_NE(runCli({"unroll", scan, "-o", out, "--shading", "light", "--light-azimuth", "nan"})
-                  .err.find("--light-azimuth must be a finite number of degrees"),
+                  .err.find("--light-azimuth expects a finite number, not \"nan\""),
+              std::string::npos);
+    EXPECT_NE(runCli({"unroll", scan, "-o", out, "--pixel-size", "inf"}).err.find("--pixel-size expects a finite number"),
               std::string::npos);
 
     // A target that cannot be written is found before the work: nothing written, not the image without its map.
