@@ -98,3 +98,34 @@ TEST(PointFileFormat, EveryListedExtensionReachesItsReader)
               std::string::npos)
         << octree.error().message;
 }
+
+TEST(PointFileFormat, OptionsForOtherFormatsAreRefusedNotIgnored)
+{
+    stylos::test::TempDir dir;
+    const auto ply = dir / "p.ply";
+    stylos::test::writeText(ply, "ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\n"
+                                 "property float z\nend_header\n1 2 3\n");
+    const auto xyz = dir / "p.xyz";
+    stylos::test::writeText(xyz, "1 2 3\n");
+    ReadOptions scan;
+    scan.scan = 1;
+    for (const auto& path : {ply, xyz}) {
+        const auto r = openPointReader(path, scan);
+        ASSERT_FALSE(r.ok()) << path;
+        EXPECT_EQ(r.error().code, ErrorCode::InvalidArgument);
+        EXPECT_EQ(r.error().message,
+                  path.string() + ": a scan number applies to E57 and PTX files (several scans); this file has one");
+    }
+    ReadOptions columns;
+    columns.columns = "x y z";
+    const auto r = openPointReader(ply, columns);
+    ASSERT_FALSE(r.ok());
+    EXPECT_EQ(r.error().message,
+              ply.string() + ": a column layout applies to text files (XYZ, PTS, TXT); this file names its own fields");
+    // Where it applies, it is read.
+    auto text = openPointReader(xyz, columns);
+    ASSERT_TRUE(text.ok()) << text.error().message;
+    const auto points = stylos::test::readAllPoints(**text, 16);
+    ASSERT_TRUE(points.ok());
+    EXPECT_EQ(points->positions, (std::vector<double>{1, 2, 3}));
+}

@@ -136,6 +136,13 @@ Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const
                              "not an E57 file: it does not start with the signature \"ASTM-E57\"");
     }
 
+    // Options that only some formats read are refused elsewhere rather than quietly ignored.
+    if (options.scan && format != PointFormat::E57 && format != PointFormat::Ptx)
+        return Error::at(ErrorCode::InvalidArgument, path.string(), "",
+                         "a scan number applies to E57 and PTX files (several scans); this file has one");
+    if (!options.columns.empty() && format != PointFormat::Text)
+        return Error::at(ErrorCode::InvalidArgument, path.string(), "",
+                         "a column layout applies to text files (XYZ, PTS, TXT); this file names its own fields");
     switch (format) {
     case PointFormat::Ply: return PlyReader::open(path);
     case PointFormat::Las: return LasReader::open(path);
