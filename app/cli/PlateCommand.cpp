@@ -158,6 +158,9 @@ int runPlate(const std::vector<std::string>& args)
     const std::string output = cl.value("output").value_or("");
     if (output.empty()) return usageError(cl, "plate needs -o OUT.pdf|svg|tif|png");
     if (!plate::plateFormatOf(output)) return usageError(cl, "the output " + output + " must end in .pdf, .svg, .tif or .png");
+    if (const auto format = plate::plateFormatOf(output);
+        cl.value("bits") && (*format == plate::PlateFormat::Pdf || *format == plate::PlateFormat::Svg))
+        return usageError(cl, "--bits applies to TIFF and PNG plates; a PDF or SVG keeps its images as they are drawn");
     long long threads = 0;
     if (!cl.integer("threads", threads) || threads < 0 || threads > 1024) return usageError(cl, "--threads must be 0..1024");
 

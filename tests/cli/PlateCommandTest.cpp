@@ -93,6 +93,9 @@ TEST(PlateCommand, UsageErrorsAndBadInput)
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", (dir / "p.jpg").string(), "--scale", "10"}).exitCode, 2);
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--dpi", "5"}).exitCode, 2);
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--view", "front", "--shading", "light"}).exitCode, 2);
+    const auto bits = runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--bits", "16"}); // a PDF: not taken
+    EXPECT_EQ(bits.exitCode, 2);
+    EXPECT_NE(bits.err.find("--bits applies to TIFF and PNG plates"), std::string::npos) << bits.err;
 
     auto missing = runCli({"plate", (dir / "none.ply").string(), "-o", out, "--scale", "10"});
     EXPECT_EQ(missing.exitCode, 1);
