@@ -30,6 +30,7 @@ core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const c
                                   captionHeightMm(QString::fromStdString(spec.caption), width));
     if (!layout) return layout.error();
     plate.layout = std::move(layout).value();
+    for (std::size_t i = 0; i < plate.panels.size(); ++i) plate.layout.panels[i].rulerDegrees = plate.panels[i].arcDegrees;
     return plate;
 }
 

@@ -113,15 +113,19 @@ void drawRuler(QPainter& p, const cp::PanelBox& box, const QString& axis)
     const double top = r.y() + 0.8;
     p.setPen(pen(kThinMm));
     p.drawLine(QPointF(r.x(), top), QPointF(r.right(), top));
-    const int labelEvery = r.width() >= 120 ? 30 : (r.width() >= 50 ? 90 : 180);
-    for (int deg = 0; deg <= 360; deg += 10) {
-        const double x = r.x() + r.width() * deg / 360.0;
+    // The whole turn, or a fragment's arc: degrees from the image's left edge. Labels about every 10 mm or more.
+    const double degrees = std::clamp(box.rulerDegrees, 1.0, 360.0);
+    const double perTurn = r.width() * 360.0 / degrees; // mm the whole turn would take
+    const int labelEvery = degrees < 360.0 && perTurn >= 360 ? 10 : perTurn >= 120 ? 30 : (perTurn >= 50 ? 90 : 180);
+    for (int deg = 0; deg <= int(degrees + 1e-9); deg += 10) {
+        const double x = r.x() + r.width() * deg / degrees;
         const bool major = deg % 30 == 0;
         p.drawLine(QPointF(x, top), QPointF(x, top + (major ? 1.8 : 1.0)));
         if (deg % labelEvery == 0)
             text(p, QPointF(x, top + 4.6), QStringLiteral("%1°").arg(deg), 6, false, false,
                  deg == 0 ? Qt::AlignLeft : (deg == 360 ? Qt::AlignRight : Qt::AlignHCenter));
     }
+    if (degrees < 360.0) p.drawLine(QPointF(r.right(), top), QPointF(r.right(), top + 1.0)); // the arc's end
     // The axis: an arrow up the left edge of the image.
     const QRectF img(box.image.x, box.image.y, box.image.w, box.image.h);
     const double len = std::min(12.0, img.height());

@@ -229,6 +229,62 @@ TEST(Unroller, DefaultCutIsInTheMiddleOfTheGap)
     EXPECT_NEAR(t.report.cutAngle * 180.0 / kPi, 210.0, 0.5);
 }
 
+TEST(Unroller, AFragmentsImageIsItsArcWithADegreeEachSide)
+{
+    // Points on [300°, 360°) ∪ [0°, 40°): a 100° fragment across the reference direction. With the default cut
+    // the image spans the arc from 300° − 1° over 102°, its left edge the cut, every point inside it.
+    const double R = 0.5, pixel = 0.005;
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k < 400; ++k) { // every 0.25°
+        const double degrees = 300.0 + k * 0.25;
+        for (int j = 0; j <= 20; ++j) points.push_back(onCylinder(R, degrees * kPi / 180.0, 0.01 * j, 0.0));
+    }
+    UnrollOptions options = given(pixel);
+    options.cutAngle.reset();
+    const Unrolled u = unrolled(cloudOf(points), zCylinder(R), options);
+    EXPECT_NEAR(u.report.cutAngle * 180.0 / kPi, 299.0, 1e-9);
+    EXPECT_NEAR(u.report.arc * 180.0 / kPi, 102.0, 1e-9);
+    EXPECT_EQ(u.field.width(), int(std::ceil(R * u.report.arc / pixel))); // 179, not the turn's 629
+    EXPECT_EQ(u.map.width(), u.field.width());
+    // 1° (1.75 pixels) empty each side, then the points: the first and last point columns as pixelOf() gives.
+    const auto first = u.map.pixelOf(onCylinder(R, 300.0 * kPi / 180.0, 0.1, 0.0));
+    const auto last = u.map.pixelOf(onCylinder(R, (300.0 + 399 * 0.25) * kPi / 180.0, 0.1, 0.0));
+    ASSERT_TRUE(first && last);
+    EXPECT_NEAR(first->column, R * kPi / 180.0 / pixel, 1e-6);
+    EXPECT_LT(last->column, double(u.field.width()));
+    for (int r = 0; r < u.field.height(); ++r) EXPECT_FALSE(u.field.hasHeight(0, r)) << r;
+    const auto columnHasHeights = [&](int c) {
+        int n = 0;
+        for (int r = 0; r < u.field.height(); ++r) n += u.field.hasHeight(c, r);
+        return n;
+    };
+    EXPECT_GT(columnHasHeights(int(first->column)), 15);
+    EXPECT_GT(columnHasHeights(int(last->column)), 15);
+    EXPECT_EQ(columnHasHeights(u.field.width() - 1), 0);
+    EXPECT_EQ(u.report.pointsHidden, 0u); // every point landed
+    // Asked not to crop, or given a cut: the whole turn.
+    options.cropToPoints = false;
+    EXPECT_EQ(unrolled(cloudOf(points), zCylinder(R), options).field.width(), int(std::ceil(2 * kPi * R / pixel)));
+    UnrollOptions cut = given(pixel, 299.0 * kPi / 180.0);
+    const Unrolled c = unrolled(cloudOf(points), zCylinder(R), cut);
+    EXPECT_EQ(c.field.width(), int(std::ceil(2 * kPi * R / pixel)));
+    EXPECT_DOUBLE_EQ(c.report.arc, 2 * kPi);
+}
+
+TEST(Unroller, ADrumWithAGapUnderHalfTheTurnKeepsTheWholeTurn)
+{
+    // 170° empty (under half the turn): a broken drum, unrolled whole with the seam in its gap.
+    const double R = 0.5, pixel = 0.005;
+    std::vector<Eigen::Vector3d> points;
+    for (int k = 0; k < 760; ++k) // 0° … 190°
+        for (int j = 0; j <= 20; ++j) points.push_back(onCylinder(R, k * 0.25 * kPi / 180.0, 0.01 * j, 0.0));
+    UnrollOptions options = given(pixel);
+    options.cutAngle.reset();
+    const Unrolled u = unrolled(cloudOf(points), zCylinder(R), options);
+    EXPECT_DOUBLE_EQ(u.report.arc, 2 * kPi);
+    EXPECT_EQ(u.field.width(), int(std::ceil(2 * kPi * R / pixel)));
+}
+
 TEST(Unroller, PointsOutsideTheBandAreDroppedAndCounted)
 {
     const double R = 0.5; // default band 0.15 × 0.5 = 75 mm

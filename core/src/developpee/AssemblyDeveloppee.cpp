@@ -38,9 +38,12 @@ Result<AssemblyDeveloppee> computeAssemblyDeveloppee(const cloud::PointCloud& dr
     for (const AssemblyPiece& p : pieces)
         if (!p.cloud || p.id == 0) return Error::at(ErrorCode::InvalidArgument, source, {}, "a piece without a cloud or an id");
 
-    // (1) The drum alone: its pixel size and cut.
+    // (1) The drum alone: its pixel size and cut, on the whole turn (a drum broken over half of it keeps the room
+    // where its pieces dock).
     SubProgress first(progress, 0.0, 0.45);
-    auto alone = computeDeveloppee(drum, options, progress ? &first : nullptr);
+    DeveloppeeOptions wholeTurn = options;
+    wholeTurn.cropToPoints = false;
+    auto alone = computeDeveloppee(drum, wholeTurn, progress ? &first : nullptr);
     if (!alone) return alone.error();
     const int width = alone->map.width(), height = alone->map.height();
 

@@ -109,6 +109,7 @@ Result<Developpee> develop(const cloud::PointCloud& cloud, const DeveloppeeOptio
     unroll::UnrollOptions unrollOptions;
     unrollOptions.pixelSize = options.pixelSize;
     unrollOptions.cutAngle = options.cutAngle;
+    unrollOptions.cropToPoints = options.cropToPoints;
     unrollOptions.fillHoles = options.fillHoles;
     unrollOptions.threads = options.threads;
     SubProgress unrollStep(progress, split.fit, split.unroll);

@@ -110,7 +110,9 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
     }
     const double natural = dev.map.pixelSize();
     const double p = printPixelSize(panel.scale, options.dpi);
-    const double circumference = 2.0 * std::numbers::pi * dev.map.surface().referenceRadius();
+    // The whole turn (periodic across the seam), or a fragment's arc (UnrollOptions::cropToPoints).
+    const bool wholeTurn = dev.unroll.arc >= 2.0 * std::numbers::pi;
+    const double circumference = dev.unroll.arc * dev.map.surface().referenceRadius(); // metres along the surface
     const double heightM = double(field.height) * natural;
     const double w = std::round(circumference / p), h = std::round(heightM / p);
     if (w * h > double(options.maxPixels) || w > 1e6 || h > 1e6) {
@@ -121,10 +123,11 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
         return Error{ErrorCode::OutOfBudget, text};
     }
     RenderedPanel out;
-    out.image = resampleField(field, circumference / natural, true, std::max(1, int(w)), std::max(1, int(h)));
+    out.image = resampleField(field, circumference / natural, wholeTurn, std::max(1, int(w)), std::max(1, int(h)));
     out.image.pixelSizeM = p;
     out.pixelSizeM = p;
     out.naturalPixelM = natural;
+    out.arcDegrees = wholeTurn ? 360.0 : dev.unroll.arc * 180.0 / std::numbers::pi;
     out.imageMm = {circumference * 1000.0 / panel.scale, heightM * 1000.0 / panel.scale};
     if (panel.layer && !panel.hatches) tintByClass(out.image, sources.legend, *panel.layer);
     if (progress) progress->update(1.0);

@@ -52,4 +52,29 @@ double chooseCutAngle(std::span<const std::uint64_t> counts)
     return middle >= kTwoPi ? middle - kTwoPi : middle;
 }
 
+std::optional<OccupiedArc> occupiedArc(std::span<const std::uint64_t> counts)
+{
+    assert(counts.size() == kAzimuthBins && "occupiedArc(): histogram of the wrong size");
+    const std::size_t n = counts.size();
+    std::size_t occupied = n;
+    for (std::size_t i = 0; i < n && occupied == n; ++i)
+        if (counts[i] != 0) occupied = i;
+    if (occupied == n) return std::nullopt; // no points
+    // Walk once round from an occupied bin: every empty run is whole.
+    std::size_t bestStart = 0, bestLength = 0, runStart = 0, runLength = 0;
+    for (std::size_t step = 1; step <= n; ++step) {
+        const std::size_t i = (occupied + step) % n;
+        if (counts[i] == 0) {
+            if (runLength++ == 0) runStart = i;
+            continue;
+        }
+        if (runLength > bestLength) bestStart = runStart, bestLength = runLength;
+        runLength = 0;
+    }
+    if (bestLength < n / 2) return std::nullopt;
+    const std::size_t kept = n - bestLength + 2 * kArcMarginBins; // < n: bestLength ≥ 360
+    const std::size_t first = (bestStart + bestLength + n - kArcMarginBins) % n; // the first occupied bin − margin
+    return OccupiedArc{double(first) / double(n) * kTwoPi, double(kept) / double(n) * kTwoPi};
+}
+
 } // namespace stylos::core::unroll::detail

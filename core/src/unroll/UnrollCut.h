@@ -2,6 +2,7 @@
 // Internal to the unroller: the default cut angle, where the fewest points lie.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 
 namespace stylos::core::unroll::detail {
@@ -24,5 +25,20 @@ std::size_t azimuthBin(double angle);
  *        middle of that run. All counts equal (e.g. none): 0 — the cut is the reference direction.
  */
 double chooseCutAngle(std::span<const std::uint64_t> counts);
+
+/** The arc the points occupy: from @p start (radians in [0, 2π)) over @p span radians counter-clockwise. */
+struct OccupiedArc {
+    double start = 0.0, span = 0.0;
+};
+
+/** Bins kept each side of the occupied bins (1°): the histogram is a sample of the points. */
+inline constexpr std::size_t kArcMarginBins = 2;
+
+/**
+ * @brief From the raw histogram (kAzimuthBins counts over [0, 2π)): when the longest circular run of empty
+ *        bins is at least half the turn — a fragment, not a drum, however broken — the rest of the turn
+ *        with kArcMarginBins more each side; otherwise (or with no points) nothing.
+ */
+std::optional<OccupiedArc> occupiedArc(std::span<const std::uint64_t> counts);
 
 } // namespace stylos::core::unroll::detail

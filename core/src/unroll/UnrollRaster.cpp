@@ -53,8 +53,10 @@ void UnrollRaster::locateBlock(std::size_t begin, std::size_t end, Scratch& scra
     const double vTop = m_map.vTop(), pixel = m_map.pixelSize();
     const int lastRow = m_map.height() - 1;
     const auto tilesAcross = std::uint32_t((m_map.width() + 15) >> kTileShift);
+    const double width = double(m_map.width()); // the whole turn's columns, or a fragment's arc's (UnrollOptions)
     for (std::size_t k = 0; k < n; ++k) {
         const KeptPoint& p = points[k];
+        if (!(columns[k] < width)) continue; // beyond a cropped arc (never on the whole turn: columns < 2πR / s)
         const int c = m_azimuth.column(p.x, p.y, columns[k]);
         // clamp(floor(q), 0, height − 1) without a libm call: int() floors what is ≥ 0.
         const double q = (vTop - p.v) / pixel;

@@ -86,7 +86,8 @@ private:
         double tolerance = 0.0;
         shading::FieldCoverage coverage;
     };
-    Result<Attempt> rasterise(const PointStats& stats, double cut, double pixel, double spacing, double from, double to);
+    Result<Attempt> rasterise(const PointStats& stats, double cut, double arc, double pixel, double spacing,
+                              double from, double to);
     /** ": give a pixel size of at least D mm (the sampling spacing)", or "" when @p d is unknown. */
     static std::string workingPixel(double d);
 
@@ -173,11 +174,11 @@ Result<double> Unroller::estimateSpacing(const PointStats& stats)
     return *spacing;
 }
 
-Result<Unroller::Attempt> Unroller::rasterise(const PointStats& stats, double cut, double pixel, double spacing,
-                                              double from, double to)
+Result<Unroller::Attempt> Unroller::rasterise(const PointStats& stats, double cut, double arc, double pixel,
+                                              double spacing, double from, double to)
 {
     const double vTop = pixel * std::ceil(stats.vMax / pixel);
-    const double width = std::ceil(m_probe.circumference() / pixel);
+    const double width = std::ceil(m_probe.circumference() * (arc / kTwoPi) / pixel);
     const double height = std::floor((vTop - stats.vMin) / pixel) + 1.0;
     const double limit = shading::HeightField::kMaxSide;
     if (!(width <= limit) || !(height <= limit))
@@ -250,6 +251,9 @@ Result<Unrolled> Unroller::run()
     double cut = m_options.cutAngle ? *m_options.cutAngle - kTwoPi * std::floor(*m_options.cutAngle / kTwoPi)
                                     : detail::chooseCutAngle(stats.azimuths);
     if (!(cut < kTwoPi) || cut < 0.0) cut = 0.0;
+    double arc = kTwoPi; // the whole turn, unless a fragment's points leave half of it empty
+    if (!m_options.cutAngle && m_options.cropToPoints)
+        if (const auto occupied = detail::occupiedArc(stats.azimuths)) cut = occupied->start, arc = occupied->span;
 
     // The sampling spacing d from the density of the kept points: the default pixel, and the yardstick
     // of a given one.
@@ -270,7 +274,7 @@ Result<Unrolled> Unroller::run()
 
     // The raster; a default pixel grows by steps until the image covers the surface well (kDefaultCoverage).
     const bool mayGrow = !m_options.pixelSize && m_options.fillHoles;
-    auto attempt = rasterise(stats, cut, pixel, spacing, 0.35, mayGrow ? 0.9 : 1.0);
+    auto attempt = rasterise(stats, cut, arc, pixel, spacing, 0.35, mayGrow ? 0.9 : 1.0);
     if (!attempt) return attempt.error();
     if (m_options.pixelSize && attempt->coverage.fraction() < m_options.minCoverage)
         return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm covers only "
@@ -280,7 +284,7 @@ Result<Unrolled> Unroller::run()
         const double base = pixel;
         for (std::size_t k = 0; k < kDefaultPixelSteps.size() && attempt->coverage.fraction() < kDefaultCoverage; ++k) {
             const double from = 0.9 + 0.1 * double(k) / double(kDefaultPixelSteps.size());
-            auto larger = rasterise(stats, cut, base * kDefaultPixelSteps[k], spacing, from,
+            auto larger = rasterise(stats, cut, arc, base * kDefaultPixelSteps[k], spacing, from,
                                     from + 0.1 / double(kDefaultPixelSteps.size()));
             if (!larger) return larger.error();
             attempt = std::move(larger);
@@ -296,6 +300,7 @@ Result<Unrolled> Unroller::run()
     report.pointsOffSurface = offSurface;
     report.pointsHidden = stats.kept - attempt->averaged;
     report.cutAngle = cut;
+    report.arc = arc;
     report.pixelSize = pixel;
     report.band = m_band;
     report.depthTolerance = attempt->tolerance;

@@ -67,6 +67,9 @@ struct DeveloppeeOptions {
      *  .poct). A given size that would leave the image mostly empty is refused. */
     std::optional<double> pixelSize;
     std::optional<double> cutAngle;          ///< radians about the axis; default: where the fewest points lie
+    /** With the default cut, a fragment (points on at most half the turn) gets an image of its arc alone
+     *  (unroll::UnrollOptions::cropToPoints); false: the whole circumference. */
+    bool cropToPoints = true;
     bool fillHoles = true;                   ///< fill the small holes (unroll::UnrollOptions::holes)
     unsigned threads = 0;                    ///< worker threads; 0 = all cores; no effect on the result
     /** How a point file is read (text columns, one scan, the import frame: up axis, unit, offset); ignored

@@ -45,6 +45,7 @@ struct PanelBox {
     RectMm barRect;        ///< the bar itself: x, y top-left, w = bar.lengthMm, h its thickness
     bool ruler = false;    ///< an angle ruler 0–360° under the image (développées)
     RectMm rulerRect;      ///< its band
+    double rulerDegrees = 360; ///< the angle the ruler spans, from the image's left edge (a fragment's arc: less)
 };
 
 struct PlateLayout {

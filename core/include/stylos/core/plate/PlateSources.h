@@ -60,6 +60,7 @@ struct RenderedPanel {
     std::array<double, 2> imageMm{};   ///< its size on paper
     double pixelSizeM = 0;             ///< on the object, per plate pixel
     double naturalPixelM = 0;          ///< développée: the pixel size it was computed at
+    double arcDegrees = 360;           ///< développée: the turn it spans (less for a fragment's arc)
     std::uint64_t leaves = 0;          ///< 3D: leaves drawn
 };
 

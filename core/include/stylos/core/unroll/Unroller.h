@@ -84,6 +84,9 @@ inline constexpr double kMinPointsPerPixel = 0.1;
 
 struct UnrollOptions {
     std::optional<double> cutAngle;  ///< radians about the axis from the reference direction; default: fewest points
+    /** With the default cut: points that leave at least half the turn empty (a fragment) give an image of their
+     *  arc alone (1° more each side), its left edge the cut; false, or a given cut: the whole circumference. */
+    bool cropToPoints = true;
     std::optional<double> pixelSize; ///< metres (> 0); default: the sampling spacing of the cloud
     /** Largest |h| kept, metres (> 0); default 0.15 × the surface's reference radius. */
     std::optional<double> band;
@@ -103,7 +106,8 @@ struct UnrollReport {
     std::uint64_t pointsUsed = 0;    ///< points that landed in a pixel (kept by the band)
     std::uint64_t pointsOffSurface = 0; ///< dropped: farther than the band from the surface, or no coordinates
     std::uint64_t pointsHidden = 0;  ///< of pointsUsed, deeper than the tolerance behind their pixel's outermost point
-    double cutAngle = 0.0;           ///< chosen or given, radians in [0, 2π)
+    double cutAngle = 0.0;           ///< chosen or given, radians in [0, 2π): the image's left edge
+    double arc = 6.283185307179586;  ///< radians the image spans: 2π, or less when cropped to a fragment's arc
     double pixelSize = 0.0;          ///< chosen or given, metres
     double band = 0.0;               ///< used, metres
     double depthTolerance = 0.0;     ///< used, metres
