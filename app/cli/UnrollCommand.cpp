@@ -174,6 +174,7 @@ int runUnroll(const std::vector<std::string>& args)
                          {"height", d.field.height()},
                          {"pixel_size", u.pixelSize},
                          {"cut_angle", u.cutAngle * 180.0 / std::numbers::pi},
+                         {"arc", u.arc * 180.0 / std::numbers::pi},
                          {"shading", shadingKey},
                          {"directions", r.options.shading == dev::Shading::Skydome ? r.options.directions : 0},
                          {"height_noise", d.heightNoise},

@@ -75,6 +75,18 @@ TEST(CliUnroll, DrumGivesAnImageItsSidecarAndTheJsonContract)
     EXPECT_EQ(sidecar["width"], j["width"]);
     EXPECT_EQ(sidecar["pixel_size"], j["pixel_size"]);
     EXPECT_EQ(sidecar["surface"]["axis_dir"], j["axis_dir"]);
+    EXPECT_EQ(j["arc"], 360.0); // the whole turn
+
+    // A fragment: the image spans its arc (the generated fragment: a few tens of degrees), not the turn.
+    const auto fragment = generate(dir, "fragment", "0.008");
+    const auto f = runCli({"unroll", fragment, "-o", (dir / "fragment.png").string(), "--json"});
+    ASSERT_EQ(f.exitCode, 0) << f.err;
+    const auto jf = nlohmann::json::parse(f.out);
+    EXPECT_GT(jf["arc"].get<double>(), 20.0);
+    EXPECT_LT(jf["arc"].get<double>(), 180.0);
+    EXPECT_NEAR(jf["width"].get<int>(), jf["arc"].get<double>() * std::numbers::pi / 180.0 * jf["radius"].get<double>() /
+                                            jf["pixel_size"].get<double>(),
+                1.0);
 }
 
 TEST(CliUnroll, GivenAxisIsKeptAndHeightsAreWritten)

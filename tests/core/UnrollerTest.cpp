@@ -262,6 +262,8 @@ TEST(Unroller, AFragmentsImageIsItsArcWithADegreeEachSide)
     EXPECT_GT(columnHasHeights(int(last->column)), 15);
     EXPECT_EQ(columnHasHeights(u.field.width() - 1), 0);
     EXPECT_EQ(u.report.pointsHidden, 0u); // every point landed
+    EXPECT_EQ(u.report.pointsUsed, points.size());
+    EXPECT_EQ(u.report.pointsOffSurface, 0u);
     // Asked not to crop, or given a cut: the whole turn.
     options.cropToPoints = false;
     EXPECT_EQ(unrolled(cloudOf(points), zCylinder(R), options).field.width(), int(std::ceil(2 * kPi * R / pixel)));

@@ -19,14 +19,11 @@ namespace {
 
 /**
  * The default smoothing radius, metres: @p edges of the level's cells, at most MaxDefaultSmoothingSpacings
- * median leaf spacings (a sample of 1001 leaves). The spacings are looked at only where the cap could apply: a
- * leaf's spacing is at least its cell's edge, so below that many leaf cell edges the radius stands.
+ * median leaf spacings (a sample of 1001 leaves; a file without the stored spacing layer has it computed once).
  */
 double defaultSmoothingRadius(const octree::PackedOctree& octree, const AoCells& cells, double edges)
 {
     const double radius = edges * cells.edge;
-    const double leafEdge = octree.box().size / double(std::uint64_t(1) << octree.depth());
-    if (radius <= MaxDefaultSmoothingSpacings * leafEdge) return radius;
     const std::uint64_t leaves = octree.cellCount(octree.depth());
     if (leaves == 0) return radius;
     std::vector<float> spacings;

@@ -136,11 +136,12 @@ Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const
                              "not an E57 file: it does not start with the signature \"ASTM-E57\"");
     }
 
-    // Options that only some formats read are refused elsewhere rather than quietly ignored.
-    if (options.scan && format != PointFormat::E57 && format != PointFormat::Ptx)
+    // Options that only some of the readable formats take are refused elsewhere rather than quietly ignored.
+    const bool readable = format != PointFormat::Laz && format != PointFormat::Unknown;
+    if (readable && options.scan && format != PointFormat::E57 && format != PointFormat::Ptx)
         return Error::at(ErrorCode::InvalidArgument, path.string(), "",
                          "a scan number applies to E57 and PTX files (several scans); this file has one");
-    if (!options.columns.empty() && format != PointFormat::Text)
+    if (readable && !options.columns.empty() && format != PointFormat::Text)
         return Error::at(ErrorCode::InvalidArgument, path.string(), "",
                          "a column layout applies to text files (XYZ, PTS, TXT); this file names its own fields");
     switch (format) {

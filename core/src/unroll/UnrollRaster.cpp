@@ -56,7 +56,10 @@ void UnrollRaster::locateBlock(std::size_t begin, std::size_t end, Scratch& scra
     const double width = double(m_map.width()); // the whole turn's columns, or a fragment's arc's (UnrollOptions)
     for (std::size_t k = 0; k < n; ++k) {
         const KeptPoint& p = points[k];
-        if (!(columns[k] < width)) continue; // beyond a cropped arc (never on the whole turn: columns < 2πR / s)
+        if (!(columns[k] < width)) { // beyond a cropped arc (on the whole turn only at the seam, by rounding)
+            ++scratch.outsideArc;
+            continue;
+        }
         const int c = m_azimuth.column(p.x, p.y, columns[k]);
         // clamp(floor(q), 0, height − 1) without a libm call: int() floors what is ≥ 0.
         const double q = (vTop - p.v) / pixel;
@@ -102,6 +105,7 @@ bool UnrollRaster::run(shading::HeightField& field, ProgressSink* progress)
     if (!maxDone) return false;
 
     std::atomic<std::uint64_t> averaged{0};
+    for (Scratch& s : scratch) s.outsideArc = 0; // counted again by the second pass: once
     SubProgress sumStage(progress, 0.45, 0.9);
     const bool sumDone = parallelPoints(m_cloud.size(), m_threads, &sumStage,
                                         [&](std::size_t begin, std::size_t end, unsigned worker) {
@@ -119,6 +123,8 @@ bool UnrollRaster::run(shading::HeightField& field, ProgressSink* progress)
     });
     if (!sumDone) return false;
     m_averaged = averaged.load();
+    m_outsideArc = 0;
+    for (const Scratch& s : scratch) m_outsideArc += s.outsideArc;
 
     std::span<float> heights = field.heights();
     std::span<shading::PixelState> states = field.states();

@@ -56,6 +56,8 @@ public:
     bool run(shading::HeightField& field, ProgressSink* progress);
     /** Points averaged into a pixel (after run()). */
     std::uint64_t pointsAveraged() const { return m_averaged; }
+    /** Kept points beyond the map's columns (a fragment's arc, UnrollOptions::cropToPoints): in no pixel. */
+    std::uint64_t pointsOutsideArc() const { return m_outsideArc; }
 
 private:
     /** @brief A kept point's pixel (index in the tiled records of run()) and h. */
@@ -67,6 +69,7 @@ private:
     struct Scratch {
         std::vector<KeptPoint> points;
         std::vector<double> columns;
+        std::uint64_t outsideArc = 0; ///< kept points past the last column, counted by locateBlock
     };
     /** The hits of points [begin, end) (at most kBlock), in order; the dropped points are skipped. Three
      *  loops: keptPoint(), the approximate columns (branch-free: vectorised), the exact pixels. */
@@ -84,6 +87,7 @@ private:
     double m_tolerance;
     unsigned m_threads;
     std::uint64_t m_averaged = 0;
+    std::uint64_t m_outsideArc = 0;
 };
 
 } // namespace stylos::core::unroll::detail

@@ -83,6 +83,7 @@ private:
         shading::HeightField field;
         UnrollMap map;
         std::uint64_t averaged = 0;
+        std::uint64_t outsideArc = 0; ///< kept points beyond a fragment's arc
         double tolerance = 0.0;
         shading::FieldCoverage coverage;
     };
@@ -211,7 +212,8 @@ Result<Unroller::Attempt> Unroller::rasterise(const PointStats& stats, double cu
     if (m_progress && m_progress->isCancelRequested()) return cancelled();
     const double closing = spacing > 0.0 ? std::ceil(2.0 * spacing / pixel) : 2.0;
     const auto coverage = shading::measureCoverage(*field, int(std::clamp(closing, 1.0, 64.0)));
-    return Attempt{std::move(*field), std::move(map), raster.pointsAveraged(), tolerance, coverage};
+    return Attempt{std::move(*field), std::move(map), raster.pointsAveraged(), raster.pointsOutsideArc(), tolerance,
+                   coverage};
 }
 
 std::string Unroller::workingPixel(double d)
@@ -296,9 +298,9 @@ Result<Unrolled> Unroller::run()
     const double measured = double(field.count(shading::PixelState::Measured));
     const double filledPixels = double(field.count(shading::PixelState::Filled));
     report.points = m_cloud.size();
-    report.pointsUsed = stats.kept;
-    report.pointsOffSurface = offSurface;
-    report.pointsHidden = stats.kept - attempt->averaged;
+    report.pointsUsed = stats.kept - attempt->outsideArc;
+    report.pointsOffSurface = offSurface + attempt->outsideArc;
+    report.pointsHidden = report.pointsUsed - attempt->averaged;
     report.cutAngle = cut;
     report.arc = arc;
     report.pixelSize = pixel;

@@ -15,8 +15,9 @@
  * Image (s = pixel size): column c covers u ∈ [c·s, (c+1)·s); row r covers v ∈ (vTop − (r+1)·s, vTop − r·s]
  * (row 0 at the top, v upward). Continuous pixel coordinates: column = u / s, row = (vTop − v) / s, so
  * pixel (c, r) is the set floor(column) = c, floor(row) = r and its centre is (c + 0.5, r + 0.5).
- * The width is ceil(2π·R / s): u wraps with a period of P = 2π·R / s columns, generally not an
- * integer, so the last column is partial. pixelOf() gives columns in [0, P); worldAtPixel() takes any
+ * The width is ceil(2π·R / s) for the whole turn: u wraps with a period of P = 2π·R / s columns, generally
+ * not an integer, so the last column is partial. A fragment's image (UnrollOptions::cropToPoints) covers only
+ * its arc, from the cut: width < P, and pixelOf() gives columns ≥ width for points off the arc (outside). pixelOf() gives columns in [0, P); worldAtPixel() takes any
  * column (periodic in P), so a position of the last column past P comes back from pixelOf() as P less.
  *
  * Exactness: worldAt() and surfaceCoords() are inverses up to rounding (a few 1e-16 relative), for any

@@ -104,7 +104,8 @@ struct UnrollOptions {
 struct UnrollReport {
     std::uint64_t points = 0;        ///< points of the cloud
     std::uint64_t pointsUsed = 0;    ///< points that landed in a pixel (kept by the band)
-    std::uint64_t pointsOffSurface = 0; ///< dropped: farther than the band from the surface, or no coordinates
+    std::uint64_t pointsOffSurface = 0; ///< dropped: farther than the band from the surface, no coordinates, or
+                                        ///< beyond a fragment's arc (a sampled histogram's strays)
     std::uint64_t pointsHidden = 0;  ///< of pointsUsed, deeper than the tolerance behind their pixel's outermost point
     double cutAngle = 0.0;           ///< chosen or given, radians in [0, 2π): the image's left edge
     double arc = 6.283185307179586;  ///< radians the image spans: 2π, or less when cropped to a fragment's arc
