@@ -19,6 +19,40 @@ std::size_t azimuthBin(double angle)
     return std::min(kAzimuthBins - 1, std::size_t(bin));
 }
 
+namespace {
+
+struct Run {
+    std::size_t start = 0, length = 0;
+};
+
+/**
+ * The longest circular run of consecutive bins (of @p n) where @p inRun holds, the smallest start on a tie (a
+ * run may wrap through bin 0); none when every bin is in a run. The walk starts just after a bin outside,
+ * so no run is cut in two.
+ */
+template <typename InRun>
+std::optional<Run> longestCircularRun(std::size_t n, InRun inRun)
+{
+    std::size_t outside = n;
+    for (std::size_t i = 0; i < n && outside == n; ++i)
+        if (!inRun(i)) outside = i;
+    if (outside == n) return std::nullopt;
+    Run best, run;
+    for (std::size_t step = 1; step <= n; ++step) {
+        const std::size_t i = (outside + step) % n;
+        if (inRun(i)) {
+            if (run.length++ == 0) run.start = i;
+            continue;
+        }
+        if (run.length > best.length || (run.length == best.length && run.length > 0 && run.start < best.start))
+            best = run;
+        run.length = 0;
+    }
+    return best;
+}
+
+} // namespace
+
 double chooseCutAngle(std::span<const std::uint64_t> counts)
 {
     assert(counts.size() == kAzimuthBins && "chooseCutAngle(): histogram of the wrong size");
@@ -28,27 +62,9 @@ double chooseCutAngle(std::span<const std::uint64_t> counts)
         for (std::size_t k = 0; k <= 2 * kAzimuthSmoothing; ++k)
             smoothed[i] += counts[(i + n + k - kAzimuthSmoothing) % n];
     const std::uint64_t least = *std::min_element(smoothed.begin(), smoothed.end());
-
-    // Walk once round the circle from just after a bin above the minimum, so no run is cut in two.
-    std::size_t above = n;
-    for (std::size_t i = 0; i < n && above == n; ++i)
-        if (smoothed[i] != least) above = i;
-    if (above == n) return 0.0; // flat: no preferred azimuth
-
-    std::size_t bestStart = 0, bestLength = 0, runStart = 0, runLength = 0;
-    for (std::size_t step = 1; step <= n; ++step) {
-        const std::size_t i = (above + step) % n;
-        if (smoothed[i] == least) {
-            if (runLength++ == 0) runStart = i;
-            continue;
-        }
-        if (runLength > bestLength || (runLength == bestLength && runLength > 0 && runStart < bestStart)) {
-            bestStart = runStart;
-            bestLength = runLength;
-        }
-        runLength = 0;
-    }
-    const double middle = (double(bestStart) + 0.5 * double(bestLength)) / double(n) * kTwoPi;
+    const auto lowest = longestCircularRun(n, [&](std::size_t i) { return smoothed[i] == least; });
+    if (!lowest) return 0.0; // flat: no preferred azimuth
+    const double middle = (double(lowest->start) + 0.5 * double(lowest->length)) / double(n) * kTwoPi;
     return middle >= kTwoPi ? middle - kTwoPi : middle;
 }
 
@@ -56,21 +72,9 @@ std::optional<OccupiedArc> occupiedArc(std::span<const std::uint64_t> counts)
 {
     assert(counts.size() == kAzimuthBins && "occupiedArc(): histogram of the wrong size");
     const std::size_t n = counts.size();
-    std::size_t occupied = n;
-    for (std::size_t i = 0; i < n && occupied == n; ++i)
-        if (counts[i] != 0) occupied = i;
-    if (occupied == n) return std::nullopt; // no points
-    // Walk once round from an occupied bin: every empty run is whole.
-    std::size_t bestStart = 0, bestLength = 0, runStart = 0, runLength = 0;
-    for (std::size_t step = 1; step <= n; ++step) {
-        const std::size_t i = (occupied + step) % n;
-        if (counts[i] == 0) {
-            if (runLength++ == 0) runStart = i;
-            continue;
-        }
-        if (runLength > bestLength) bestStart = runStart, bestLength = runLength;
-        runLength = 0;
-    }
+    const auto empty = longestCircularRun(n, [&](std::size_t i) { return counts[i] == 0; });
+    if (!empty) return std::nullopt; // no points
+    const std::size_t bestStart = empty->start, bestLength = empty->length;
     if (bestLength < n / 2) return std::nullopt;
     const std::size_t kept = n - bestLength + 2 * kArcMarginBins; // < n: bestLength ≥ 360
     const std::size_t first = (bestStart + bestLength + n - kArcMarginBins) % n; // the first occupied bin − margin
