@@ -112,9 +112,9 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
     const double p = printPixelSize(panel.scale, options.dpi);
     // The whole turn (periodic across the seam), or a fragment's arc (UnrollOptions::cropToPoints).
     const bool wholeTurn = dev.unroll.arc >= 2.0 * std::numbers::pi;
-    const double circumference = dev.unroll.arc * dev.map.surface().referenceRadius(); // metres along the surface
+    const double arcLength = dev.unroll.arc * dev.map.surface().referenceRadius(); // metres along the surface
     const double heightM = double(field.height) * natural;
-    const double w = std::round(circumference / p), h = std::round(heightM / p);
+    const double w = std::round(arcLength / p), h = std::round(heightM / p);
     if (w * h > double(options.maxPixels) || w > 1e6 || h > 1e6) {
         char text[220];
         std::snprintf(text, sizeof text, "%s: the développée at 1:%g and %d dpi would be %.0f × %.0f pixels (%.0f Mpx), over "
@@ -123,12 +123,12 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
         return Error{ErrorCode::OutOfBudget, text};
     }
     RenderedPanel out;
-    out.image = resampleField(field, circumference / natural, wholeTurn, std::max(1, int(w)), std::max(1, int(h)));
+    out.image = resampleField(field, arcLength / natural, wholeTurn, std::max(1, int(w)), std::max(1, int(h)));
     out.image.pixelSizeM = p;
     out.pixelSizeM = p;
     out.naturalPixelM = natural;
     out.arcDegrees = wholeTurn ? 360.0 : dev.unroll.arc * 180.0 / std::numbers::pi;
-    out.imageMm = {circumference * 1000.0 / panel.scale, heightM * 1000.0 / panel.scale};
+    out.imageMm = {arcLength * 1000.0 / panel.scale, heightM * 1000.0 / panel.scale};
     if (panel.layer && !panel.hatches) tintByClass(out.image, sources.legend, *panel.layer);
     if (progress) progress->update(1.0);
     return out;
@@ -203,12 +203,12 @@ Result<PlateSources> readPlateSources(const fs::path& path)
         out.isProject = true;
         out.legend = s.legend();
         for (const scene::Fragment& f : s.fragments())
-            out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible});
+            out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}});
         if (out.fragments.empty()) return Error::at(ErrorCode::InvalidArgument, path.string(), {}, "the project has no fragment");
         return out;
     }
     const bool octree = cloud::isPoctPath(path);
-    out.fragments.push_back({path.stem().string(), path, octree, false, scene::Pose(), true});
+    out.fragments.push_back({path.stem().string(), path, octree, false, scene::Pose(), true, {}});
     return out;
 }
 

@@ -8,8 +8,9 @@
  *
  * renderPanel: a panel at 1:N and D dpi has pixels of P = N · 25.4 / D mm on the object.
  * - Développée (of the named fragment, or the first): computed at its own pixel size (the sampling spacing),
- *   then resampled to round(2πR / P) × round(height / P) plate pixels (periodic along the circumference); it is
- *   placed exactly 2πR · 1000 / N mm wide on paper. The classes of the layer, when asked, come from the octree's
+ *   then resampled to round(aR / P) × round(height / P) plate pixels, a the développée's arc (2π for a drum,
+ *   periodic across the seam; a fragment's own arc, UnrollOptions::cropToPoints); it is placed exactly
+ *   aR · 1000 / N mm wide on paper. The classes of the layer, when asked, come from the octree's
  *   layer through the développée's map (majority per pixel, annotation/LabelRaster.h), resampled nearest.
  * - 3D (front, back, …; every visible fragment, or the named one): renderOrtho at exactly P.
  * Then the classes tint the picture in legend colours unless the panel asks for hatches.
