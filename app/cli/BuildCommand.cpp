@@ -131,7 +131,11 @@ void printSummary(const std::string& input, const std::string& output, const oct
     if (r.skippedPoints > 0)
         std::printf("skipped %llu points with NaN or infinite coordinates\n",
                     static_cast<unsigned long long>(r.skippedPoints));
-    if (r.normalsEstimated) std::printf("normals estimated (the input had none)\n");
+    if (r.normalsEstimated && r.normalScans > 0)
+        std::printf("normals estimated (the input had none), each point's from its own scan (%u scans, column %s)\n",
+                    r.normalScans, r.normalScanColumn.c_str());
+    else if (r.normalsEstimated)
+        std::printf("normals estimated (the input had none)\n");
 }
 
 } // namespace
@@ -229,6 +233,7 @@ int runBuild(const std::vector<std::string>& args)
                          {"skipped_points", r.skippedPoints},
                          {"passes", r.passes},
                          {"normals_estimated", r.normalsEstimated},
+                         {"normal_scans", r.normalScans},
                          {"cells_per_level", r.cellsPerLevel},
                          {"peak_rss_bytes", peakRss},
                          {"baseline_rss_bytes", baseline}};

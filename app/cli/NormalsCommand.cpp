@@ -43,6 +43,8 @@ int runNormals(const std::vector<std::string>& args)
                     {"memory-limit", "MiB", "memory for points held at once; larger clouds are tiled (default 256)"},
                     {"threads", "N", "worker threads (default: all cores)"},
                     {"quality", "", "also write the surface variation as a scalar \"surface_variation\""},
+                    {"across-scans", "", "take neighbours across scans (default: from the point's own scan when the "
+                                         "input has a scan_id, scan_index or scan column)"},
                     {"columns", "LAYOUT", "column layout of a text input, e.g. x,y,z,i,r,g,b"},
                     scanOption(),
                     {"json", "", "print one JSON object on stdout"}}));
@@ -66,6 +68,7 @@ int runNormals(const std::vector<std::string>& args)
     options.normals.threads = static_cast<unsigned>(threads);
     options.memoryBudget = static_cast<std::size_t>(mib) << 20;
     options.writeQuality = cl.flag("quality");
+    options.perScan = !cl.flag("across-scans");
     if (std::string problem; !parseReadOptions(cl, options.read, problem)) return usageError(cl, problem);
     if (const auto vp = cl.value("viewpoint")) {
         if (!parseTriple(*vp, options.normals.viewpoint)) return usageError(cl, "--viewpoint expects X,Y,Z");
@@ -89,12 +92,17 @@ int runNormals(const std::vector<std::string>& args)
                          {"skipped_non_finite", report->skippedPoints},
                          {"tiles", report->tiles},
                          {"neighbours", options.normals.neighbours},
+                         {"scans", report->scans},
+                         {"scan_column", report->scanColumn},
                          {"seconds", seconds}};
         std::cout << j.dump() << "\n";
     } else {
         std::cout << "wrote " << report->normals.points << " points with normals to " << *output << " in " << seconds
                   << " s";
         if (report->tiles > 0) std::cout << " (" << report->tiles << " tiles)";
+        if (report->scans > 0)
+            std::cout << ", each point's neighbours from its own scan (" << report->scans << " scans, column "
+                      << report->scanColumn << ")";
         std::cout << "\n";
     }
     return ExitOk;

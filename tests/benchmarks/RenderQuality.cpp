@@ -11,8 +11,11 @@
 //          notches the closing fills along an outline, the object's or that of an opening of the scan);
 //   dark:  object pixels whose luminance is below 0.15 while the median of their 5 × 5 neighbourhood is above
 //          0.5, / object pixels.
+//   speckle: object pixels darker than 0.6 × the median of the object pixels of their 5 × 5 neighbourhood (at
+//          least 13 of them), with at most one of their 8 neighbours that dark: the isolated dark grain of wrong
+//          normals (a crease's line has two such neighbours or more), / object pixels.
 // --holes writes the picture with the hole pixels in red (through) and orange (edge), the isolated dark pixels in
-// yellow. --all-leaves draws every leaf (no level-of-detail cut, no frustum culling): holes that stay are not the
+// yellow, the speckle in cyan. --all-leaves draws every leaf (no level-of-detail cut, no frustum culling): holes that stay are not the
 // cut's. --no-gap-fill measures the splats alone, without the composite pass's gap filling (core/view/GapFill.h).
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/octree/PackedOctree.h"
@@ -159,6 +162,33 @@ int main(int argc, char** argv)
                 marked.setPixel(x, y, qRgb(255, 255, 0));
             }
         }
+    std::int64_t speckle = 0;
+    std::vector<std::uint8_t> darker(covered.size(), 0);
+    for (int y = 2; y < h - 2; ++y)
+        for (int x = 2; x < w - 2; ++x) {
+            const std::size_t i = std::size_t(y) * w + x;
+            if (!covered[i]) continue;
+            window.clear();
+            for (int dy = -2; dy <= 2; ++dy)
+                for (int dx = -2; dx <= 2; ++dx)
+                    if (covered[std::size_t(y + dy) * w + x + dx]) window.push_back(lum[std::size_t(y + dy) * w + x + dx]);
+            if (window.size() < 13) continue;
+            const auto mid = window.begin() + std::ptrdiff_t(window.size() / 2);
+            std::nth_element(window.begin(), mid, window.end());
+            if (lum[i] < 0.6 * *mid) darker[i] = 1;
+        }
+    for (int y = 1; y < h - 1; ++y)
+        for (int x = 1; x < w - 1; ++x) {
+            const std::size_t i = std::size_t(y) * w + x;
+            if (!darker[i]) continue;
+            int around = 0;
+            for (int dy = -1; dy <= 1; ++dy)
+                for (int dx = -1; dx <= 1; ++dx) around += (dx || dy) ? darker[std::size_t(y + dy) * w + x + dx] : 0;
+            if (around <= 1) {
+                ++speckle;
+                marked.setPixel(x, y, qRgb(0, 200, 255));
+            }
+        }
     const QString holesPath = option("--holes", QString());
     if (!holesPath.isEmpty()) marked.save(holesPath);
     // The cost of presenting the complete image (the composite pass and the overlays, then glFinish), with and
@@ -198,6 +228,7 @@ int main(int argc, char** argv)
     o["holesEdge"] = coverage.edgeFraction();
     o["objectPixels"] = double(object);
     o["dark"] = object ? double(dark) / double(object) : 0.0;
+    o["speckle"] = object ? double(speckle) / double(object) : 0.0;
     o["seconds"] = timer.elapsed() / 1000.0;
     std::printf("%s\n", QJsonDocument(o).toJson(QJsonDocument::Compact).constData());
     return 0;

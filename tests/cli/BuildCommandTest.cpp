@@ -41,7 +41,7 @@ std::size_t entriesIn(const fs::path& dir) { return static_cast<std::size_t>(std
 
 const std::vector<std::string> kBuildKeys{"points", "cells", "leaves", "depth", "method", "seconds",
                                           "construction_bytes", "file_bytes", "skipped_points", "passes",
-                                          "normals_estimated", "cells_per_level", "peak_rss_bytes"};
+                                          "normals_estimated", "normal_scans", "cells_per_level", "peak_rss_bytes"};
 
 } // namespace
 
@@ -187,10 +187,13 @@ TEST(CliBuild, FileWithoutNormalsGetsThemEstimated)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
     EXPECT_EQ(j["normals_estimated"], true);
+    EXPECT_GE(j["normal_scans"].get<int>(), 2); // the generator's stations, each a scan with its registration error
     EXPECT_GT(j["points"].get<std::uint64_t>(), 5000u);
     const auto text = runCli({"build", scan, "-o", out, "--depth", "8"});
     ASSERT_EQ(text.exitCode, 0) << text.err;
-    EXPECT_NE(text.out.find("normals estimated"), std::string::npos) << text.out;
+    EXPECT_NE(text.out.find("normals estimated (the input had none), each point's from its own scan (" +
+                            std::to_string(j["normal_scans"].get<int>()) + " scans, column scan_id)"),
+              std::string::npos) << text.out;
     EXPECT_EQ(entriesIn(dir.path()), 3u); // scan, truth, octree: the estimated normals were temporary
 }
 

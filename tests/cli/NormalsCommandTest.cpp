@@ -22,6 +22,18 @@ TEST(CliNormals, EstimatesNormalsForEveryPoint)
     EXPECT_EQ(i["points"], j["points"]);
     EXPECT_EQ(i["attributes"], (std::vector<std::string>{"normal", "scan_id"}));
     EXPECT_EQ(j["neighbours"], 12);
+    // The generator's scans (stations with their registration errors) are kept apart, unless asked not to.
+    EXPECT_GE(j["scans"].get<int>(), 2);
+    EXPECT_EQ(j["scan_column"], "scan_id");
+    const auto across = runCli({"normals", scan, "-o", out, "--across-scans", "--json"});
+    ASSERT_EQ(across.exitCode, 0) << across.err;
+    const auto a = nlohmann::json::parse(across.out);
+    EXPECT_EQ(a["scans"], 0);
+    EXPECT_EQ(a["scan_column"], "");
+    const auto text = runCli({"normals", scan, "-o", out});
+    ASSERT_EQ(text.exitCode, 0) << text.err;
+    EXPECT_NE(text.out.find("each point's neighbours from its own scan (" + std::to_string(j["scans"].get<int>()) +
+                            " scans, column scan_id)"), std::string::npos) << text.out;
 }
 
 TEST(CliNormals, UsageErrorsAndBadInput)

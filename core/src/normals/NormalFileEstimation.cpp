@@ -1,6 +1,7 @@
 #include "stylos/core/normals/NormalFileEstimation.h"
 
 #include "NormalJob.h"
+#include "ScanGroups.h"
 #include "TilePlan.h"
 #include "TileSpool.h"
 #include "stylos/core/io/PlyWriter.h"
@@ -42,13 +43,19 @@ std::size_t ownRecordBytes(const io::PointSchema& schema)
     return 3 * sizeof(double) + (schema.hasColors ? 3 : 0) + schema.scalarNames.size() * sizeof(double);
 }
 
-/** Memory per point held for estimation: its record, its normal (and quality) and the kernel. */
-std::size_t heldBytesPerPoint(const io::PointSchema& schema, bool quality)
+/** Memory per point held for estimation: its record, its normal (and quality) and the kernel (and, scan by
+ *  scan, the copies of runNormalJobPerScan). */
+std::size_t heldBytesPerPoint(const io::PointSchema& schema, bool quality, bool perScan)
 {
-    return ownRecordBytes(schema) + 3 * sizeof(float) + (quality ? sizeof(float) : 0) + normalEstimationBytesPerPoint();
+    return ownRecordBytes(schema) + 3 * sizeof(float) + (quality ? sizeof(float) : 0) + normalEstimationBytesPerPoint() +
+           (perScan ? detail::PerScanBytesPerPoint : 0);
 }
 
-std::size_t haloBytesPerPoint() { return 3 * sizeof(double) + normalEstimationBytesPerPoint(); }
+std::size_t haloBytesPerPoint(bool perScan)
+{
+    return 3 * sizeof(double) + normalEstimationBytesPerPoint() +
+           (perScan ? sizeof(double) + detail::PerScanBytesPerPoint : 0);
+}
 
 /** Pass 1's findings. */
 struct CloudSummary {
@@ -60,6 +67,11 @@ struct CloudSummary {
     std::vector<double> sample;
     bool held = true;       ///< the whole cloud is in `all`
     io::PointBatch all;     ///< positions, colours, scalars (input normals dropped)
+    /** The scan column (detail::findScanColumn) when NormalFileOptions::perScan: its ids are checked in pass 1. */
+    std::optional<std::size_t> scanColumn;
+    detail::ScanCensus census;
+    /** Neighbours are taken scan by scan: a valid scan column with two scans or more. */
+    bool perScan() const { return scanColumn && census.valid() && census.scans() > 1; }
 };
 
 void appendBatch(io::PointBatch& to, const io::PointBatch& from)
@@ -79,7 +91,8 @@ Result<CloudSummary> summarise(const std::filesystem::path& input, const NormalF
     io::PointReader& reader = **opened;
     CloudSummary cloud;
     cloud.schema = reader.header().schema;
-    const std::size_t heldBytes = heldBytesPerPoint(cloud.schema, options.writeQuality);
+    if (options.perScan) cloud.scanColumn = detail::findScanColumn(cloud.schema.scalarNames);
+    const std::size_t heldBytes = heldBytesPerPoint(cloud.schema, options.writeQuality, cloud.scanColumn.has_value());
     cloud.bounds = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                     std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
                     std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
@@ -97,6 +110,9 @@ Result<CloudSummary> summarise(const std::filesystem::path& input, const NormalF
         auto got = reader.read(batch, kBatchPoints);
         if (!got) return got.error();
         if (*got == 0) break;
+        if (cloud.scanColumn)
+            for (double id : batch.scalars[*cloud.scanColumn])
+                if (!cloud.census.add(id)) break;
         for (std::size_t i = 0; i < batch.size(); ++i, ++cloud.points) {
             const double* p = &batch.positions[3 * i];
             for (int d = 0; d < 3; ++d) {
@@ -159,7 +175,8 @@ void addReport(NormalReport& total, const NormalReport& part)
 Result<TilePlan> planTiles(const CloudSummary& cloud, const NormalFileOptions& options, double margin)
 {
     const double scale = double(cloud.points) / double(cloud.sample.size() / 3);
-    const double ownBytes = double(heldBytesPerPoint(cloud.schema, options.writeQuality));
+    const double ownBytes = double(heldBytesPerPoint(cloud.schema, options.writeQuality, cloud.perScan()));
+    const double haloBytes = double(haloBytesPerPoint(cloud.perScan()));
     const double budget = kTileFill * double(options.memoryBudget);
     unsigned levels = 1;
     while (levels < 20 && double(cloud.points) * ownBytes > budget * double(1u << levels)) ++levels;
@@ -173,7 +190,7 @@ Result<TilePlan> planTiles(const CloudSummary& cloud, const NormalFileOptions& o
             const double* p = &cloud.sample[3 * i];
             bytes[plan.ownTile(p)] += ownBytes;
             plan.haloTiles(p, halo);
-            for (std::uint32_t t : halo) bytes[t] += double(haloBytesPerPoint());
+            for (std::uint32_t t : halo) bytes[t] += haloBytes;
         }
         const double densest = *std::max_element(bytes.begin(), bytes.end()) * scale;
         if (densest <= budget) return plan;
@@ -202,7 +219,8 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
     const std::size_t recordBytes = ownRecordBytes(cloud.schema);
     const std::size_t bufferBytes = std::clamp<std::size_t>(options.memoryBudget / (4 * plan.size()), 4096, 1u << 20);
     auto made = TileSpool::create(options.temporaryDirectory.empty() ? output.parent_path() : options.temporaryDirectory,
-                                  output.filename().string(), plan.size(), recordBytes, bufferBytes);
+                                  output.filename().string(), plan.size(), recordBytes, cloud.perScan() ? 4 : 3,
+                                  bufferBytes);
     if (!made) return made.error();
     TileSpool& spool = **made;
 
@@ -213,6 +231,7 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
     io::PointBatch batch;
     std::vector<unsigned char> record(recordBytes);
     std::vector<std::uint32_t> halo;
+    double haloRecord[4];
     for (;;) {
         if (progress && progress->isCancelRequested()) return cancelled();
         auto got = reader.read(batch, kBatchPoints);
@@ -233,8 +252,10 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
             }
             if (Status status = spool.appendOwn(plan.ownTile(p), record.data()); !status) return status.error();
             plan.haloTiles(p, halo);
+            std::copy_n(p, 3, haloRecord);
+            if (cloud.perScan()) haloRecord[3] = batch.scalars[*cloud.scanColumn][i];
             for (std::uint32_t t : halo)
-                if (Status status = spool.appendHalo(t, p); !status) return status.error();
+                if (Status status = spool.appendHalo(t, haloRecord); !status) return status.error();
         }
         if (progress && reader.fileBytes() > 0)
             progress->update(kPass1 + (kPass2 - kPass1) * double(reader.bytesConsumed()) / double(reader.fileBytes()));
@@ -246,6 +267,7 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
     std::vector<std::uint8_t> colors;
     std::vector<std::vector<double>> scalars(cloud.schema.scalarNames.size());
     std::vector<float> normals, quality;
+    std::vector<double> scanIds;
     std::uint64_t done = 0;
     for (std::uint32_t t = 0; t < plan.size(); ++t) {
         positions.clear();
@@ -272,10 +294,20 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
         });
         if (!status) return status.error();
         const std::size_t own = positions.size() / 3;
+        if (cloud.perScan()) scanIds.assign(scalars[*cloud.scanColumn].begin(), scalars[*cloud.scanColumn].end());
         status = spool.read(t, TileSpool::Part::Halo, [&](const unsigned char* in, std::size_t count) {
             const std::size_t at = positions.size();
             positions.resize(at + 3 * count);
-            std::memcpy(&positions[at], in, 3 * count * sizeof(double));
+            if (!cloud.perScan()) {
+                std::memcpy(&positions[at], in, 3 * count * sizeof(double));
+                return;
+            }
+            for (std::size_t i = 0; i < count; ++i, in += 4 * sizeof(double)) {
+                double values[4];
+                std::memcpy(values, in, sizeof values);
+                std::copy_n(values, 3, &positions[at + 3 * i]);
+                scanIds.push_back(values[3]);
+            }
         });
         if (!status) return status.error();
         report.haloPoints += positions.size() / 3 - own;
@@ -295,7 +327,8 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
         const double share = 1.0 - kPass2;
         SubProgress tileProgress(progress, kPass2 + share * double(done) / double(cloud.points),
                                     kPass2 + share * double(done + own) / double(cloud.points));
-        auto estimated = detail::runNormalJob(job, options.normals, &tileProgress);
+        auto estimated = cloud.perScan() ? detail::runNormalJobPerScan(job, scanIds, options.normals, &tileProgress)
+                                         : detail::runNormalJob(job, options.normals, &tileProgress);
         if (!estimated) return estimated.error();
         addReport(report.normals, *estimated);
         if (Status written = writePoints(writer, outSchema, own, positions, normals, quality, colors, scalars); !written)
@@ -330,7 +363,9 @@ Result<NormalFileReport> estimateNormalsForFile(const std::filesystem::path& inp
             writerOptions.scalarTypes.push_back(io::PlyScalarType::Float32);
         }
         writerOptions.comments.push_back("normals estimated by Stylos: PCA of the " +
-                                         std::to_string(options.normals.neighbours) + " nearest points");
+                                         std::to_string(options.normals.neighbours) + " nearest points" +
+                                         (cloud.perScan() ? " of the same " + cloud.schema.scalarNames[*cloud.scanColumn]
+                                                          : std::string()));
         auto created = io::PlyWriter::create(output, outSchema, writerOptions);
         if (!created) return created.error();
         io::PlyWriter& writer = *created;
@@ -353,7 +388,9 @@ Result<NormalFileReport> estimateNormalsForFile(const std::filesystem::path& inp
             job.normals = normals;
             job.quality = quality;
             SubProgress estimateProgress(progress, kPass1, 0.95);
-            auto estimated = detail::runNormalJob(job, options.normals, &estimateProgress);
+            auto estimated = cloud.perScan()
+                ? detail::runNormalJobPerScan(job, cloud.all.scalars[*cloud.scanColumn], options.normals, &estimateProgress)
+                : detail::runNormalJob(job, options.normals, &estimateProgress);
             if (!estimated) return estimated.error();
             report.normals = *estimated;
             report.peakTilePoints = n;
@@ -368,6 +405,10 @@ Result<NormalFileReport> estimateNormalsForFile(const std::filesystem::path& inp
         }
         report.normals.centre = frame.centre;
         report.skippedPoints = cloud.skipped;
+        if (cloud.perScan()) {
+            report.scanColumn = cloud.schema.scalarNames[*cloud.scanColumn];
+            report.scans = cloud.census.scans();
+        }
         if (progress && progress->isCancelRequested()) return cancelled();
         if (Status finished = writer.finish(); !finished) return finished.error();
         if (progress) progress->update(1.0);

@@ -1,5 +1,6 @@
 #include "TileSpool.h"
 
+#include <algorithm>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -46,7 +47,7 @@ bool makeFreshDirectory(const std::filesystem::path& parent, const std::string& 
 
 Result<std::unique_ptr<TileSpool>> TileSpool::create(const std::filesystem::path& parent, const std::string& name,
                                                      std::size_t tiles, std::size_t ownRecordBytes,
-                                                     std::size_t bufferBytes)
+                                                     std::size_t haloValues, std::size_t bufferBytes)
 {
     std::unique_ptr<TileSpool> spool(new TileSpool());
     std::error_code error;
@@ -56,7 +57,8 @@ Result<std::unique_ptr<TileSpool>> TileSpool::create(const std::filesystem::path
         return Error::at(ErrorCode::WriteFailed, parent.string(), "",
                          "cannot create a temporary folder for the tiles (nor in " + fallback.string() + ")");
     spool->m_ownRecordBytes = ownRecordBytes;
-    spool->m_bufferBytes = std::max(bufferBytes, ownRecordBytes);
+    spool->m_haloRecordBytes = haloValues * sizeof(double);
+    spool->m_bufferBytes = std::max({bufferBytes, ownRecordBytes, spool->m_haloRecordBytes});
     spool->m_buffers.resize(2 * tiles);
     spool->m_counts.assign(2 * tiles, 0);
     return spool;
@@ -82,14 +84,14 @@ Status TileSpool::appendOwn(std::uint32_t tile, const unsigned char* record)
     return buffer.size() + m_ownRecordBytes > m_bufferBytes ? flushOne(tile, Part::Own) : Status{};
 }
 
-Status TileSpool::appendHalo(std::uint32_t tile, const double* xyz)
+Status TileSpool::appendHalo(std::uint32_t tile, const double* values)
 {
     auto& buffer = m_buffers[2 * std::size_t(tile) + 1];
     if (buffer.capacity() == 0) buffer.reserve(m_bufferBytes);
-    const auto* bytes = reinterpret_cast<const unsigned char*>(xyz);
-    buffer.insert(buffer.end(), bytes, bytes + 3 * sizeof(double));
+    const auto* bytes = reinterpret_cast<const unsigned char*>(values);
+    buffer.insert(buffer.end(), bytes, bytes + m_haloRecordBytes);
     ++m_counts[2 * std::size_t(tile) + 1];
-    return buffer.size() + 3 * sizeof(double) > m_bufferBytes ? flushOne(tile, Part::Halo) : Status{};
+    return buffer.size() + m_haloRecordBytes > m_bufferBytes ? flushOne(tile, Part::Halo) : Status{};
 }
 
 Status TileSpool::flushOne(std::uint32_t tile, Part part)
@@ -125,7 +127,7 @@ Status TileSpool::read(std::uint32_t tile, Part part,
 {
     const std::uint64_t total = count(tile, part);
     if (total == 0) return {};
-    const std::size_t recordBytes = part == Part::Own ? m_ownRecordBytes : 3 * sizeof(double);
+    const std::size_t recordBytes = part == Part::Own ? m_ownRecordBytes : m_haloRecordBytes;
     const auto path = file(tile, part);
     FilePtr in(std::fopen(path.c_str(), "rb"));
     if (!in) return Error::at(ErrorCode::Unreadable, path.string(), "", std::strerror(errno));

@@ -175,6 +175,8 @@ Result<BuildReport> buildOctreeFile(const fs::path& input, const fs::path& outpu
         return error;
     }
     report->normalsEstimated = true;
+    report->normalScans = estimated->scans;
+    report->normalScanColumn = estimated->scanColumn;
     report->skippedPoints = estimated->skippedPoints;
     report->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return report;

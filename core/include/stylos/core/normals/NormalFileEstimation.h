@@ -16,6 +16,12 @@
  *     in-memory kernel (same search frame, bounding-box centre, and same orientation centre, the global
  *     centroid, for all tiles, so orientation is consistent across tiles), and appended to the output.
  *
+ * Scans: when the input has a scan column (a scalar named scan_id, scan_index or scan, any case; integers in
+ * [0, 65535]) with two scans or more, each point's neighbours are taken from its own scan only (perScan, on by
+ * default): where registered scans overlap, their sheets of points lie a registration error apart, and a
+ * neighbourhood across them tilts the normal. The ids are checked in pass 1; a column with any other value is
+ * not a scan column and the cloud is estimated whole. Halo records then carry the scan id.
+ *
  * Output: x y z (double), nx ny nz (float), the input's colours and scalar columns (as double), and
  * "surface_variation" (float) if asked. Normals the input already had are replaced. ORDER: tile by tile
  * (input order within a tile) when tiled; input order otherwise. Non-finite input points are skipped
@@ -36,6 +42,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <filesystem>
+#include <string>
 
 namespace stylos::core::normals {
 
@@ -46,6 +53,7 @@ struct NormalFileOptions {
     bool writeQuality = false;                   ///< also write the "surface_variation" column
     std::filesystem::path temporaryDirectory;    ///< where the tile folder goes; empty: next to the output
     io::ReadOptions read;                        ///< passed to the reader (text column layout)
+    bool perScan = true;                         ///< neighbours from the point's own scan (see the file comment)
 };
 
 /** @brief What the file estimation did. */
@@ -56,6 +64,8 @@ struct NormalFileReport {
     std::uint64_t haloPoints = 0;      ///< halo copies loaded, summed over the tiles
     double margin = 0;                 ///< halo width in metres (0 when not tiled)
     std::size_t peakTilePoints = 0;    ///< largest number of points (own + halo) held at once
+    std::string scanColumn;            ///< the scan column whose scans were kept apart; empty: estimated whole
+    std::uint32_t scans = 0;           ///< how many scans were kept apart (0 when estimated whole)
 };
 
 /**

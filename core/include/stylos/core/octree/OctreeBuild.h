@@ -86,6 +86,8 @@ struct BuildReport {
     std::uint64_t fileBytes = 0;            ///< size of the written .poct (0 when not written)
     std::uint64_t passes = 0;               ///< passes over the input, the bounds scan included
     bool normalsEstimated = false;          ///< buildOctreeFile estimated the normals first
+    std::uint32_t normalScans = 0;          ///< ... scan by scan, over this many scans (0: the cloud whole)
+    std::string normalScanColumn;           ///< ... the input's scan column (NormalFileReport::scanColumn)
     double seconds = 0;                     ///< wall time of the whole build, writing included
 };
 
