@@ -13,6 +13,7 @@
 #include <cmath>
 #include <map>
 #include <random>
+#include <span>
 #include <vector>
 
 using namespace stylos::core;
@@ -32,20 +33,21 @@ struct TwoScans {
     std::vector<std::array<double, 3>> truth; ///< each point's true normal (its own scan's sphere)
 };
 
-TwoScans makeScans(std::size_t perScan, double scanOf1 = 1.0, const char* column = "scan_id")
+/** @p scans scans of @p perScan points each, scan s shifted by s × Shift; scan 0's id is 0, scan s's s × @p idStep. */
+TwoScans makeScans(std::size_t perScan, double idStep = 1.0, const char* column = "scan_id", int scans = 2)
 {
     TwoScans s;
     s.cloud.reset(io::PointSchema{false, false, {column}}, 0);
     std::mt19937_64 random(5);
     std::normal_distribution<double> gauss;
-    for (int scan = 0; scan < 2; ++scan)
+    for (int scan = 0; scan < scans; ++scan)
         for (std::size_t i = 0; i < perScan; ++i) {
             double d[3] = {gauss(random), gauss(random), gauss(random)};
             const double length = std::sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
             for (double& v : d) v /= length;
             for (int a = 0; a < 3; ++a)
-                s.cloud.positions.push_back(100.0 + Radius * d[a] + (scan == 1 ? Shift[std::size_t(a)] : 0.0));
-            s.cloud.scalars[0].push_back(scan == 0 ? 0.0 : scanOf1);
+                s.cloud.positions.push_back(100.0 + Radius * d[a] + scan * Shift[std::size_t(a)]);
+            s.cloud.scalars[0].push_back(scan * idStep);
             s.truth.push_back({d[0], d[1], d[2]});
         }
     return s;
@@ -126,19 +128,21 @@ TEST(NormalScans, EachPointsNeighboursComeFromItsOwnScan)
 
 TEST(NormalScans, TiledAgreesWithHeld)
 {
+    // Five scans: each is a fifth of the merged cloud's density, so its neighbourhoods reach √5 times farther
+    // than the merged cloud's; the halo must hold them (no point truncated, the same normals as in one piece).
     TempDir dir;
-    const TwoScans s = makeScans(15000);
+    const TwoScans s = makeScans(6000, 1.0, "scan_id", 5);
     writeScans(dir / "in.ply", s.cloud);
     NormalFileOptions options;
     options.normals.threads = 2;
     options.temporaryDirectory = dir.path();
     auto held = estimateNormalsForFile(dir / "in.ply", dir / "held.ply", options);
     ASSERT_TRUE(held) << held.error().message;
-    options.memoryBudget = 512u << 10; // a few thousand points per tile
+    options.memoryBudget = 1u << 20; // a few thousand points per tile
     auto tiled = estimateNormalsForFile(dir / "in.ply", dir / "tiled.ply", options);
     ASSERT_TRUE(tiled) << tiled.error().message;
     EXPECT_GE(tiled->tiles, 8u);
-    EXPECT_EQ(tiled->scans, 2u);
+    EXPECT_EQ(tiled->scans, 5u);
     EXPECT_EQ(tiled->normals.truncated, 0u);
     EXPECT_EQ(std::distance(fs::directory_iterator(dir.path()), {}), 3) << "temporary files left behind";
     const auto a = normalsByPosition(dir / "held.ply"), b = normalsByPosition(dir / "tiled.ply");
@@ -165,14 +169,14 @@ TEST(NormalScans, NoScansToKeepApartLeavesTheCloudWhole)
     const auto whole = normalsByPosition(dir / "whole.ply");
     options.perScan = true;
     // Ids that are not scan ids (not integers), one scan only, and a column of another name.
-    for (const auto& [scanOf1, column] : {std::pair{0.5, "scan_id"}, std::pair{0.0, "scan"}, std::pair{1.0, "intensity"}}) {
-        const TwoScans t = makeScans(5000, scanOf1, column);
+    for (const auto& [idStep, column] : {std::pair{0.5, "scan_id"}, std::pair{0.0, "scan"}, std::pair{1.0, "intensity"}}) {
+        const TwoScans t = makeScans(5000, idStep, column);
         writeScans(dir / "t.ply", t.cloud, column);
         auto report = estimateNormalsForFile(dir / "t.ply", dir / "t-n.ply", options);
         ASSERT_TRUE(report) << report.error().message;
-        EXPECT_EQ(report->scans, 0u) << column << " " << scanOf1;
+        EXPECT_EQ(report->scans, 0u) << column << " " << idStep;
         EXPECT_EQ(report->scanColumn, "");
-        EXPECT_EQ(normalsByPosition(dir / "t-n.ply"), whole) << column << " " << scanOf1;
+        EXPECT_EQ(normalsByPosition(dir / "t-n.ply"), whole) << column << " " << idStep;
     }
     // The column is found whatever its case and is written through.
     const TwoScans u = makeScans(5000, 1.0, "Scan_Index");
@@ -184,4 +188,47 @@ TEST(NormalScans, NoScansToKeepApartLeavesTheCloudWhole)
     auto reader = io::openPointReader(dir / "u-n.ply");
     ASSERT_TRUE(reader);
     EXPECT_EQ((*reader)->header().schema, (io::PointSchema{true, false, {"Scan_Index"}}));
+}
+
+TEST(NormalScans, EachScanGetsExactlyWhatItWouldAlone)
+{
+    // Scan ids far apart (0 and 65535), a third scan of 5 points (fewer than k), the quality written: each scan's
+    // normals and surface variation are estimateNormals' on that scan alone (with the whole cloud's centroid).
+    TempDir dir;
+    TwoScans s = makeScans(4000, 65535.0);
+    const std::array<double, 15> tiny{101, 100, 100, 101.01, 100, 100, 101, 100.01, 100, 101, 100, 100.01, 101.01, 100.01, 100};
+    s.cloud.positions.insert(s.cloud.positions.end(), tiny.begin(), tiny.end());
+    s.cloud.scalars[0].insert(s.cloud.scalars[0].end(), 5, 7.0);
+    writeScans(dir / "in.ply", s.cloud);
+    NormalFileOptions options;
+    options.normals.threads = 2;
+    options.writeQuality = true;
+    auto report = estimateNormalsForFile(dir / "in.ply", dir / "out.ply", options);
+    ASSERT_TRUE(report) << report.error().message;
+    EXPECT_EQ(report->scans, 3u);
+    EXPECT_EQ(report->normals.points, 8005u);
+    EXPECT_EQ(report->normals.truncated, 0u);
+
+    io::PointBatch out;
+    {
+        auto reader = io::openPointReader(dir / "out.ply");
+        ASSERT_TRUE(reader);
+        ASSERT_TRUE((*reader)->read(out, 100000));
+    }
+    ASSERT_EQ(out.size(), 8005u);
+    ASSERT_EQ(out.positions, s.cloud.positions); // in one piece: the input order
+    std::array<double, 3> centroid{};
+    for (std::size_t i = 0; i < 8005; ++i)
+        for (int a = 0; a < 3; ++a) centroid[std::size_t(a)] += s.cloud.positions[3 * i + a] / 8005.0;
+    NormalOptions alone;
+    alone.centre = centroid;
+    for (const auto& [first, count] : {std::pair<std::size_t, std::size_t>{0, 4000}, {4000, 4000}, {8000, 5}}) {
+        const std::span<const double> positions(&s.cloud.positions[3 * first], 3 * count);
+        std::vector<float> normals(3 * count), quality(count);
+        ASSERT_TRUE(estimateNormals(positions, normals, alone, nullptr, quality));
+        for (std::size_t j = 0; j < count; ++j) {
+            for (int a = 0; a < 3; ++a) ASSERT_EQ(out.normals[3 * (first + j) + a], normals[3 * j + a]) << first + j;
+            ASSERT_EQ(out.scalars[1][first + j], double(quality[j])) << first + j;
+        }
+    }
 }

@@ -102,7 +102,8 @@ void finishPoint(Shared& shared, const KnnScratch& scratch, std::size_t q, std::
         double room = std::numeric_limits<double>::max();
         for (int d = 0; d < 3; ++d) room = std::min({room, point[d] - box[d], box[3 + d] - point[d]});
         const double reach = count == 0 ? 0.0 : std::sqrt(double(scratch.squaredDistance(q, count - 1)));
-        if (count < shared.options.neighbours || reach * 1.0001 >= room) ++truncated;
+        const bool fewer = count < shared.options.neighbours && count < shared.job.cloudPoints;
+        if (fewer || reach * 1.0001 >= room) ++truncated;
     }
 }
 

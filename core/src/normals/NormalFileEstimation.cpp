@@ -70,6 +70,7 @@ struct CloudSummary {
     /** The scan column (detail::findScanColumn) when NormalFileOptions::perScan: its ids are checked in pass 1. */
     std::optional<std::size_t> scanColumn;
     detail::ScanCensus census;
+    std::vector<std::uint16_t> sampleScans; ///< the sample's scan ids while the census is valid
     /** Neighbours are taken scan by scan: a valid scan column with two scans or more. */
     bool perScan() const { return scanColumn && census.valid() && census.scans() > 1; }
 };
@@ -92,7 +93,8 @@ Result<CloudSummary> summarise(const std::filesystem::path& input, const NormalF
     CloudSummary cloud;
     cloud.schema = reader.header().schema;
     if (options.perScan) cloud.scanColumn = detail::findScanColumn(cloud.schema.scalarNames);
-    const std::size_t heldBytes = heldBytesPerPoint(cloud.schema, options.writeQuality, cloud.scanColumn.has_value());
+    // The copies of the scan-by-scan estimation are charged once a second scan is met.
+    std::size_t heldBytes = heldBytesPerPoint(cloud.schema, options.writeQuality, false);
     cloud.bounds = {std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
                     std::numeric_limits<double>::max(), std::numeric_limits<double>::lowest(),
                     std::numeric_limits<double>::lowest(), std::numeric_limits<double>::lowest()};
@@ -110,9 +112,12 @@ Result<CloudSummary> summarise(const std::filesystem::path& input, const NormalF
         auto got = reader.read(batch, kBatchPoints);
         if (!got) return got.error();
         if (*got == 0) break;
-        if (cloud.scanColumn)
+        if (cloud.scanColumn) {
             for (double id : batch.scalars[*cloud.scanColumn])
                 if (!cloud.census.add(id)) break;
+            heldBytes = heldBytesPerPoint(cloud.schema, options.writeQuality, cloud.perScan());
+        }
+        const bool scanned = cloud.scanColumn && cloud.census.valid();
         for (std::size_t i = 0; i < batch.size(); ++i, ++cloud.points) {
             const double* p = &batch.positions[3 * i];
             for (int d = 0; d < 3; ++d) {
@@ -123,8 +128,10 @@ Result<CloudSummary> summarise(const std::filesystem::path& input, const NormalF
             std::size_t slot = kSampleSize;
             if (cloud.points < kSampleSize) {
                 cloud.sample.insert(cloud.sample.end(), p, p + 3);
+                if (scanned) cloud.sampleScans.push_back(std::uint16_t(batch.scalars[*cloud.scanColumn][i]));
             } else if ((slot = nextRandom(random) % (cloud.points + 1)) < kSampleSize) {
                 std::copy(p, p + 3, cloud.sample.begin() + std::ptrdiff_t(3 * slot));
+                if (scanned) cloud.sampleScans[slot] = std::uint16_t(batch.scalars[*cloud.scanColumn][i]);
             }
         }
         if (cloud.held && (cloud.points * heldBytes <= options.memoryBudget)) {
@@ -211,7 +218,10 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
                                   const io::PointSchema& outSchema, ProgressSink* progress)
 {
     NormalFileReport report;
-    report.margin = detail::estimateHaloMargin(cloud.sample, cloud.points, options.normals.neighbours);
+    // Scan by scan, a neighbourhood reaches as far as its own scan's density asks.
+    report.margin = cloud.perScan()
+        ? detail::perScanHaloMargin(cloud.sample, cloud.sampleScans, cloud.census, cloud.points, options.normals.neighbours)
+        : detail::estimateHaloMargin(cloud.sample, cloud.points, options.normals.neighbours);
     auto planned = planTiles(cloud, options, report.margin);
     if (!planned) return planned.error();
     const TilePlan& plan = *planned;
@@ -320,6 +330,7 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
         job.queryCount = own;
         job.normals = normals;
         job.quality = quality;
+        job.cloudPoints = cloud.points;
         const TileBox& box = plan.box(t);
         job.validBox = std::array<double, 6>{box.lo[0] - plan.margin(), box.lo[1] - plan.margin(),
                                              box.lo[2] - plan.margin(), box.hi[0] + plan.margin(),
@@ -327,7 +338,7 @@ Result<NormalFileReport> runTiled(const std::filesystem::path& output, const Clo
         const double share = 1.0 - kPass2;
         SubProgress tileProgress(progress, kPass2 + share * double(done) / double(cloud.points),
                                     kPass2 + share * double(done + own) / double(cloud.points));
-        auto estimated = cloud.perScan() ? detail::runNormalJobPerScan(job, scanIds, options.normals, &tileProgress)
+        auto estimated = cloud.perScan() ? detail::runNormalJobPerScan(job, scanIds, cloud.census, options.normals, &tileProgress)
                                          : detail::runNormalJob(job, options.normals, &tileProgress);
         if (!estimated) return estimated.error();
         addReport(report.normals, *estimated);
@@ -389,7 +400,8 @@ Result<NormalFileReport> estimateNormalsForFile(const std::filesystem::path& inp
             job.quality = quality;
             SubProgress estimateProgress(progress, kPass1, 0.95);
             auto estimated = cloud.perScan()
-                ? detail::runNormalJobPerScan(job, cloud.all.scalars[*cloud.scanColumn], options.normals, &estimateProgress)
+                ? detail::runNormalJobPerScan(job, cloud.all.scalars[*cloud.scanColumn], cloud.census, options.normals,
+                                              &estimateProgress)
                 : detail::runNormalJob(job, options.normals, &estimateProgress);
             if (!estimated) return estimated.error();
             report.normals = *estimated;

@@ -7,6 +7,8 @@
 #include "stylos/core/normals/NormalEstimation.h"
 
 #include <array>
+#include <cstdint>
+#include <limits>
 #include <optional>
 #include <span>
 
@@ -22,6 +24,9 @@ struct NormalJob {
     std::array<double, 3> centre{};    ///< orientation centre (AwayFromCentre; fallbacks of Unoriented)
     /** Lower x y z, upper x y z: a neighbourhood reaching past it is counted in NormalReport::truncated. */
     std::optional<std::array<double, 6>> validBox;
+    /** With validBox: the points of the whole cloud (or scan) the job's points come from. A neighbourhood of
+     *  fewer than k points is counted as truncated only when the cloud has more than it found. */
+    std::uint64_t cloudPoints = std::numeric_limits<std::uint64_t>::max();
 };
 
 /** Runs @p job; errors as estimateNormals() (the caller has already checked the sizes). */

@@ -1,5 +1,6 @@
 #include "ScanGroups.h"
 
+#include "TilePlan.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
@@ -27,19 +28,21 @@ bool ScanCensus::add(double id)
         return false;
     }
     const auto at = std::size_t(id);
-    if (!m_seen[at]) {
-        m_seen[at] = true;
-        ++m_scans;
-    }
+    if (m_points[at]++ == 0) ++m_scans;
     return true;
 }
 
 Result<NormalReport> runNormalJobPerScan(const NormalJob& job, std::span<const double> scans,
-                                         const NormalOptions& options, ProgressSink* progress)
+                                         const ScanCensus& census, const NormalOptions& options,
+                                         ProgressSink* progress)
 {
     const std::size_t total = job.positions.size() / 3, queries = job.queryCount;
-    if (total == 0 || std::all_of(scans.begin(), scans.end(), [&](double id) { return id == scans[0]; }))
-        return runNormalJob(job, options, progress);
+    if (total == 0) return runNormalJob(job, options, progress);
+    if (std::all_of(scans.begin(), scans.end(), [&](double id) { return id == scans[0]; })) {
+        NormalJob one = job;
+        one.cloudPoints = census.points(std::size_t(scans[0]));
+        return runNormalJob(one, options, progress);
+    }
     try {
         // The points of each scan, queries first: one counting sort by id.
         std::vector<std::uint32_t> start(MaxScanId + 2, 0), queryEnd(MaxScanId + 1, 0);
@@ -67,6 +70,7 @@ Result<NormalReport> runNormalJobPerScan(const NormalJob& job, std::span<const d
             part.queryCount = own;
             part.normals = normals;
             part.quality = quality;
+            part.cloudPoints = census.points(s);
             SubProgress partProgress(progress, double(done) / double(queries), double(done + own) / double(queries));
             auto estimated = runNormalJob(part, options, &partProgress);
             if (!estimated) return estimated.error();
@@ -86,6 +90,21 @@ Result<NormalReport> runNormalJobPerScan(const NormalJob& job, std::span<const d
         return Error{ErrorCode::OutOfBudget,
                      "normal estimation: out of memory separating the scans of " + std::to_string(total) + " points"};
     }
+}
+
+double perScanHaloMargin(std::span<const double> sample, std::span<const std::uint16_t> sampleScans,
+                         const ScanCensus& census, std::uint64_t totalPoints, std::size_t k)
+{
+    double margin = estimateHaloMargin(sample, totalPoints, k);
+    std::vector<std::vector<double>> parts(std::size_t(MaxScanId) + 1);
+    for (std::size_t i = 0; i < sampleScans.size(); ++i)
+        parts[sampleScans[i]].insert(parts[sampleScans[i]].end(), &sample[3 * i], &sample[3 * i] + 3);
+    for (std::size_t s = 0; s < parts.size(); ++s) {
+        if (parts[s].size() / 3 < 2 * k) continue;
+        const double own = estimateHaloMargin(parts[s], census.points(s), k);
+        if (std::isfinite(own)) margin = std::max(margin, own);
+    }
+    return margin;
 }
 
 } // namespace stylos::core::normals::detail

@@ -5,7 +5,7 @@
  * Passes over the input (read through io::openPointReader, so any supported format):
  *  1. count, bounds, centroid and a uniform random sample of 65,536 points (fixed seed). If the whole
  *     cloud fits the memory budget it is kept from this pass and estimated in one piece: the output is
- *     then exactly what estimateNormals() gives, in input order.
+ *     then exactly what estimateNormals() gives (scan by scan: what it gives each scan), in input order.
  *  2. otherwise the cloud is cut into 2^L tiles (median splits of the sample along the longest side of
  *     each cell, so the grid follows the cloud's longest axes; L is the smallest level at which every
  *     tile, with its halo, fits the budget by the sample's count). Each point is written to its tile's
@@ -20,7 +20,10 @@
  * [0, 65535]) with two scans or more, each point's neighbours are taken from its own scan only (perScan, on by
  * default): where registered scans overlap, their sheets of points lie a registration error apart, and a
  * neighbourhood across them tilts the normal. The ids are checked in pass 1; a column with any other value is
- * not a scan column and the cloud is estimated whole. Halo records then carry the scan id.
+ * not a scan column and the cloud is estimated whole. Halo records then carry the scan id, and the halo margin is
+ * the largest of the scans' own (a scan is sparser than the merged cloud). Memory: the scan-by-scan copies are
+ * charged per point once a second scan is met (a cloud near the budget may then be tiled, its output in tile
+ * order, where `perScan = false` keeps it whole).
  *
  * Output: x y z (double), nx ny nz (float), the input's colours and scalar columns (as double), and
  * "surface_variation" (float) if asked. Normals the input already had are replaced. ORDER: tile by tile
@@ -30,7 +33,8 @@
  * Files: the temporary folder ".OUTNAME.normals-XXXXXXXX" is made next to the output (or in
  * std::filesystem::temp_directory_path() if that fails) and removed in every case; the output is written
  * through PlyWriter (temporary name, renamed at the end): an error or a cancel leaves nothing behind.
- * Disk: about (record + 24 × halo fraction) bytes per point of temporary space while tiled.
+ * Disk: about (record + 24 × halo fraction) bytes per point of temporary space while tiled (32 × halo fraction
+ * scan by scan).
  *
  * Units: metres. Thread-safety: reentrant; uses NormalOptions::threads worker threads.
  */
