@@ -162,6 +162,7 @@ void MainWindow::createMenus()
     m_fileMenu = menuBar()->addMenu(QString());
     m_fileMenu->setObjectName(QStringLiteral("menuFile"));
     m_projectActions->populate(*m_fileMenu);
+    m_projectActions->setRebuiltProject(m_demo->projectPath());
 
     m_actions = new MainActions(*m_document, m_viewport, m_translations, *this);
     QMenu* viewMenu = m_actions->populate(*menuBar());

@@ -47,7 +47,9 @@ ProjectActions::ProjectActions(widgets::SceneDocument& document, widgets::ScanIm
     m_new->setShortcut(QKeySequence::New);
     m_open->setShortcut(QKeySequence::Open);
     m_save->setShortcut(QKeySequence::Save);
-    m_saveAs->setShortcut(QKeySequence::SaveAs);
+    // Qt gives SaveAs no keys outside GNOME, KDE and macOS (so none on Windows or other desktops).
+    m_saveAs->setShortcut(QKeySequence(QKeySequence::SaveAs).isEmpty() ? QKeySequence(Qt::CTRL | Qt::SHIFT | Qt::Key_S)
+                                                                       : QKeySequence(QKeySequence::SaveAs));
     m_import->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_I));
     m_quit->setShortcut(QKeySequence::Quit);
     m_quit->setMenuRole(QAction::QuitRole);
@@ -141,7 +143,17 @@ bool ProjectActions::openProject(const QString& path)
 bool ProjectActions::save()
 {
     if (m_document.projectPath().isEmpty()) return saveAs();
+    if (isRebuilt(m_document.projectPath())) {
+        Q_EMIT reported(tr("The demo is rebuilt when it is opened again: save your work as a project of your own."),
+                        false);
+        return saveAs();
+    }
     return saveTo(m_document.projectPath());
+}
+
+bool ProjectActions::isRebuilt(const QString& path) const
+{
+    return !m_rebuiltProject.isEmpty() && QFileInfo(path).absoluteFilePath() == m_rebuiltProject;
 }
 
 bool ProjectActions::saveAs()
@@ -159,6 +171,12 @@ bool ProjectActions::saveAs()
 
 bool ProjectActions::saveTo(const QString& path)
 {
+    if (isRebuilt(path)) {
+        Q_EMIT reported(tr("Could not save %1: it is the demo's own project, rebuilt when the demo is opened again. "
+                           "Choose another file.").arg(QDir::toNativeSeparators(path)),
+                        true);
+        return false;
+    }
     const core::scene::GatherPlan plan = m_document.octreeGatherPlan(path);
     auto copies = widgets::SceneDocument::OctreeCopies::All;
     if (m_prompts && plan.copyBytes > static_cast<std::uintmax_t>(AskBeforeCopying)) {

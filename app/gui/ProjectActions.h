@@ -8,6 +8,7 @@
  *        folder travels whole; cleanOctreeCache() keeps the cache to what something uses. Outcomes go out as messages (reported()) for the
  *        window to log and show. GUI thread only.
  */
+#include <QFileInfo>
 #include <QObject>
 #include <QStringList>
 #include <QUrl>
@@ -51,6 +52,8 @@ public:
     /** @brief Saves (asking for a file when never saved); false when it failed or was cancelled. */
     bool save();
     bool saveAs();
+    /** Saves to @p path, asking first when big octrees would be copied into its folder. */
+    bool saveTo(const QString& path);
     /**
      * @brief When the project has unsaved changes, asks to save them: true to go on (saved or discarded),
      *        false to stop. Without prompts (automation), changes are discarded.
@@ -58,6 +61,9 @@ public:
     bool maybeSave();
     /** @brief Whether dialogs may be shown (false for automation and tests). */
     void setPromptsEnabled(bool enabled) { m_prompts = enabled; }
+    /** The demo's project: rebuilt whenever its generator's output differs, so never saved over. Save on it asks
+     *  for a project of one's own (Save as); saving as that file is refused. */
+    void setRebuiltProject(const QString& path) { m_rebuiltProject = QFileInfo(path).absoluteFilePath(); }
 
     /** @brief Recent projects, most recent first (existing or not). */
     static QStringList recentProjects();
@@ -88,8 +94,6 @@ private:
     void chooseProject();
     void importScans();
     void addRecent(const QString& path);
-    /** Saves to @p path, asking first when big octrees would be copied into its folder. */
-    bool saveTo(const QString& path);
     void rebuildRecentMenu();
 
     widgets::SceneDocument& m_document;
@@ -102,7 +106,9 @@ private:
     QAction* m_import;
     QAction* m_quit;
     QMenu* m_recent;
+    bool isRebuilt(const QString& path) const;
     bool m_prompts = true;
+    QString m_rebuiltProject;
 };
 
 } // namespace stylos::app

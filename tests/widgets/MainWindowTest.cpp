@@ -17,6 +17,7 @@
 #include "stylos/core/scene/SceneEigen.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/document/ScanImporter.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/document/SceneTreeModel.h"
@@ -52,6 +53,7 @@ private Q_SLOTS:
     void removesTheSelectionInOneUndoStep();
     void assembliesFromTheSelectionMoveAsOneInTheView();
     void savesAndReopensTheProject();
+    void theDemosProjectIsNeverSavedOver();
     void developpeeClickMarksThe3dPointAndBack();
     void computesTheSkydomeOfTheSelection();
     void switchesTheLanguageFromTheMenu();
@@ -362,6 +364,46 @@ void MainWindowTest::savesAndReopensTheProject()
     QVERIFY(window->document().octree(f.id) != nullptr);
     QVERIFY(!window->isWindowModified());
     QCOMPARE(app::ProjectActions::recentProjects().value(0), QFileInfo(path).absoluteFilePath());
+}
+
+void MainWindowTest::theDemosProjectIsNeverSavedOver()
+{
+    // The demo's project is rebuilt whenever it differs from what its generator makes (a fragment more, say):
+    // work saved into it would be lost at the next start, so Save asks for a file of one's own instead.
+    auto window = makeWindow();
+    importAndWait(*window, {QString::fromStdString(m_drum.poct.string())});
+    const QString demo = window->demo().projectPath();
+    QVERIFY(QDir().mkpath(QFileInfo(demo).absolutePath()));
+    QString error;
+    QVERIFY2(window->document().saveAs(demo, &error), qPrintable(error)); // as the demo's generator would
+    const auto bytes = [](const QString& path) {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    };
+    const QByteArray before = bytes(demo);
+    QVERIFY(!before.isEmpty());
+    const auto id = window->document().scene().fragments()[0].id;
+    QVERIFY(window->document().setFragmentPose(id, core::scene::Pose().withTranslation({0.5, 0, 0})));
+    QSignalSpy reports(&window->projectActions(), &app::ProjectActions::reported);
+    QVERIFY(!window->projectActions().save()); // no prompts in tests: Save as is not answered
+    QVERIFY(window->isWindowModified());
+    QCOMPARE(bytes(demo), before);
+    QVERIFY(!reports.isEmpty());
+    QVERIFY(reports.first().at(0).toString().contains(QStringLiteral("save your work as a project of your own")));
+    QVERIFY(!reports.first().at(1).toBool());
+    // Saving as that very file is refused, naming it.
+    reports.clear();
+    QVERIFY(!window->projectActions().saveTo(demo));
+    QCOMPARE(bytes(demo), before);
+    QCOMPARE(reports.size(), 1);
+    QVERIFY(reports.first().at(0).toString().contains(QDir::toNativeSeparators(demo)));
+    QVERIFY(reports.first().at(1).toBool());
+    // Another file saves as ever.
+    const QString mine = m_dir.filePath("mine.stylos");
+    QVERIFY(window->projectActions().saveTo(mine));
+    QVERIFY(!window->isWindowModified());
+    // The shortcut of Save as is there on every desktop.
+    QVERIFY(!window->findChild<QAction*>(QStringLiteral("actionSaveAs"))->shortcut().isEmpty());
 }
 
 void MainWindowTest::developpeeClickMarksThe3dPointAndBack()
