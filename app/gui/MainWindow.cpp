@@ -250,7 +250,7 @@ void MainWindow::connectDocument()
     });
     connect(m_importer, &widgets::ScanImporter::importsFinished, this, [this](const QStringList& errors) {
         // Each error is in the log already (importFailed); one box says it all.
-        if (errors.isEmpty() || !m_errorDialogs) return;
+        if (errors.isEmpty() || !m_errorDialogs || m_closing) return;
         auto* box = new QMessageBox(QMessageBox::Warning, tr("Stylos"),
                                     errors.size() == 1 ? errors.first()
                                                        : tr("%n scan(s) could not be imported:", nullptr,
@@ -360,7 +360,7 @@ void MainWindow::report(const QString& message, bool failed)
 {
     m_logDock->append(failed ? LogDock::Level::Error : LogDock::Level::Info, message);
     m_message->showMessage(message, 8000); // its first line, cut with "…" to the width; the whole as its tooltip
-    if (!failed || !m_errorDialogs) return;
+    if (!failed || !m_errorDialogs || m_closing) return; // no window comes up once this one has closed
     // Window-modal and non-blocking: the event loop, and every task, keep running.
     auto* box = new QMessageBox(QMessageBox::Warning, tr("Stylos"), message, QMessageBox::Ok, this);
     box->setObjectName(QStringLiteral("errorBox"));
@@ -393,7 +393,9 @@ void MainWindow::closeEvent(QCloseEvent* event)
     settings.setValue(GeometryKey, saveGeometry());
     settings.setValue(StateKey, saveState());
     m_developpeeDock->saveSettings();
-    // Every job checks for Cancel between steps: this returns within a fraction of a second.
+    // Every job checks for Cancel between steps: this returns within a fraction of a second. What the cancelled
+    // jobs then report goes to the log only.
+    m_closing = true;
     m_tasks->cancelAllAndWait();
     event->accept();
 }

@@ -117,6 +117,7 @@ private:
     widgets::TaskManager* m_tasks;
     widgets::SceneDocument* m_document;
     widgets::ScanImporter* m_importer;
+    bool m_closing = false; ///< closeEvent accepted: no more dialogs
     widgets::DemoScene* m_demo;
     widgets::SkydomeRunner* m_skydome;
     widgets::ViewportWidget* m_viewport = nullptr;

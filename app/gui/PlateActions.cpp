@@ -106,6 +106,7 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
     const auto sources = sourcesOf(m_document);
     struct Outcome {
         QString error;
+        bool cancelled = false;
     };
     const QString name = QFileInfo(path).fileName();
     auto* watcher = m_document.tasks().start<Outcome>(
@@ -115,12 +116,16 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
             Outcome out;
             auto plate = plate::composePlate(*sources, spec, {}, &progress);
             if (plate) plate->texts = texts;
-            if (!plate) out.error = QString::fromStdString(plate.error().message);
-            else if (auto s = plate::writePlate(*plate, file); !s) out.error = QString::fromStdString(s.error().message);
+            if (!plate) {
+                out.error = QString::fromStdString(plate.error().message);
+                out.cancelled = plate.error().code == core::ErrorCode::Cancelled;
+            } else if (auto s = plate::writePlate(*plate, file); !s) {
+                out.error = QString::fromStdString(s.error().message);
+            }
             promise.addResult(out);
         });
     connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher, path] {
-        if (watcher->isCanceled() || watcher->future().resultCount() == 0) {
+        if (watcher->isCanceled() || watcher->future().resultCount() == 0 || watcher->result().cancelled) {
             Q_EMIT reported(tr("Drawing the plate was cancelled"), false);
             Q_EMIT plateFinished(false);
             return;
@@ -135,8 +140,10 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
 void PlateActions::chooseViewImage()
 {
     bool ok = false;
-    const int width = QInputDialog::getInt(&m_window, tr("Export view image"), tr("Width in pixels"), 4000, 16, 100000,
-                                           100, &ok);
+    const int width = QInputDialog::getInt(&m_window, tr("Export view image"),
+                                           tr("Width in pixels (the whole image at most %L1 million pixels)")
+                                               .arg(cp::PanelRenderOptions{}.maxPixels / 1000000),
+                                           4000, 16, 100000, 100, &ok);
     if (!ok) return;
     const QString path = QFileDialog::getSaveFileName(&m_window, tr("Export view image"), QString(),
                                                       tr("PNG (*.png);;TIFF (*.tif *.tiff)"));
@@ -158,6 +165,7 @@ void PlateActions::exportViewImage(int widthPx, const QString& path)
     const auto sources = sourcesOf(m_document);
     struct Outcome {
         QString error;
+        bool cancelled = false;
     };
     auto* watcher = m_document.tasks().start<Outcome>(
         tr("Rendering the view %1").arg(QFileInfo(path).fileName()),
@@ -168,15 +176,23 @@ void PlateActions::exportViewImage(int widthPx, const QString& path)
                 panel.shading = cp::PanelShading::Headlight; // not every octree has its skydome
                 image = cp::renderViewImage(*sources, panel, widthPx, {}, &progress);
             }
-            if (!image) out.error = QString::fromStdString(image.error().message);
-            else if (auto s = plate::writePanelImage(image->image, file, 8); !s) out.error = QString::fromStdString(s.error().message);
+            if (!image) {
+                out.error = QString::fromStdString(image.error().message);
+                out.cancelled = image.error().code == core::ErrorCode::Cancelled;
+            } else if (auto s = plate::writePanelImage(image->image, file, 8); !s) {
+                out.error = QString::fromStdString(s.error().message);
+            }
             promise.addResult(out);
         });
     connect(watcher, &QFutureWatcher<Outcome>::finished, this, [this, watcher, path] {
-        const bool done = !watcher->isCanceled() && watcher->future().resultCount() > 0;
-        const Outcome o = done ? watcher->result() : Outcome{tr("cancelled")};
+        if (watcher->isCanceled() || watcher->future().resultCount() == 0 || watcher->result().cancelled) {
+            Q_EMIT reported(tr("Rendering the view image %1 was cancelled").arg(QDir::toNativeSeparators(path)), false);
+            Q_EMIT plateFinished(false);
+            return;
+        }
+        const Outcome o = watcher->result();
         if (o.error.isEmpty()) Q_EMIT reported(tr("Wrote the view image %1").arg(QDir::toNativeSeparators(path)), false);
-        else Q_EMIT reported(tr("Could not render the view: %1").arg(o.error), true);
+        else Q_EMIT reported(tr("Could not render the view image %1: %2").arg(QDir::toNativeSeparators(path), o.error), true);
         Q_EMIT plateFinished(o.error.isEmpty());
     });
 }

@@ -39,6 +39,7 @@ private Q_SLOTS:
     void previewDrawsAndRefusesWhatDoesNotFit();
     void exportDrawsUnsavedLabelsAndKeepsThePlate();
     void viewImageIsTheChosenWidthAlongTheCamera();
+    void aCancelledExportIsNoError();
 
 private:
     core::scene::FragmentId addDrum(widgets::SceneDocument& document) const;
@@ -179,6 +180,42 @@ void PlateExportTest::viewImageIsTheChosenWidthAlongTheCamera()
     QVERIFY2(std::abs(image.height() - 800) <= 80, qPrintable(QString::number(image.height())));
     QVERIFY(qGray(image.pixel(400, image.height() / 2)) < 255);
     QCOMPARE(qGray(image.pixel(2, 2)), 255); // paper in the corner
+}
+
+void PlateExportTest::aCancelledExportIsNoError()
+{
+    // Cancelled from the Tasks dock, or by quitting: said in the log, never in an error box (a box that came up
+    // after the window had closed kept the application running without a window).
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    QVERIFY(addDrum(document) != 0);
+    QWidget window;
+    widgets::DeveloppeeView view;
+    app::PlateActions actions(document, view, window);
+    const Eigen::Quaterniond top = core::view::Camera::standardOrientation(core::view::StandardView::Top);
+    actions.setCameraSource([top] { return std::optional<std::array<double, 4>>({top.w(), top.x(), top.y(), top.z()}); });
+    QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
+    QSignalSpy reported(&actions, &app::PlateActions::reported);
+    const QString png = m_dir.filePath(QStringLiteral("cancelled.png"));
+    actions.exportViewImage(12000, png);
+    tasks.cancelAll();
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(finished.at(0).at(0).toBool(), false);
+    QCOMPARE(reported.count(), 1);
+    QCOMPARE(reported.at(0).at(0).toString(),
+             QStringLiteral("Rendering the view image %1 was cancelled").arg(QDir::toNativeSeparators(png)));
+    QCOMPARE(reported.at(0).at(1).toBool(), false);
+    QVERIFY(!QFile::exists(png));
+
+    // Too large: the error names the image asked for.
+    reported.clear();
+    actions.exportViewImage(100000, png);
+    QVERIFY(finished.wait(60000));
+    QCOMPARE(reported.count(), 1);
+    QVERIFY2(reported.at(0).at(0).toString().startsWith(
+                 QStringLiteral("Could not render the view image %1: ").arg(QDir::toNativeSeparators(png))),
+             qPrintable(reported.at(0).at(0).toString()));
+    QCOMPARE(reported.at(0).at(1).toBool(), true);
 }
 
 STYLOS_WIDGET_TEST_MAIN(PlateExportTest)
