@@ -170,7 +170,9 @@ void DeveloppeeLink::compute()
     }
     const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), id, settings);
     const QString name = QString::fromStdString(f->name);
-    const auto deliver = [this, name](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
+    // A fragment unrolled about its drum's axis must stand where it belongs on the drum.
+    const bool drumAxis = settings.axis && guidesOwner(*f) != id && guidesOwner(*f) != core::scene::NoFragment;
+    const auto deliver = [this, name, drumAxis](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
         if (future.resultCount() == 0) { // cancelled from the Tasks dock
             Q_EMIT finished(tr("Développée of %1 cancelled").arg(name), false);
             return;
@@ -179,6 +181,11 @@ void DeveloppeeLink::compute()
         if (result.ok()) m_document.setDeveloppee(key, std::make_shared<const widgets::DeveloppeeResult>(result));
         if (m_dock.fragmentId() == key) m_dock.showResult(result);
         if (result.ok()) Q_EMIT finished(widgets::DeveloppeePanel::fitSummary(result), false);
+        else if (drumAxis && result.errorCode == core::ErrorCode::InvalidArgument)
+            Q_EMIT finished(tr("%1 is unrolled about its drum's axis guide and does not stand on the drum yet: dock it "
+                               "first, or untick Use the axis guide to unroll it about a cylinder fitted to itself.")
+                                    .arg(name) + QLatin1Char('\n') + result.error,
+                            true);
         else Q_EMIT finished(result.error, true);
     };
     if (m_jobs.start<widgets::DeveloppeeResult>(id, job.label(), job, deliver)) m_dock.setBusy(true);

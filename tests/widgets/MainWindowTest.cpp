@@ -28,6 +28,7 @@
 #include <QAction>
 #include <QMenu>
 #include <QMenuBar>
+#include <QPushButton>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -285,6 +286,16 @@ void MainWindowTest::assembliesFromTheSelectionMoveAsOneInTheView()
     const auto expectedPoint = toMember.apply(axisPoint);
     QVERIFY(std::abs(expectedPoint[0]) > 0.1); // not the identity
     for (int k = 0; k < 3; ++k) QVERIFY(std::abs(offered->point[k] - expectedPoint[k]) < 1e-12);
+    // Away from the drum (not docked yet), its développée about the drum's axis finds no point on the drum's
+    // cylinder: the error says what to do.
+    auto* compute = window->developpeePanel().findChild<QPushButton*>(QStringLiteral("developpeeCompute"));
+    QVERIFY(compute && compute->isEnabled());
+    const int errorsBefore = window->logDock().errorCount();
+    compute->click();
+    QTRY_VERIFY_WITH_TIMEOUT(window->logDock().errorCount() == errorsBefore + 1, 60000);
+    QVERIFY2(window->logDock().text().contains(
+                 QStringLiteral("is unrolled about its drum's axis guide and does not stand on the drum yet: dock it first")),
+             qPrintable(window->logDock().text()));
 
     // The assembly's développée: the drum's, with the member drawn at its place (here the same drum turned
     // about its axis, so on its surface everywhere: it covers the drum's développée).
