@@ -166,13 +166,14 @@ void ScanImporterTest::aBrokenFileIsNamedAndNothingIsAdded()
     QSignalSpy failed(&importer, &ScanImporter::importFailed);
     QSignalSpy finished(&importer, &ScanImporter::importsFinished);
 
-    QCOMPARE(importer.importFiles({broken, notOctree, folder + "/absent.ply"}), 3);
+    const QString laz = stylos::test::writeFile(folder, "site.laz", "LASF compressed");
+    QCOMPARE(importer.importFiles({broken, notOctree, folder + "/absent.ply", laz}), 4);
     QVERIFY(tasks.waitForIdle(30000));
-    QCOMPARE(failed.size(), 3);
+    QCOMPARE(failed.size(), 4);
     QCOMPARE(finished.size(), 1);
     const QStringList errors = finished.at(0).at(0).toStringList();
-    QCOMPARE(errors.size(), 3);
-    QString brokenMessage, fakeMessage, absentMessage;
+    QCOMPARE(errors.size(), 4);
+    QString brokenMessage, fakeMessage, absentMessage, lazMessage;
     for (const auto& args : failed) {
         const QString path = args.at(0).toString();
         const QString message = args.at(1).toString();
@@ -180,7 +181,11 @@ void ScanImporterTest::aBrokenFileIsNamedAndNothingIsAdded()
         if (path == broken) brokenMessage = message;
         if (path == notOctree) fakeMessage = message;
         if (path.endsWith("absent.ply")) absentMessage = message;
+        if (path == laz) lazMessage = message;
     }
+    // A LAZ among other scans is not dropped without a word: it says what to do.
+    QVERIFY2(lazMessage.startsWith("Could not import site.laz: ") && lazMessage.contains("decompress it first"),
+             qPrintable(lazMessage));
     QVERIFY2(brokenMessage.startsWith("Could not import broken.ply: "), qPrintable(brokenMessage));
     QVERIFY(brokenMessage.contains(broken)); // the core's detail names the full path
     QVERIFY2(fakeMessage.startsWith("Could not import fake.poct: the file format is not recognised."), qPrintable(fakeMessage));
@@ -230,14 +235,14 @@ void ScanImporterTest::cancelLeavesNothing()
 void ScanImporterTest::dialogsAndDropsUseTheCoreListOfExtensions()
 {
     QCOMPARE(ScanImporter::fileFilter(),
-             QStringLiteral("Scans and octrees (*.ply *.las *.e57 *.ptx *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.poct);;"
+             QStringLiteral("Scans and octrees (*.ply *.las *.e57 *.ptx *.xyz *.xyzn *.asc *.csv *.pts *.txt *.neu *.obj *.laz *.poct);;"
                             "Packed octrees (*.poct);;All files (*)"));
     QVERIFY(ScanImporter::canImport(QStringLiteral("/data/Drum.PLY")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("scan.neu")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("drum.poct")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("site.E57")));
     QVERIFY(ScanImporter::canImport(QStringLiteral("site.ptx")));
-    QVERIFY(!ScanImporter::canImport(QStringLiteral("scan.laz")));
+    QVERIFY(ScanImporter::canImport(QStringLiteral("scan.laz"))); // refused on import, with what to do
     QVERIFY(!ScanImporter::canImport(QStringLiteral("notes.pdf")));
     // A drop takes projects and importable files, local ones only, in their order.
     auto local = [](const char* path) { return QUrl::fromLocalFile(QString::fromLatin1(path)); };
@@ -245,7 +250,7 @@ void ScanImporterTest::dialogsAndDropsUseTheCoreListOfExtensions()
                            local("/d/p.stylos"), local("/d/e.e57"), local("/d/f.Poct"), local("/d/g.laz")};
     QCOMPARE(stylos::app::ProjectActions::openableFiles(urls),
              (QStringList{QStringLiteral("/d/a.las"), QStringLiteral("/d/p.stylos"), QStringLiteral("/d/e.e57"),
-                          QStringLiteral("/d/f.Poct")}));
+                          QStringLiteral("/d/f.Poct"), QStringLiteral("/d/g.laz")}));
     QVERIFY(stylos::app::ProjectActions::openableFiles({local("/d/b.pdf")}).isEmpty());
 }
 

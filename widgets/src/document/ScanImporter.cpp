@@ -58,16 +58,20 @@ QString ScanImporter::outputDirectory() const
 
 QString ScanImporter::fileFilter()
 {
+    // Every point format Stylos knows, the ones it cannot read (LAZ) too: choosing one gives the reader's
+    // message (what to do instead), where a filter without it would drop the file without a word.
     QStringList patterns;
-    for (const std::string& extension : core::io::importableExtensions())
-        patterns << QStringLiteral("*.") + QString::fromStdString(extension);
+    for (const core::io::PointFileExtension& e : core::io::pointFileExtensions())
+        patterns << QStringLiteral("*.") + QString::fromLatin1(e.extension.data(), qsizetype(e.extension.size()));
+    patterns << QStringLiteral("*.poct");
     return tr("Scans and octrees (%1)").arg(patterns.join(QLatin1Char(' '))) + QStringLiteral(";;") +
            tr("Packed octrees (*.poct)") + QStringLiteral(";;") + tr("All files (*)");
 }
 
 bool ScanImporter::canImport(const QString& path)
 {
-    return core::io::hasImportableExtension(path.toStdString());
+    const std::filesystem::path file = path.toStdString();
+    return core::io::hasPoctExtension(file) || core::io::formatFromExtension(file) != core::io::PointFormat::Unknown;
 }
 
 int ScanImporter::importFiles(const QStringList& paths)

@@ -63,10 +63,11 @@ public:
 
     /**
      * @brief The file dialog's name filter: every importable extension (core::io::importableExtensions(),
-     *        the readable point formats and `.poct`), then `.poct` alone, then all files.
+     *        every point format Stylos knows, LAZ included, and `.poct`), then `.poct` alone, then all files.
      */
     static QString fileFilter();
-    /** @brief Whether @p path's extension is importable (what a drop onto the window accepts). */
+    /** @brief Whether @p path's extension is a point format Stylos knows or `.poct` (what a drop onto the window
+     *         accepts). A known format it cannot read (LAZ) is accepted so that its import says what to do. */
     static bool canImport(const QString& path);
 
 Q_SIGNALS:
