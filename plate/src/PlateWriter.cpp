@@ -14,7 +14,10 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
+#include <cstdio>
+#include <cstring>
 
 namespace stylos::plate {
 
@@ -38,8 +41,9 @@ Status finish(const fs::path& partial, const fs::path& output)
     std::error_code error;
     fs::rename(partial, output, error);
     if (error) {
+        const std::string why = error.message();
         fs::remove(partial, error);
-        return Error::at(ErrorCode::WriteFailed, output.string(), {}, "cannot rename the finished file into place");
+        return Error::at(ErrorCode::WriteFailed, output.string(), {}, "cannot rename the finished file into place: " + why);
     }
     return {};
 }
@@ -55,6 +59,17 @@ Status discard(const fs::path& partial, Error error)
 Status failed(const fs::path& partial, const fs::path& output, const std::string& why)
 {
     return discard(partial, Error::at(ErrorCode::WriteFailed, output.string(), {}, why));
+}
+
+/** Creates @p partial empty, so that a folder that cannot take it is named with the system's reason (Qt's PDF and
+ *  SVG writers only say that they could not start). */
+Status createPartial(const fs::path& partial, const fs::path& output)
+{
+    std::FILE* file = std::fopen(partial.c_str(), "wb");
+    if (!file) return Error::at(ErrorCode::WriteFailed, output.string(), {}, std::string("cannot create the file: ") +
+                                                                             std::strerror(errno));
+    std::fclose(file);
+    return {};
 }
 
 /** Replaces the clock- and random-dependent parts of a Qt PDF by fixed text of the same length. */
@@ -89,6 +104,7 @@ bool makeReproducible(const fs::path& path)
 Status writePdf(const PlateContent& plate, const fs::path& output)
 {
     const fs::path partial = partialPath(output);
+    if (Status created = createPartial(partial, output); !created) return created;
     // Qt keeps the PDF's fonts in a QHash: with the per-process random seed their objects come out in a
     // different order from one run to the next. A fixed seed makes the bytes the same.
     QHashSeed::setDeterministicGlobalSeed();
@@ -114,6 +130,7 @@ Status writePdf(const PlateContent& plate, const fs::path& output)
 Status writeSvg(const PlateContent& plate, const fs::path& output)
 {
     const fs::path partial = partialPath(output);
+    if (Status created = createPartial(partial, output); !created) return created;
     const auto& page = plate.layout.page;
     {
         QSvgGenerator svg;

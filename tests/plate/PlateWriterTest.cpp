@@ -247,6 +247,23 @@ TEST(PlateWriter, TooLargeAPanelWritesNothing)
     EXPECT_EQ(plate::plateFormatOf("x.jpg"), std::nullopt);
 }
 
+TEST(PlateWriter, AFolderThatCannotTakeTheFileIsNamedWithTheReason)
+{
+    auto plate = compose(developpeeSpec());
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path notAFolder = *fixture().dir / "afile";
+    { std::ofstream(notAFolder) << "x"; }
+    for (const char* name : {"plate.pdf", "plate.svg", "plate.png"}) {
+        const fs::path output = notAFolder / name;
+        const auto written = plate::writePlate(*plate, output);
+        ASSERT_FALSE(written.ok()) << name;
+        EXPECT_EQ(written.error().code, core::ErrorCode::WriteFailed) << name;
+        EXPECT_NE(written.error().message.find(output.string()), std::string::npos) << written.error().message;
+        EXPECT_NE(written.error().message.find("Not a directory"), std::string::npos) << written.error().message;
+    }
+    EXPECT_EQ(bytesOf(notAFolder), "x");
+}
+
 int main(int argc, char** argv)
 {
     int qtArgc = 3;
