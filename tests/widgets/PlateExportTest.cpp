@@ -18,6 +18,8 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QDialogButtonBox>
+#include <QCheckBox>
+#include <QComboBox>
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
@@ -102,6 +104,17 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
     QVERIFY(updated.wait(60000));
     QVERIFY2(dialog.messageLabel()->text().contains(QStringLiteral("use 1:")), qPrintable(dialog.messageLabel()->text()));
     QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
+    QVERIFY(dialog.previewImage().isNull()); // not the last page that fitted
+
+    // A journal's print area: no margin, and the box turns the page as stated.
+    auto* page = dialog.findChildren<QComboBox*>().first();
+    auto* turned = dialog.findChildren<QCheckBox*>().first();
+    auto* margin = dialog.findChild<QDoubleSpinBox*>();
+    QCOMPARE(turned->text(), QStringLiteral("Landscape"));
+    page->setCurrentIndex(page->findData(QStringLiteral("170x105")));
+    QCOMPARE(margin->value(), 0.0);
+    QCOMPARE(turned->text(), QStringLiteral("Turned (105 × 170 mm)"));
+    QCOMPARE(dialog.spec().marginMm, 0.0);
 }
 
 void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()

@@ -137,7 +137,8 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
         return Error{ErrorCode::InvalidArgument, "the panels" + std::string(legendRows > 0 ? ", the legend" : "") +
                                                      (captionMm > 0 ? " and the caption" : "") + " need " +
                                                      mm(bottom - area.y) + " mm of height; " + pageText +
-                                                     ": use a smaller scale, a larger page or landscape"};
+                                                     ": use a smaller scale, a larger page or the page " +
+                                                     (spec.landscape ? "upright" : "in landscape")};
     return out;
 }
 

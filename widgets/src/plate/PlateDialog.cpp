@@ -38,6 +38,9 @@ constexpr int kPreviewHeight = 520;
 enum Column { ViewColumn, ScaleColumn, ShadingColumn, LayerColumn, HatchColumn, FragmentColumn, ColumnCount };
 const char* const kPages[] = {"A4", "A3", "letter", "170x105", "205x135"};
 
+/** The journals' print areas (the last two pages above): drawn without margins. */
+bool isPrintArea(const QString& page) { return page == QLatin1String("170x105") || page == QLatin1String("205x135"); }
+
 struct Preview {
     QImage image;
     QString error;
@@ -164,7 +167,12 @@ PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const 
         schedulePreview();
     });
     connect(m_template, &QComboBox::activated, this, &PlateDialog::applyTemplate);
-    connect(m_page, &QComboBox::currentIndexChanged, this, &PlateDialog::schedulePreview);
+    connect(m_page, &QComboBox::currentIndexChanged, this, [this] {
+        // The journal print areas are the printed area itself: no margin (docs/plates.md).
+        if (isPrintArea(m_page->currentData().toString())) m_margin->setValue(0);
+        retranslateUi();
+        schedulePreview();
+    });
     connect(m_landscape, &QCheckBox::toggled, this, &PlateDialog::schedulePreview);
     connect(m_margin, &QDoubleSpinBox::valueChanged, this, &PlateDialog::schedulePreview);
     connect(m_legend, &QCheckBox::toggled, this, &PlateDialog::schedulePreview);
@@ -180,7 +188,12 @@ PlateDialog::~PlateDialog() = default;
 void PlateDialog::retranslateUi()
 {
     setWindowTitle(tr("Export plate"));
-    m_landscape->setText(tr("Landscape"));
+    // A named page is portrait and turns to landscape; a W×H page is as stated and the box turns it.
+    const QString page = m_page->currentData().toString();
+    const auto size = cp::pageFromName(page.toStdString());
+    m_landscape->setText(page.contains(QLatin1Char('x'), Qt::CaseInsensitive) && size
+                             ? tr("Turned (%1 × %2 mm)").arg(size->heightMm).arg(size->widthMm)
+                             : tr("Landscape"));
     m_legend->setText(tr("Legend of the annotation classes"));
     m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Export…"));
     m_panels->setHorizontalHeaderLabels({tr("View"), tr("Scale 1:"), tr("Shading"), tr("Annotation"), tr("Hatches"), tr("Fragment")});
@@ -372,6 +385,8 @@ void PlateDialog::startPreview()
             m_preview->setPixmap(QPixmap::fromImage(p.image));
             m_message->clear();
         } else {
+            m_image = QImage(); // not the last page that fitted: nothing is shown that would not be exported
+            m_preview->clear();
             m_message->setText(p.error);
         }
         m_buttons->button(QDialogButtonBox::Ok)->setEnabled(p.error.isEmpty());
