@@ -326,6 +326,10 @@
         <source>Développée of %1: %2</source>
         <translation>Ανάπτυγμα του %1: %2</translation>
     </message>
+    <message>
+        <source>%1 is unrolled about its drum&apos;s axis guide and does not stand on the drum yet: dock it first, or untick Use the axis guide to unroll it about a cylinder fitted to itself.</source>
+        <translation>Το %1 αναπτύσσεται γύρω από τον οδηγό άξονα του σπονδύλου του και δεν βρίσκεται ακόμη πάνω στον σπόνδυλο: προσδέστε το πρώτα, ή αποεπιλέξτε τη «Χρήση του οδηγού άξονα» για να αναπτυχθεί γύρω από κύλινδρο προσαρμοσμένο στο ίδιο.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DisplaySettingsWidget</name>
@@ -884,10 +888,6 @@
         <translation>Εξαγωγή εικόνας όψης</translation>
     </message>
     <message>
-        <source>Width in pixels</source>
-        <translation>Πλάτος σε εικονοστοιχεία</translation>
-    </message>
-    <message>
         <source>There is no 3D view to export</source>
         <translation>Δεν υπάρχει τρισδιάστατη όψη για εξαγωγή</translation>
     </message>
@@ -896,16 +896,20 @@
         <translation>Απόδοση της όψης %1</translation>
     </message>
     <message>
-        <source>cancelled</source>
-        <translation>ακυρώθηκε</translation>
-    </message>
-    <message>
         <source>Wrote the view image %1</source>
         <translation>Γράφτηκε η εικόνα όψης %1</translation>
     </message>
     <message>
-        <source>Could not render the view: %1</source>
-        <translation>Δεν ήταν δυνατή η απόδοση της όψης: %1</translation>
+        <source>Width in pixels (the whole image at most %L1 million pixels)</source>
+        <translation>Πλάτος σε εικονοστοιχεία (όλη η εικόνα το πολύ %L1 εκατομμύρια εικονοστοιχεία)</translation>
+    </message>
+    <message>
+        <source>Rendering the view image %1 was cancelled</source>
+        <translation>Η απόδοση της εικόνας της προβολής %1 ακυρώθηκε</translation>
+    </message>
+    <message>
+        <source>Could not render the view image %1: %2</source>
+        <translation>Αδύνατη η απόδοση της εικόνας της προβολής %1: %2</translation>
     </message>
 </context>
 <context>
@@ -1037,6 +1041,14 @@
         <source>Import</source>
         <comment>toolbar</comment>
         <translation>Εισαγωγή</translation>
+    </message>
+    <message>
+        <source>The demo is rebuilt when it is opened again: save your work as a project of your own.</source>
+        <translation>Η επίδειξη ξαναχτίζεται όταν ανοίγει ξανά: αποθηκεύστε την εργασία σας σε δικό σας έργο.</translation>
+    </message>
+    <message>
+        <source>Could not save %1: it is the demo&apos;s own project, rebuilt when the demo is opened again. Choose another file.</source>
+        <translation>Αδύνατη η αποθήκευση του %1: είναι το έργο της επίδειξης, που ξαναχτίζεται όταν ανοίγει ξανά. Επιλέξτε άλλο αρχείο.</translation>
     </message>
 </context>
 <context>
@@ -2335,6 +2347,10 @@
     <message>
         <source>Drawing the preview…</source>
         <translation>Σχεδίαση της προεπισκόπησης…</translation>
+    </message>
+    <message>
+        <source>Turned (%1 × %2 mm)</source>
+        <translation>Περιστραμμένη (%1 × %2 mm)</translation>
     </message>
 </context>
 <context>

@@ -326,6 +326,10 @@
         <source>Développée of %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 is unrolled about its drum&apos;s axis guide and does not stand on the drum yet: dock it first, or untick Use the axis guide to unroll it about a cylinder fitted to itself.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DisplaySettingsWidget</name>
@@ -884,10 +888,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Width in pixels</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>There is no 3D view to export</source>
         <translation type="unfinished"></translation>
     </message>
@@ -896,15 +896,19 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>cancelled</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Wrote the view image %1</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Could not render the view: %1</source>
+        <source>Width in pixels (the whole image at most %L1 million pixels)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Rendering the view image %1 was cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not render the view image %1: %2</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -1036,6 +1040,14 @@
     <message>
         <source>Import</source>
         <comment>toolbar</comment>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The demo is rebuilt when it is opened again: save your work as a project of your own.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not save %1: it is the demo&apos;s own project, rebuilt when the demo is opened again. Choose another file.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>
@@ -2334,6 +2346,10 @@
     </message>
     <message>
         <source>Drawing the preview…</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turned (%1 × %2 mm)</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

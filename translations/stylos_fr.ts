@@ -326,6 +326,10 @@
         <source>Développée of %1: %2</source>
         <translation>Développée de %1 : %2</translation>
     </message>
+    <message>
+        <source>%1 is unrolled about its drum&apos;s axis guide and does not stand on the drum yet: dock it first, or untick Use the axis guide to unroll it about a cylinder fitted to itself.</source>
+        <translation>%1 est déroulé autour du guide d’axe de son tambour et ne se tient pas encore sur le tambour : amarrez-le d’abord, ou décochez « Utiliser le guide d’axe » pour le dérouler autour d’un cylindre ajusté sur lui-même.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::DisplaySettingsWidget</name>
@@ -884,10 +888,6 @@
         <translation>Exporter l’image de la vue</translation>
     </message>
     <message>
-        <source>Width in pixels</source>
-        <translation>Largeur en pixels</translation>
-    </message>
-    <message>
         <source>There is no 3D view to export</source>
         <translation>Il n’y a pas de vue 3D à exporter</translation>
     </message>
@@ -896,16 +896,20 @@
         <translation>Rendu de la vue %1</translation>
     </message>
     <message>
-        <source>cancelled</source>
-        <translation>annulé</translation>
-    </message>
-    <message>
         <source>Wrote the view image %1</source>
         <translation>Image de la vue %1 écrite</translation>
     </message>
     <message>
-        <source>Could not render the view: %1</source>
-        <translation>Impossible de rendre la vue : %1</translation>
+        <source>Width in pixels (the whole image at most %L1 million pixels)</source>
+        <translation>Largeur en pixels (l’image entière au plus %L1 millions de pixels)</translation>
+    </message>
+    <message>
+        <source>Rendering the view image %1 was cancelled</source>
+        <translation>Le rendu de l’image de la vue %1 a été annulé</translation>
+    </message>
+    <message>
+        <source>Could not render the view image %1: %2</source>
+        <translation>Impossible de rendre l’image de la vue %1 : %2</translation>
     </message>
 </context>
 <context>
@@ -1037,6 +1041,14 @@
         <source>Import</source>
         <comment>toolbar</comment>
         <translation>Importer</translation>
+    </message>
+    <message>
+        <source>The demo is rebuilt when it is opened again: save your work as a project of your own.</source>
+        <translation>La démo est reconstruite à sa prochaine ouverture : enregistrez votre travail dans un projet à vous.</translation>
+    </message>
+    <message>
+        <source>Could not save %1: it is the demo&apos;s own project, rebuilt when the demo is opened again. Choose another file.</source>
+        <translation>Impossible d’enregistrer %1 : c’est le projet de la démo, reconstruit à sa prochaine ouverture. Choisissez un autre fichier.</translation>
     </message>
 </context>
 <context>
@@ -2335,6 +2347,10 @@
     <message>
         <source>Drawing the preview…</source>
         <translation>Dessin de l’aperçu…</translation>
+    </message>
+    <message>
+        <source>Turned (%1 × %2 mm)</source>
+        <translation>Tournée (%1 × %2 mm)</translation>
     </message>
 </context>
 <context>
