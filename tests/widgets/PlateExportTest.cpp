@@ -18,6 +18,8 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QDialogButtonBox>
+
+#include <algorithm>
 #include <QCheckBox>
 #include <QComboBox>
 #include <QDoubleSpinBox>
@@ -42,6 +44,7 @@ private Q_SLOTS:
     void exportDrawsUnsavedLabelsAndKeepsThePlate();
     void viewImageIsTheChosenWidthAlongTheCamera();
     void aCancelledExportIsNoError();
+    void theDefaultPlateFitsItsPage();
 
 private:
     core::scene::FragmentId addDrum(widgets::SceneDocument& document) const;
@@ -229,6 +232,24 @@ void PlateExportTest::aCancelledExportIsNoError()
                  QStringLiteral("Could not render the view image %1: ").arg(QDir::toNativeSeparators(png))),
              qPrintable(reported.at(0).at(0).toString()));
     QCOMPARE(reported.at(0).at(1).toBool(), true);
+}
+
+void PlateExportTest::theDefaultPlateFitsItsPage()
+{
+    // The plate offered when a project has none: the first fragment's développée at the most detailed usual scale
+    // that fits by its octree's box (1:10 left the demo's drum, 3.5 m round, wider than A4: Export was refused on
+    // first opening).
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    QVERIFY(addDrum(document) != 0);
+    const auto sources = app::PlateActions::sourcesOf(document);
+    const core::plate::PlateSpec spec = widgets::PlateDialog::defaultSpec(*sources);
+    QCOMPARE(spec.panels.size(), std::size_t{1});
+    // This drum (tilted a few degrees by the generator, so its box is wider than the drum): π × its box's width is
+    // over A4's 267 mm in landscape at 1:10; 1:20 is the first usual scale that fits by its box.
+    QCOMPARE(spec.panels[0].scale, 20.0);
+    auto fits = plate::composePlate(*sources, spec, {});
+    QVERIFY2(fits.ok(), fits.ok() ? "" : fits.error().message.c_str());
 }
 
 STYLOS_WIDGET_TEST_MAIN(PlateExportTest)

@@ -1,6 +1,9 @@
 // File › Export plate…: the plate's statement and a live preview of the page.
 #include "stylos/widgets/plate/PlateDialog.h"
 
+#include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/plate/PlateLayout.h"
+#include "stylos/core/view/GuideGeometry.h"
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/plate/PlatePainter.h"
 #include "stylos/widgets/plate/PlateTexts.h"
@@ -24,6 +27,7 @@
 #include <QVBoxLayout>
 #include <QtConcurrent/QtConcurrentRun>
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 
@@ -321,8 +325,23 @@ cp::PlateSpec PlateDialog::defaultSpec(const cp::PlateSources& sources)
     spec.landscape = true;
     cp::PanelSpec panel;
     panel.scale = 10;
+    // The first fragment's développée at the most detailed usual scale that fits the print area, judged from its
+    // octree's occupied box: π × its wider horizontal side (a whole drum's turn; a fragment's arc is less) by its
+    // height, laid out as the plate would be (the preview then checks the page as drawn).
+    const cp::PlateFragment* first = sources.fragments.empty() ? nullptr : &sources.fragments.front();
+    if (first && first->isOctree && !first->missing) {
+        if (auto octree = core::octree::PackedOctree::open(first->path)) {
+            const Eigen::Vector3d size = core::view::occupiedBounds(*octree).sizes();
+            const double widthMm = std::numbers::pi * std::max(size.x(), size.y()) * 1000.0, heightMm = size.z() * 1000.0;
+            for (const double scale : {1.0, 2.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0, 200.0, 250.0, 500.0, 1000.0}) {
+                panel.scale = scale;
+                spec.panels = {panel};
+                const std::array<double, 2> imageMm{widthMm / scale, heightMm / scale};
+                if (cp::layoutPlate(spec, std::span(&imageMm, 1), 0, 0.0)) break;
+            }
+        }
+    }
     spec.panels = {panel};
-    (void)sources;
     return spec;
 }
 
