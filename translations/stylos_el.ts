@@ -1424,6 +1424,11 @@
         <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
         <translation>Πλάτος (σ της γκαουσιανής) της εξομάλυνσης· το Αυτόματο το ορίζει από τον θόρυβο που μετρήθηκε στα ύψη. Η γραμμή κατάστασης λέει ποιο χρησιμοποιήθηκε.</translation>
     </message>
+    <message>
+        <source>; </source>
+        <comment>between the parts of a status line</comment>
+        <translation> · </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeSettings</name>
@@ -1552,6 +1557,11 @@
     <message>
         <source>not fixed by the flutes, left as it was: %1</source>
         <translation>δεν καθορίζεται από τις ραβδώσεις, έμεινε ως είχε: %1</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <comment>between the parts of a status line</comment>
+        <translation> · </translation>
     </message>
 </context>
 <context>

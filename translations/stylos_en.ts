@@ -1424,6 +1424,11 @@
         <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>; </source>
+        <comment>between the parts of a status line</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeSettings</name>
@@ -1551,6 +1556,11 @@
     </message>
     <message>
         <source>not fixed by the flutes, left as it was: %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>; </source>
+        <comment>between the parts of a status line</comment>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1424,6 +1424,11 @@
         <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
         <translation>Largeur (σ de la gaussienne) du lissage ; Automatique la fixe d&apos;après le bruit mesuré sur les hauteurs. La ligne d&apos;état indique la valeur utilisée.</translation>
     </message>
+    <message>
+        <source>; </source>
+        <comment>between the parts of a status line</comment>
+        <translation> ; </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DeveloppeeSettings</name>
@@ -1552,6 +1557,11 @@
     <message>
         <source>not fixed by the flutes, left as it was: %1</source>
         <translation>non fixé par les cannelures, laissé tel quel : %1</translation>
+    </message>
+    <message>
+        <source>; </source>
+        <comment>between the parts of a status line</comment>
+        <translation> ; </translation>
     </message>
 </context>
 <context>

@@ -183,7 +183,8 @@ QString DeveloppeePanel::fitSummary(const DeveloppeeResult& result)
              locale.toString(result.image.height()), locale.toString(result.unroll.pixelSize * 1e3, 'f', 2),
              locale.toString(result.timings.total, 'f', 1));
     if (result.settings.shading != DeveloppeeShading::Skydome) return summary;
-    return summary + QStringLiteral("; ") +
+    // The parts' separator is the translator's: a Greek ";" reads as a question mark.
+    return summary + tr("; ", "between the parts of a status line") +
            (result.smoothing > 0.0
                 ? tr("noise %1 mm smoothed by %2 mm").arg(locale.toString(result.heightNoise * 1e3, 'f', 2),
                                                           locale.toString(result.smoothing * 1e3, 'f', 2))

@@ -63,9 +63,9 @@ QString DockJob::summary(const QString& name, const DockJobResult& r)
                        .arg(r.dock.inliers)
                        .arg(r.dock.fluteShift, 0, 'f', 2)
                        .arg(r.seconds, 0, 'f', 1);
-    if (!sigmas.isEmpty()) text += QLatin1String("; ") + tr("uncertainty %1").arg(sigmas.join(QStringLiteral(", ")));
+    if (!sigmas.isEmpty()) text += tr("; ", "between the parts of a status line") + tr("uncertainty %1").arg(sigmas.join(QStringLiteral(", ")));
     if (!unobservable.isEmpty())
-        text += QLatin1String("; ") + tr("not fixed by the flutes, left as it was: %1").arg(unobservable.join(QStringLiteral(", ")));
+        text += tr("; ", "between the parts of a status line") + tr("not fixed by the flutes, left as it was: %1").arg(unobservable.join(QStringLiteral(", ")));
     return text;
 }
 
