@@ -152,6 +152,8 @@ TEST(PlateLayout, PlacesImagesAtTheirExactSizeAndCentres)
     EXPECT_TRUE(box.ruler);
     EXPECT_DOUBLE_EQ(box.barRect.w, 50.0); // 0.5 m at 1:10
     EXPECT_EQ(box.scaleText, "1:10");
+    EXPECT_EQ(scaleText(1e6), "1:1000000");
+    EXPECT_EQ(scaleText(12.5), "1:12.5");
     EXPECT_DOUBLE_EQ(layout->legend.h, 0);
 }
 

@@ -45,7 +45,7 @@ PanelBox place(const PanelSpec& panel, double x, double y, const std::array<doub
 std::string scaleText(double scale)
 {
     char text[48];
-    std::snprintf(text, sizeof text, "1:%g", scale);
+    std::snprintf(text, sizeof text, "1:%.10g", scale); // never an exponent: 1:1000000, not 1:1e+06
     return text;
 }
 
