@@ -2028,8 +2028,8 @@
     <message numerus="yes">
         <source>%n cell(s) hold this class. What becomes of them?</source>
         <translation>
-            <numerusform>%n κελί έχει αυτή την κλάση. Τι θα γίνει;</numerusform>
-            <numerusform>%n κελιά έχουν αυτή την κλάση. Τι θα γίνουν;</numerusform>
+            <numerusform>%Ln κελί έχει αυτή την κλάση. Τι θα γίνει;</numerusform>
+            <numerusform>%Ln κελιά έχουν αυτή την κλάση. Τι θα γίνουν;</numerusform>
         </translation>
     </message>
     <message>
@@ -2361,6 +2361,26 @@
     <message>
         <source>Turned (%1 × %2 mm)</source>
         <translation>Περιστραμμένη (%1 × %2 mm)</translation>
+    </message>
+    <message>
+        <source>A4 (210 × 297 mm)</source>
+        <translation>A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <source>A3 (297 × 420 mm)</source>
+        <translation>A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <source>US letter (215.9 × 279.4 mm)</source>
+        <translation>Letter ΗΠΑ (215,9 × 279,4 mm)</translation>
+    </message>
+    <message>
+        <source>Journal print area, 170 × 105 mm</source>
+        <translation>Επιφάνεια εκτύπωσης περιοδικού, 170 × 105 mm</translation>
+    </message>
+    <message>
+        <source>Journal print area, 205 × 135 mm</source>
+        <translation>Επιφάνεια εκτύπωσης περιοδικού, 205 × 135 mm</translation>
     </message>
 </context>
 <context>

@@ -2027,9 +2027,9 @@
     </message>
     <message numerus="yes">
         <source>%n cell(s) hold this class. What becomes of them?</source>
-        <translation type="unfinished">
-            <numerusform></numerusform>
-            <numerusform></numerusform>
+        <translation>
+            <numerusform>%Ln cell holds this class. What becomes of it?</numerusform>
+            <numerusform>%Ln cells hold this class. What becomes of them?</numerusform>
         </translation>
     </message>
     <message>
@@ -2360,6 +2360,26 @@
     </message>
     <message>
         <source>Turned (%1 × %2 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A4 (210 × 297 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>A3 (297 × 420 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>US letter (215.9 × 279.4 mm)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Journal print area, 170 × 105 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Journal print area, 205 × 135 mm</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1427,7 +1427,7 @@
     <message>
         <source>; </source>
         <comment>between the parts of a status line</comment>
-        <translation> ; </translation>
+        <translation>&#x202f;; </translation>
     </message>
 </context>
 <context>
@@ -1561,7 +1561,7 @@
     <message>
         <source>; </source>
         <comment>between the parts of a status line</comment>
-        <translation> ; </translation>
+        <translation>&#x202f;; </translation>
     </message>
 </context>
 <context>
@@ -2028,8 +2028,8 @@
     <message numerus="yes">
         <source>%n cell(s) hold this class. What becomes of them?</source>
         <translation>
-            <numerusform>%n cellule porte cette classe. Que devient-elle ?</numerusform>
-            <numerusform>%n cellules portent cette classe. Que deviennent-elles ?</numerusform>
+            <numerusform>%Ln cellule porte cette classe. Que devient-elle ?</numerusform>
+            <numerusform>%Ln cellules portent cette classe. Que deviennent-elles ?</numerusform>
         </translation>
     </message>
     <message>
@@ -2361,6 +2361,26 @@
     <message>
         <source>Turned (%1 × %2 mm)</source>
         <translation>Tournée (%1 × %2 mm)</translation>
+    </message>
+    <message>
+        <source>A4 (210 × 297 mm)</source>
+        <translation>A4 (210 × 297 mm)</translation>
+    </message>
+    <message>
+        <source>A3 (297 × 420 mm)</source>
+        <translation>A3 (297 × 420 mm)</translation>
+    </message>
+    <message>
+        <source>US letter (215.9 × 279.4 mm)</source>
+        <translation>Lettre US (215,9 × 279,4 mm)</translation>
+    </message>
+    <message>
+        <source>Journal print area, 170 × 105 mm</source>
+        <translation>Zone d’impression de revue, 170 × 105 mm</translation>
+    </message>
+    <message>
+        <source>Journal print area, 205 × 135 mm</source>
+        <translation>Zone d’impression de revue, 205 × 135 mm</translation>
     </message>
 </context>
 <context>

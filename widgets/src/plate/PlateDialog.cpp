@@ -29,6 +29,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <numbers>
 
 namespace stylos::widgets {
@@ -174,7 +175,7 @@ PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const 
     connect(m_page, &QComboBox::currentIndexChanged, this, [this] {
         // The journal print areas are the printed area itself: no margin (docs/plates.md).
         if (isPrintArea(m_page->currentData().toString())) m_margin->setValue(0);
-        retranslateUi();
+        updateTurnText();
         schedulePreview();
     });
     connect(m_landscape, &QCheckBox::toggled, this, &PlateDialog::schedulePreview);
@@ -192,12 +193,15 @@ PlateDialog::~PlateDialog() = default;
 void PlateDialog::retranslateUi()
 {
     setWindowTitle(tr("Export plate"));
-    // A named page is portrait and turns to landscape; a W×H page is as stated and the box turns it.
-    const QString page = m_page->currentData().toString();
-    const auto size = cp::pageFromName(page.toStdString());
-    m_landscape->setText(page.contains(QLatin1Char('x'), Qt::CaseInsensitive) && size
-                             ? tr("Turned (%1 × %2 mm)").arg(size->heightMm).arg(size->widthMm)
-                             : tr("Landscape"));
+    // The pages with their sizes (the data stays the layout file's name).
+    const QString pageTexts[] = {tr("A4 (210 × 297 mm)"), tr("A3 (297 × 420 mm)"), tr("US letter (215.9 × 279.4 mm)"),
+                                 tr("Journal print area, 170 × 105 mm"), tr("Journal print area, 205 × 135 mm")};
+    static_assert(std::size(kPages) == 5);
+    for (int i = 0; i < int(std::size(kPages)); ++i) {
+        const int at = m_page->findData(QString::fromLatin1(kPages[i]));
+        if (at >= 0) m_page->setItemText(at, pageTexts[i]);
+    }
+    updateTurnText();
     m_legend->setText(tr("Legend of the annotation classes"));
     m_buttons->button(QDialogButtonBox::Ok)->setText(tr("Export…"));
     m_panels->setHorizontalHeaderLabels({tr("View"), tr("Scale 1:"), tr("Shading"), tr("Annotation"), tr("Hatches"), tr("Fragment")});
@@ -206,6 +210,16 @@ void PlateDialog::retranslateUi()
     m_template->addItem(tr("Développée"));
     m_template->addItem(tr("Développée and front view"));
     m_template->addItem(tr("Front, right and top views"));
+}
+
+void PlateDialog::updateTurnText()
+{
+    // A named page is portrait and turns to landscape; a W×H page is as stated and the box turns it.
+    const QString page = m_page->currentData().toString();
+    const auto size = cp::pageFromName(page.toStdString());
+    m_landscape->setText(page.contains(QLatin1Char('x'), Qt::CaseInsensitive) && size
+                             ? tr("Turned (%1 × %2 mm)").arg(size->heightMm).arg(size->widthMm)
+                             : tr("Landscape"));
 }
 
 void PlateDialog::addPanelRow(const cp::PanelSpec& panel)
@@ -307,6 +321,7 @@ void PlateDialog::setSpec(const cp::PlateSpec& spec)
             page = m_page->count() - 1;
         }
         m_page->setCurrentIndex(page);
+        updateTurnText();
         m_landscape->setChecked(spec.landscape);
         m_margin->setValue(spec.marginMm);
         m_dpi->setValue(spec.dpi);

@@ -65,6 +65,7 @@ Q_SIGNALS:
     void previewUpdated();
 
 private:
+    void updateTurnText(); ///< the page box's text for the chosen page
     void addPanelRow(const core::plate::PanelSpec& panel);
     void applyTemplate(int index);
     void schedulePreview();
