@@ -1696,8 +1696,8 @@
         <translation>η έξοδος δεν μπόρεσε να γραφτεί</translation>
     </message>
     <message>
-        <source>a parameter is out of range</source>
-        <translation>μια παράμετρος είναι εκτός ορίων</translation>
+        <source>these data and settings do not allow it</source>
+        <translation>αυτά τα δεδομένα και οι ρυθμίσεις δεν το επιτρέπουν</translation>
     </message>
     <message>
         <source>not enough memory for this operation</source>

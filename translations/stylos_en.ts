@@ -1696,10 +1696,6 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>a parameter is out of range</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>not enough memory for this operation</source>
         <translation type="unfinished"></translation>
     </message>
@@ -1709,6 +1705,10 @@
     </message>
     <message>
         <source>unknown error</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>these data and settings do not allow it</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

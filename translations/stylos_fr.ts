@@ -1696,8 +1696,8 @@
         <translation>la sortie n’a pas pu être écrite</translation>
     </message>
     <message>
-        <source>a parameter is out of range</source>
-        <translation>un paramètre est hors limites</translation>
+        <source>these data and settings do not allow it</source>
+        <translation>ces données et ces réglages ne le permettent pas</translation>
     </message>
     <message>
         <source>not enough memory for this operation</source>

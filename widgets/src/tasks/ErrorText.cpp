@@ -16,7 +16,8 @@ QString ErrorText::reason(core::ErrorCode code)
     case ErrorCode::Truncated: return tr("the file is truncated");
     case ErrorCode::Empty: return tr("the file is empty");
     case ErrorCode::WriteFailed: return tr("the output could not be written");
-    case ErrorCode::InvalidArgument: return tr("a parameter is out of range");
+    // Not only a parameter: no point on the cylinder, too weak a flute signal, too fine a pixel… (the detail follows).
+    case ErrorCode::InvalidArgument: return tr("these data and settings do not allow it");
     case ErrorCode::OutOfBudget: return tr("not enough memory for this operation");
     case ErrorCode::Cancelled: return tr("cancelled");
     }
