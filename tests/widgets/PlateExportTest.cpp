@@ -170,6 +170,15 @@ void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()
     QVERIFY(!document.scene().plate().has_value());
 }
 
+namespace {
+/** The 3D view's camera looking down (w x y z). */
+std::optional<std::array<double, 4>> topCamera()
+{
+    const Eigen::Quaterniond top = core::view::Camera::standardOrientation(core::view::StandardView::Top);
+    return std::array<double, 4>{top.w(), top.x(), top.y(), top.z()};
+}
+} // namespace
+
 void PlateExportTest::viewImageIsTheChosenWidthAlongTheCamera()
 {
     widgets::TaskManager tasks;
@@ -185,8 +194,7 @@ void PlateExportTest::viewImageIsTheChosenWidthAlongTheCamera()
     QCOMPARE(finished.at(0).at(0).toBool(), false);
     QVERIFY(!QFile::exists(png));
 
-    const Eigen::Quaterniond top = core::view::Camera::standardOrientation(core::view::StandardView::Top);
-    actions.setCameraSource([top] { return std::optional<std::array<double, 4>>({top.w(), top.x(), top.y(), top.z()}); });
+    actions.setCameraSource(topCamera);
     actions.exportViewImage(800, png);
     QVERIFY(finished.wait(60000));
     QCOMPARE(finished.at(1).at(0).toBool(), true);
@@ -208,8 +216,7 @@ void PlateExportTest::aCancelledExportIsNoError()
     QWidget window;
     widgets::DeveloppeeView view;
     app::PlateActions actions(document, view, window);
-    const Eigen::Quaterniond top = core::view::Camera::standardOrientation(core::view::StandardView::Top);
-    actions.setCameraSource([top] { return std::optional<std::array<double, 4>>({top.w(), top.x(), top.y(), top.z()}); });
+    actions.setCameraSource(topCamera);
     QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
     QSignalSpy reported(&actions, &app::PlateActions::reported);
     const QString png = m_dir.filePath(QStringLiteral("cancelled.png"));
