@@ -1047,8 +1047,8 @@
         <translation>Η επίδειξη ξαναχτίζεται όταν ανοίγει ξανά: αποθηκεύστε την εργασία σας σε δικό σας έργο.</translation>
     </message>
     <message>
-        <source>Could not save %1: it is the demo&apos;s own project, rebuilt when the demo is opened again. Choose another file.</source>
-        <translation>Αδύνατη η αποθήκευση του %1: είναι το έργο της επίδειξης, που ξαναχτίζεται όταν ανοίγει ξανά. Επιλέξτε άλλο αρχείο.</translation>
+        <source>Could not save %1: it is in the demo&apos;s folder, rebuilt when the demo is opened again. Choose another folder.</source>
+        <translation>Αδύνατη η αποθήκευση του %1: βρίσκεται στον φάκελο της επίδειξης, που ξαναχτίζεται όταν ανοίγει ξανά. Επιλέξτε άλλο φάκελο.</translation>
     </message>
 </context>
 <context>

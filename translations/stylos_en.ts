@@ -1047,7 +1047,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Could not save %1: it is the demo&apos;s own project, rebuilt when the demo is opened again. Choose another file.</source>
+        <source>Could not save %1: it is in the demo&apos;s folder, rebuilt when the demo is opened again. Choose another folder.</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

@@ -1047,8 +1047,8 @@
         <translation>La démo est reconstruite à sa prochaine ouverture : enregistrez votre travail dans un projet à vous.</translation>
     </message>
     <message>
-        <source>Could not save %1: it is the demo&apos;s own project, rebuilt when the demo is opened again. Choose another file.</source>
-        <translation>Impossible d’enregistrer %1 : c’est le projet de la démo, reconstruit à sa prochaine ouverture. Choisissez un autre fichier.</translation>
+        <source>Could not save %1: it is in the demo&apos;s folder, rebuilt when the demo is opened again. Choose another folder.</source>
+        <translation>Impossible d’enregistrer %1 : il est dans le dossier de la démo, reconstruit à sa prochaine ouverture. Choisissez un autre dossier.</translation>
     </message>
 </context>
 <context>

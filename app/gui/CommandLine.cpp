@@ -70,7 +70,7 @@ CommandLine CommandLine::parse(const QCoreApplication& app)
     parser.addOption(pose);
     QStringList formats;
     for (const std::string& extension : core::io::importableExtensions())
-        formats << QString::fromStdString(extension).toUpper();
+        formats << QString::fromStdString(extension).toUpper(); // what is read (a LAZ is refused with what to do)
     parser.addPositionalArgument(
         QStringLiteral("files"), tr("A project (.stylos), or scans to import (%1).").arg(formats.join(QStringLiteral(", "))),
         QStringLiteral("[files...]"));

@@ -1,6 +1,7 @@
 #include "DeveloppeeLink.h"
 
 #include "stylos/core/scene/SceneEigen.h"
+#include "stylos/core/view/GuideGeometry.h"
 
 #include "stylos/widgets/developpee/AssemblyDeveloppeeJob.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
@@ -170,9 +171,26 @@ void DeveloppeeLink::compute()
     }
     const widgets::DeveloppeeJob job(QString::fromStdString(f->octreePath.string()), id, settings);
     const QString name = QString::fromStdString(f->name);
-    // A fragment unrolled about its drum's axis must stand where it belongs on the drum.
-    const bool drumAxis = settings.axis && guidesOwner(*f) != id && guidesOwner(*f) != core::scene::NoFragment;
-    const auto deliver = [this, name, drumAxis](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
+    // A fragment unrolled about its drum's axis must stand where it belongs on the drum: when fewer than a tenth of
+    // its cells (at a coarse level) lie within a sixth of the drum's radius of the drum's surface, it does not (not
+    // docked yet). The drum's radius: its guides' leading radius, else half its box's wider horizontal side.
+    bool offDrum = false;
+    const core::scene::FragmentId owner = guidesOwner(*f);
+    if (settings.axis && owner != id && owner != core::scene::NoFragment)
+        if (const auto octree = m_document.octree(id), drum = m_document.octree(owner); octree && drum) {
+            const Eigen::Vector3d along = settings.axis->direction.normalized();
+            const Eigen::Vector3d drumSize = core::view::occupiedBounds(*drum).sizes();
+            const double radius = settings.radius.value_or(0.5 * std::max(drumSize.x(), drumSize.y()));
+            std::uint64_t cells = 0, near = 0;
+            octree->forEachCell(std::min(octree->depth(), 7), [&](const core::octree::CellView& c) {
+                const Eigen::Vector3d off = Eigen::Vector3d(c.centre[0], c.centre[1], c.centre[2]) - settings.axis->point;
+                ++cells;
+                near += std::abs((off - off.dot(along) * along).norm() - radius) <= radius / 6.0 ? 1 : 0;
+                return true;
+            });
+            offDrum = cells > 0 && near * 10 < cells;
+        }
+    const auto deliver = [this, name, offDrum](core::scene::FragmentId key, const QFuture<widgets::DeveloppeeResult>& future) {
         if (future.resultCount() == 0) { // cancelled from the Tasks dock
             Q_EMIT finished(tr("Développée of %1 cancelled").arg(name), false);
             return;
@@ -181,7 +199,7 @@ void DeveloppeeLink::compute()
         if (result.ok()) m_document.setDeveloppee(key, std::make_shared<const widgets::DeveloppeeResult>(result));
         if (m_dock.fragmentId() == key) m_dock.showResult(result);
         if (result.ok()) Q_EMIT finished(widgets::DeveloppeePanel::fitSummary(result), false);
-        else if (drumAxis && result.errorCode == core::ErrorCode::InvalidArgument)
+        else if (offDrum)
             Q_EMIT finished(tr("%1 is unrolled about its drum's axis guide and does not stand on the drum yet: dock it "
                                "first, or untick Use the axis guide to unroll it about a cylinder fitted to itself.")
                                     .arg(name) + QLatin1Char('\n') + result.error,

@@ -87,7 +87,13 @@ std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::S
 void PlateActions::choosePlate()
 {
     const auto sources = sourcesOf(m_document);
-    const cp::PlateSpec start = m_document.scene().plate().value_or(widgets::PlateDialog::defaultSpec(*sources));
+    const auto kept = m_document.scene().plate();
+    // Without a kept plate, one sized by the first visible fragment's octree (the one the document holds open).
+    const cp::PlateSpec start = kept ? *kept : widgets::PlateDialog::defaultSpec(*sources, [this](const cp::PlateFragment& f) {
+        for (const core::scene::Fragment& g : m_document.scene().fragments())
+            if (g.octreePath == f.path) return m_document.octree(g.id);
+        return std::shared_ptr<const core::octree::PackedOctree>();
+    });
     widgets::PlateDialog dialog(sources, cp::PlateSpec{}, &m_window);
     if (m_camera) dialog.setCurrentCamera(m_camera());
     dialog.setSpec(start);

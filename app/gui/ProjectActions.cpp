@@ -153,7 +153,20 @@ bool ProjectActions::save()
 
 bool ProjectActions::isRebuilt(const QString& path) const
 {
-    return !m_rebuiltProject.isEmpty() && QFileInfo(path).absoluteFilePath() == m_rebuiltProject;
+    if (m_rebuiltProject.isEmpty()) return false;
+    // The folders compared, links resolved: the demo's project reached through a link, or a project of one's own
+    // saved beside it (its octrees would stay in the folder that is rebuilt), are the same case.
+    const auto folderOf = [](const QString& file) {
+        const QString folder = QFileInfo(file).absolutePath();
+        const QString canonical = QFileInfo(folder).canonicalFilePath();
+        return canonical.isEmpty() ? QDir::cleanPath(folder) : canonical;
+    };
+#if defined(Q_OS_WIN) || defined(Q_OS_MACOS)
+    const Qt::CaseSensitivity cs = Qt::CaseInsensitive;
+#else
+    const Qt::CaseSensitivity cs = Qt::CaseSensitive;
+#endif
+    return folderOf(path).compare(folderOf(m_rebuiltProject), cs) == 0;
 }
 
 bool ProjectActions::saveAs()
@@ -172,8 +185,8 @@ bool ProjectActions::saveAs()
 bool ProjectActions::saveTo(const QString& path)
 {
     if (isRebuilt(path)) {
-        Q_EMIT reported(tr("Could not save %1: it is the demo's own project, rebuilt when the demo is opened again. "
-                           "Choose another file.").arg(QDir::toNativeSeparators(path)),
+        Q_EMIT reported(tr("Could not save %1: it is in the demo's folder, rebuilt when the demo is opened again. "
+                           "Choose another folder.").arg(QDir::toNativeSeparators(path)),
                         true);
         return false;
     }

@@ -44,7 +44,8 @@ public:
     void openPaths(const QStringList& paths);
     /**
      * @brief The local files among @p urls that openPaths() takes by their extension: `.stylos` projects,
-     *        and the point files and octrees of core::io::importableExtensions() (what a drop accepts).
+     *        and the point files and octrees whose extension ScanImporter::canImport() takes (LAZ too, refused
+     *        on import with what to do).
      */
     static QStringList openableFiles(const QList<QUrl>& urls);
     /** @brief Opens the project @p path (after asking to save changes); false when it failed or was declined. */
@@ -61,9 +62,9 @@ public:
     bool maybeSave();
     /** @brief Whether dialogs may be shown (false for automation and tests). */
     void setPromptsEnabled(bool enabled) { m_prompts = enabled; }
-    /** The demo's project: rebuilt whenever its generator's output differs, so never saved over. Save on it asks
-     *  for a project of one's own (Save as); saving as that file is refused. */
-    void setRebuiltProject(const QString& path) { m_rebuiltProject = QFileInfo(path).absoluteFilePath(); }
+    /** The demo's project: its folder is rebuilt whenever the generator's output differs, so nothing is ever saved
+     *  there. Save on the demo asks for a project of one's own (Save as); saving into that folder is refused. */
+    void setRebuiltProject(const QString& path) { m_rebuiltProject = path; }
 
     /** @brief Recent projects, most recent first (existing or not). */
     static QStringList recentProjects();
@@ -106,6 +107,7 @@ private:
     QAction* m_import;
     QAction* m_quit;
     QMenu* m_recent;
+    /** Whether @p path is in the rebuilt project's folder (symbolic links resolved; the file need not exist). */
     bool isRebuilt(const QString& path) const;
     bool m_prompts = true;
     QString m_rebuiltProject;

@@ -18,6 +18,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <system_error>
 
 namespace stylos::plate {
 
@@ -66,8 +67,9 @@ Status failed(const fs::path& partial, const fs::path& output, const std::string
 Status createPartial(const fs::path& partial, const fs::path& output)
 {
     std::FILE* file = std::fopen(partial.c_str(), "wb");
-    if (!file) return Error::at(ErrorCode::WriteFailed, output.string(), {}, std::string("cannot create the file: ") +
-                                                                             std::strerror(errno));
+    if (!file) // the error code's message: strerror is not thread-safe, and plates are written on worker threads
+        return Error::at(ErrorCode::WriteFailed, output.string(), {},
+                         "cannot create the file: " + std::error_code(errno, std::generic_category()).message());
     std::fclose(file);
     return {};
 }

@@ -20,7 +20,9 @@
 
 #include <array>
 #include <cstdio>
+#include <cerrno>
 #include <fstream>
+#include <system_error>
 #include <memory>
 #include <numbers>
 #include <sstream>
@@ -259,7 +261,8 @@ TEST(PlateWriter, AFolderThatCannotTakeTheFileIsNamedWithTheReason)
         ASSERT_FALSE(written.ok()) << name;
         EXPECT_EQ(written.error().code, core::ErrorCode::WriteFailed) << name;
         EXPECT_NE(written.error().message.find(output.string()), std::string::npos) << written.error().message;
-        EXPECT_NE(written.error().message.find("Not a directory"), std::string::npos) << written.error().message;
+        EXPECT_NE(written.error().message.find(std::generic_category().message(ENOTDIR)), std::string::npos)
+            << written.error().message;
     }
     EXPECT_EQ(bytesOf(notAFolder), "x");
 }

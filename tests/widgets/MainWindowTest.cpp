@@ -402,13 +402,20 @@ void MainWindowTest::theDemosProjectIsNeverSavedOver()
     QVERIFY(!reports.isEmpty());
     QVERIFY(reports.first().at(0).toString().contains(QStringLiteral("save your work as a project of your own")));
     QVERIFY(!reports.first().at(1).toBool());
-    // Saving as that very file is refused, naming it.
-    reports.clear();
-    QVERIFY(!window->projectActions().saveTo(demo));
-    QCOMPARE(bytes(demo), before);
-    QCOMPARE(reports.size(), 1);
-    QVERIFY(reports.first().at(0).toString().contains(QDir::toNativeSeparators(demo)));
-    QVERIFY(reports.first().at(1).toBool());
+    // Saving as that very file, or beside it (the folder is rebuilt, octrees and all), or through a link to the
+    // folder, is refused, naming the file.
+    const QString link = m_dir.filePath("demo-link");
+    QVERIFY(QFile::link(QFileInfo(demo).absolutePath(), link));
+    for (const QString& target : {demo, QFileInfo(demo).absolutePath() + QStringLiteral("/mine.stylos"),
+                                  link + QStringLiteral("/demo.stylos")}) {
+        reports.clear();
+        QVERIFY(!window->projectActions().saveTo(target));
+        QCOMPARE(bytes(demo), before);
+        QVERIFY(!QFileInfo::exists(QFileInfo(demo).absolutePath() + QStringLiteral("/mine.stylos")));
+        QCOMPARE(reports.size(), 1);
+        QVERIFY2(reports.first().at(0).toString().contains(QDir::toNativeSeparators(target)), qPrintable(target));
+        QVERIFY(reports.first().at(1).toBool());
+    }
     // Another file saves as ever.
     const QString mine = m_dir.filePath("mine.stylos");
     QVERIFY(window->projectActions().saveTo(mine));

@@ -110,14 +110,26 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
     QVERIFY(dialog.previewImage().isNull()); // not the last page that fitted
 
     // A journal's print area: no margin, and the box turns the page as stated.
-    auto* page = dialog.findChildren<QComboBox*>().first();
-    auto* turned = dialog.findChildren<QCheckBox*>().first();
-    auto* margin = dialog.findChild<QDoubleSpinBox*>();
+    auto* page = dialog.findChild<QComboBox*>(QStringLiteral("platePage"));
+    auto* turned = dialog.findChild<QCheckBox*>(QStringLiteral("plateTurned"));
+    auto* margin = dialog.findChild<QDoubleSpinBox*>(QStringLiteral("plateMargin"));
+    QVERIFY(page && turned && margin);
+    margin->setValue(12);
     QCOMPARE(turned->text(), QStringLiteral("Landscape"));
     page->setCurrentIndex(page->findData(QStringLiteral("170x105")));
     QCOMPARE(margin->value(), 0.0);
     QCOMPARE(turned->text(), QStringLiteral("Turned (105 × 170 mm)"));
     QCOMPARE(dialog.spec().marginMm, 0.0);
+    page->setCurrentIndex(page->findData(QStringLiteral("A3"))); // paper again: its margin back
+    QCOMPARE(margin->value(), 12.0);
+    QCOMPARE(turned->text(), QStringLiteral("Landscape"));
+    // A page named in any case is the list's page, not one more entry.
+    const int pages = page->count();
+    core::plate::PlateSpec lower = dialog.spec();
+    lower.pageName = "a4";
+    dialog.setSpec(lower);
+    QCOMPARE(page->count(), pages);
+    QCOMPARE(page->currentData().toString(), QStringLiteral("A4"));
 }
 
 void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()

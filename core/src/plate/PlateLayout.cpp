@@ -58,7 +58,10 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
     out.printArea = {m, m, out.page.widthMm - 2 * m, out.page.heightMm - 2 * m};
     const RectMm& area = out.printArea;
     const std::string areaText = mm(area.w) + " × " + mm(area.h) + " mm";
-    const std::string pageText = "the " + spec.pageName + (spec.landscape ? " landscape" : "") + " print area is " + areaText;
+    // A named page is portrait unless landscape; a W×H page is as stated unless turned (PlateSpec::orientedPage).
+    const bool stated = spec.pageName.find_first_of("xX") != std::string::npos;
+    const std::string pageText = "the " + spec.pageName + (spec.landscape ? (stated ? " turned" : " landscape") : "") +
+                                 " print area is " + areaText;
     if (imageMm.size() != spec.panels.size())
         return Error{ErrorCode::InvalidArgument, "layoutPlate: one image size per panel is needed"};
     const bool letters = spec.panels.size() > 1;
@@ -138,7 +141,8 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
                                                      (captionMm > 0 ? " and the caption" : "") + " need " +
                                                      mm(bottom - area.y) + " mm of height; " + pageText +
                                                      ": use a smaller scale, a larger page or the page " +
-                                                     (spec.landscape ? "upright" : "in landscape")};
+                                                     (stated ? (spec.landscape ? "as stated" : "turned")
+                                                             : (spec.landscape ? "upright" : "in landscape"))};
     return out;
 }
 

@@ -18,6 +18,7 @@
 #include <QHBoxLayout>
 #include <QHeaderView>
 #include <QLabel>
+#include <QLocale>
 #include <QPainter>
 #include <QPlainTextEdit>
 #include <QPushButton>
@@ -44,7 +45,11 @@ enum Column { ViewColumn, ScaleColumn, ShadingColumn, LayerColumn, HatchColumn, 
 const char* const kPages[] = {"A4", "A3", "letter", "170x105", "205x135"};
 
 /** The journals' print areas (the last two pages above): drawn without margins. */
-bool isPrintArea(const QString& page) { return page == QLatin1String("170x105") || page == QLatin1String("205x135"); }
+bool isPrintArea(const QString& page)
+{
+    return page.compare(QLatin1String("170x105"), Qt::CaseInsensitive) == 0 ||
+           page.compare(QLatin1String("205x135"), Qt::CaseInsensitive) == 0;
+}
 
 struct Preview {
     QImage image;
@@ -108,6 +113,9 @@ PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const 
       m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)), m_timer(new QTimer(this))
 {
     for (const char* p : kPages) m_page->addItem(QString::fromLatin1(p), QString::fromLatin1(p));
+    m_page->setObjectName(QStringLiteral("platePage"));
+    m_landscape->setObjectName(QStringLiteral("plateTurned"));
+    m_margin->setObjectName(QStringLiteral("plateMargin"));
     m_margin->setRange(0, 60);
     m_margin->setDecimals(1);
     m_margin->setSuffix(QStringLiteral(" mm"));
@@ -173,8 +181,13 @@ PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const 
     });
     connect(m_template, &QComboBox::activated, this, &PlateDialog::applyTemplate);
     connect(m_page, &QComboBox::currentIndexChanged, this, [this] {
-        // The journal print areas are the printed area itself: no margin (docs/plates.md).
-        if (isPrintArea(m_page->currentData().toString())) m_margin->setValue(0);
+        // The journal print areas are the printed area itself: no margin (docs/plates.md); leaving one for a
+        // paper page gives back the margin it had before.
+        const bool area = isPrintArea(m_page->currentData().toString());
+        if (area && !m_onPrintArea) m_marginBeforePrintArea = m_margin->value();
+        if (area) m_margin->setValue(0);
+        else if (m_onPrintArea && m_margin->value() == 0) m_margin->setValue(m_marginBeforePrintArea);
+        m_onPrintArea = area;
         updateTurnText();
         schedulePreview();
     });
@@ -218,7 +231,7 @@ void PlateDialog::updateTurnText()
     const QString page = m_page->currentData().toString();
     const auto size = cp::pageFromName(page.toStdString());
     m_landscape->setText(page.contains(QLatin1Char('x'), Qt::CaseInsensitive) && size
-                             ? tr("Turned (%1 × %2 mm)").arg(size->heightMm).arg(size->widthMm)
+                             ? tr("Turned (%1 × %2 mm)").arg(QLocale().toString(size->heightMm), QLocale().toString(size->widthMm))
                              : tr("Landscape"));
 }
 
@@ -315,12 +328,15 @@ void PlateDialog::setSpec(const cp::PlateSpec& spec)
 {
     {
         const QSignalBlocker a(m_page), b(m_landscape), c(m_margin), d(m_legend), e(m_caption);
-        int page = m_page->findData(QString::fromStdString(spec.pageName));
+        int page = -1; // the names are case-insensitive ("a4" is A4)
+        for (int i = 0; i < m_page->count() && page < 0; ++i)
+            if (m_page->itemData(i).toString().compare(QString::fromStdString(spec.pageName), Qt::CaseInsensitive) == 0) page = i;
         if (page < 0) {
             m_page->addItem(QString::fromStdString(spec.pageName), QString::fromStdString(spec.pageName));
             page = m_page->count() - 1;
         }
         m_page->setCurrentIndex(page);
+        m_onPrintArea = isPrintArea(m_page->currentData().toString());
         updateTurnText();
         m_landscape->setChecked(spec.landscape);
         m_margin->setValue(spec.marginMm);
@@ -334,7 +350,9 @@ void PlateDialog::setSpec(const cp::PlateSpec& spec)
     schedulePreview();
 }
 
-cp::PlateSpec PlateDialog::defaultSpec(const cp::PlateSources& sources)
+cp::PlateSpec PlateDialog::defaultSpec(
+    const cp::PlateSources& sources,
+    const std::function<std::shared_ptr<const core::octree::PackedOctree>(const cp::PlateFragment&)>& opened)
 {
     cp::PlateSpec spec;
     spec.landscape = true;
@@ -342,18 +360,25 @@ cp::PlateSpec PlateDialog::defaultSpec(const cp::PlateSources& sources)
     panel.scale = 10;
     // The first fragment's développée at the most detailed usual scale that fits the print area, judged from its
     // octree's occupied box: π × its wider horizontal side (a whole drum's turn; a fragment's arc is less) by its
-    // height, laid out as the plate would be (the preview then checks the page as drawn).
-    const cp::PlateFragment* first = sources.fragments.empty() ? nullptr : &sources.fragments.front();
-    if (first && first->isOctree && !first->missing) {
-        if (auto octree = core::octree::PackedOctree::open(first->path)) {
-            const Eigen::Vector3d size = core::view::occupiedBounds(*octree).sizes();
-            const double widthMm = std::numbers::pi * std::max(size.x(), size.y()) * 1000.0, heightMm = size.z() * 1000.0;
-            for (const double scale : {1.0, 2.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0, 200.0, 250.0, 500.0, 1000.0}) {
-                panel.scale = scale;
-                spec.panels = {panel};
-                const std::array<double, 2> imageMm{widthMm / scale, heightMm / scale};
-                if (cp::layoutPlate(spec, std::span(&imageMm, 1), 0, 0.0)) break;
-            }
+    // height, laid out as the plate would be (the preview then checks the page as drawn). The fragment is the one
+    // the composer unrolls, the first visible one; @p opened gives its octree when the caller holds it open.
+    const auto first = std::find_if(sources.fragments.begin(), sources.fragments.end(),
+                                    [](const cp::PlateFragment& f) { return f.visible && !f.missing && f.isOctree; });
+    std::shared_ptr<const core::octree::PackedOctree> octree;
+    if (first != sources.fragments.end()) {
+        if (opened) octree = opened(*first);
+        if (!octree)
+            if (auto read = core::octree::PackedOctree::open(first->path))
+                octree = std::make_shared<const core::octree::PackedOctree>(std::move(read).value());
+    }
+    if (octree) {
+        const Eigen::Vector3d size = core::view::occupiedBounds(*octree).sizes();
+        const double widthMm = std::numbers::pi * std::max(size.x(), size.y()) * 1000.0, heightMm = size.z() * 1000.0;
+        for (const double scale : {1.0, 2.0, 5.0, 10.0, 20.0, 25.0, 50.0, 100.0, 200.0, 250.0, 500.0, 1000.0}) {
+            panel.scale = scale;
+            spec.panels = {panel};
+            const std::array<double, 2> imageMm{widthMm / scale, heightMm / scale};
+            if (cp::layoutPlate(spec, std::span(&imageMm, 1), 0, 0.0)) break;
         }
     }
     spec.panels = {panel};

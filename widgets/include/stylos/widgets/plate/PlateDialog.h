@@ -14,6 +14,7 @@
 #include <QImage>
 
 #include <array>
+#include <functional>
 #include <memory>
 #include <optional>
 
@@ -26,6 +27,10 @@ class QPlainTextEdit;
 class QSpinBox;
 class QTableWidget;
 class QTimer;
+
+namespace stylos::core::octree {
+class PackedOctree;
+}
 
 namespace stylos::widgets {
 
@@ -46,9 +51,12 @@ public:
     core::plate::PlateSpec spec() const;
     void setSpec(const core::plate::PlateSpec& spec);
 
-    /** @brief A plate for a project with no stated plate: the développée of the first fragment at a scale that fits
-     *         A4 landscape, with the material layer when it holds labels. */
-    static core::plate::PlateSpec defaultSpec(const core::plate::PlateSources& sources);
+    /** @brief A plate for a project with no stated plate: the développée of the first visible fragment on A4
+     *         landscape at the most detailed usual scale that fits by its octree's box. @p opened gives that
+     *         octree when the caller holds it open (else it is read from its file). */
+    static core::plate::PlateSpec defaultSpec(
+        const core::plate::PlateSources& sources,
+        const std::function<std::shared_ptr<const core::octree::PackedOctree>(const core::plate::PlateFragment&)>& opened = {});
 
     // For tests.
     QLabel* previewLabel() const { return m_preview; }
@@ -87,6 +95,8 @@ private:
     QLabel* m_message;
     QDialogButtonBox* m_buttons;
     QTimer* m_timer;
+    bool m_onPrintArea = false;          ///< the page is a journal's print area (no margin)
+    double m_marginBeforePrintArea = 15; ///< given back when a paper page follows a print area
     QImage m_image;
     bool m_running = false;
     bool m_again = false;
