@@ -79,7 +79,8 @@ int runAnnotate(const std::vector<std::string>& args)
     std::uint64_t changed = 0;
     {
         ConsoleProgress progress("mapping the leaves of " + input + " onto " + rasterPath);
-        auto pixels = ann::leafPixels(octree, *map, &progress);
+        // What the développée shows: not the leaves under it (a fragment's inner break face), as in the workbench.
+        auto pixels = ann::leafPixels(octree, *map, &progress, ann::paintDepth(map->pixelSize()));
         if (!pixels) return fail(pixels.error());
         changed = ann::applyLabelRaster(*raster, *pixels, *labels);
     }

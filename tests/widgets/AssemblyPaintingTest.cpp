@@ -177,7 +177,10 @@ void AssemblyPaintingTest::init()
 
     // Each leaf's pixel, computed here: the drum's by leafPixels (identity), the fragment's through the pose.
     const auto& map = *m_result.map;
-    m_drumPixels = core::annotation::leafPixels(*m_document->octree(m_drum), map).value();
+    // Painting takes the surface the développée shows (core::annotation::paintDepth): the leaves under it or edge-on
+    // to it are left out, on the drum and on the fragment alike.
+    const double depth = core::annotation::paintDepth(map.pixelSize());
+    m_drumPixels = core::annotation::leafPixels(*m_document->octree(m_drum), map, nullptr, depth).value();
     const Eigen::Isometry3d pose = drumWorld.inverse() * fragmentWorld;
     const auto& octree = *m_document->octree(m_fragment);
     m_fragmentPixels.assign(core::annotation::leafCount(octree), -1);
@@ -187,6 +190,14 @@ void AssemblyPaintingTest::init()
             m_fragmentPixels[cell.index] = std::int64_t(std::floor(hit->row)) * map.width() + std::int64_t(std::floor(hit->column));
         return true;
     });
+    const auto shown = core::annotation::posedLeafPixels(octree, pose, map, nullptr, depth).value();
+    std::size_t kept = 0;
+    for (std::size_t l = 0; l < shown.size(); ++l) {
+        if (shown[l] >= 0) QCOMPARE(shown[l], m_fragmentPixels[l]); // where shown, the same pixel as computed here
+        else m_fragmentPixels[l] = -1;
+        kept += shown[l] >= 0 ? 1 : 0;
+    }
+    QVERIFY(kept > 0);
 
     m_view = std::make_unique<DeveloppeeView>();
     m_view->resize(1200, 500);

@@ -9,17 +9,35 @@
 namespace stylos::core::annotation {
 
 Result<std::vector<std::int64_t>> posedLeafPixels(const octree::PackedOctree& octree, const Eigen::Isometry3d& pose,
-                                                  const unroll::UnrollMap& map, ProgressSink* progress)
+                                                  const unroll::UnrollMap& map, ProgressSink* progress,
+                                                  double visibleDepth)
 {
+    constexpr double kMinFacing = 0.3; // |n · outward| of a leaf the développée shows: within 72° of facing it
     const std::uint64_t leaves = octree.cellCount(octree.depth());
     std::vector<std::int64_t> pixels(leaves, -1);
+    const bool hide = std::isfinite(visibleDepth);
+    std::vector<float> heights(hide ? leaves : 0);
+    std::vector<float> top(hide ? std::size_t(map.width()) * std::size_t(map.height()) : 0,
+                           -std::numeric_limits<float>::infinity());
     bool cancelled = false;
     octree.forEachCell(octree.depth(), [&](const octree::CellView& cell) {
         const Eigen::Vector3d centre = pose * Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]);
         if (const auto hit = map.pixelOf(centre)) {
             const double c = std::floor(hit->column), r = std::floor(hit->row);
-            if (c >= 0 && r >= 0 && c < map.width() && r < map.height())
-                pixels[cell.index] = std::int64_t(r) * map.width() + std::int64_t(c);
+            if (c >= 0 && r >= 0 && c < map.width() && r < map.height()) {
+                const std::int64_t pixel = std::int64_t(r) * map.width() + std::int64_t(c);
+                pixels[cell.index] = pixel;
+                if (hide) {
+                    // Edge-on to the développée's view (a fracture or bed face: its normal within 17° of the
+                    // surface's plane): not what the pixel shows, whatever its height.
+                    const Eigen::Vector3d out = (map.worldAtPixel(hit->column, hit->row, hit->h + 1e-3) -
+                                                 map.worldAtPixel(hit->column, hit->row, hit->h)).normalized();
+                    const Eigen::Vector3d n = pose.linear() * Eigen::Vector3d(cell.normal[0], cell.normal[1], cell.normal[2]);
+                    heights[cell.index] = float(hit->h);
+                    if (std::abs(n.dot(out)) < kMinFacing) pixels[cell.index] = -1;
+                    else top[std::size_t(pixel)] = std::max(top[std::size_t(pixel)], float(hit->h));
+                }
+            }
         }
         if (progress && (cell.index & 0xFFFF) == 0) {
             progress->update(double(cell.index) / double(std::max<std::uint64_t>(leaves, 1)));
@@ -28,6 +46,10 @@ Result<std::vector<std::int64_t>> posedLeafPixels(const octree::PackedOctree& oc
         return true;
     });
     if (cancelled) return Error::at(ErrorCode::Cancelled, octree.path().string(), {}, "cancelled");
+    if (hide) // under the surface the pixel shows (a fragment's inner break face)
+        for (std::size_t leaf = 0; leaf < pixels.size(); ++leaf)
+            if (pixels[leaf] >= 0 && double(heights[leaf]) < double(top[std::size_t(pixels[leaf])]) - visibleDepth)
+                pixels[leaf] = -1;
     return pixels;
 }
 

@@ -1,5 +1,7 @@
 // Label rasters on a développée's grid: 8-bit PNG/TIFF files, checks, and the transfer to and from leaves.
 #include "stylos/core/annotation/LabelRaster.h"
+
+#include "stylos/core/annotation/AssemblyLeafIndex.h"
 #include "stylos/core/util/TextCase.h"
 
 #include "../image/TemporaryImageFile.h"
@@ -13,6 +15,7 @@
 #include <cctype>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 
 namespace stylos::core::annotation {
 
@@ -116,27 +119,12 @@ Status checkLabelRaster(const LabelRaster& raster, const std::string& rasterName
 }
 
 Result<std::vector<std::int64_t>> leafPixels(const octree::PackedOctree& octree, const unroll::UnrollMap& map,
-                                             ProgressSink* progress)
+                                             ProgressSink* progress, double visibleDepth)
 {
-    const std::uint64_t leaves = octree.cellCount(octree.depth());
-    std::vector<std::int64_t> pixels(leaves, -1);
-    bool cancelled = false;
-    octree.forEachCell(octree.depth(), [&](const octree::CellView& cell) {
-        const auto hit = map.pixelOf(Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]));
-        if (hit) {
-            const double c = std::floor(hit->column), r = std::floor(hit->row);
-            if (c >= 0 && r >= 0 && c < map.width() && r < map.height())
-                pixels[cell.index] = std::int64_t(r) * map.width() + std::int64_t(c);
-        }
-        if (progress && (cell.index & 0xFFFF) == 0) {
-            progress->update(double(cell.index) / double(leaves));
-            if (progress->isCancelRequested()) return !(cancelled = true);
-        }
-        return true;
-    });
-    if (cancelled) return Error::at(ErrorCode::Cancelled, octree.path().string(), {}, "cancelled");
-    return pixels;
+    return posedLeafPixels(octree, Eigen::Isometry3d::Identity(), map, progress, visibleDepth);
 }
+
+double paintDepth(double pixelSize) { return std::max(10.0 * pixelSize, 0.010); }
 
 std::uint64_t applyLabelRaster(const LabelRaster& raster, std::span<const std::int64_t> pixels, std::span<std::uint8_t> labels)
 {

@@ -1,5 +1,6 @@
 #include "stylos/widgets/developpee/AssemblyDeveloppeeJob.h"
 
+#include "stylos/core/annotation/LabelRaster.h"
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/developpee/AssemblyDeveloppee.h"
 #include "stylos/core/octree/PackedOctree.h"
@@ -85,7 +86,9 @@ AssemblyDeveloppeeJob::leafIndex(const core::unroll::UnrollMap& map, std::shared
         if (!octree) return octree.error();
         const Eigen::Isometry3d pose = k == 0 ? Eigen::Isometry3d::Identity() : m_pieces[k - 1].toDrum;
         core::SubProgress part(progress, double(k) / double(count), double(k + 1) / double(count));
-        auto pixels = core::annotation::posedLeafPixels(*octree, pose, map, progress ? &part : nullptr);
+        // The surface the développée shows (core::annotation::paintDepth), as on a fragment's own développée.
+        auto pixels = core::annotation::posedLeafPixels(*octree, pose, map, progress ? &part : nullptr,
+                                                        core::annotation::paintDepth(map.pixelSize()));
         if (!pixels) return pixels.error();
         pieces.push_back({k == 0 ? 0 : m_pieces[k - 1].fragmentId, std::move(pixels).value(), pose, path.toStdString()});
     }

@@ -93,9 +93,10 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
     result.shaded = std::make_shared<const core::shading::ShadedImage>(std::move(made->shaded));
     result.map = std::move(made->map);
     if (QFileInfo(m_path).suffix().compare(QStringLiteral("poct"), Qt::CaseInsensitive) == 0) {
-        // The pixel ↔ leaf index for painting: once per développée, here in the background.
+        // The pixel ↔ leaf index for painting: once per développée, here in the background. Painting labels the
+        // surface the développée shows (core::annotation::paintDepth): not a fragment's inner break face.
         if (auto octree = core::octree::PackedOctree::open(source)) {
-            auto pixels = core::annotation::leafPixels(*octree, *result.map);
+            auto pixels = core::annotation::leafPixels(*octree, *result.map, nullptr, core::annotation::paintDepth(result.map->pixelSize()));
             if (!pixels && pixels.error().code == core::ErrorCode::Cancelled) return pixels.error();
             if (pixels)
                 result.leafIndex = std::make_shared<const core::annotation::PixelLeafIndex>(

@@ -26,6 +26,7 @@
 #include <Eigen/Geometry>
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <span>
 #include <string>
@@ -34,9 +35,11 @@
 
 namespace stylos::core::annotation {
 
-/** @brief The pixel (row · width + column) of every leaf of @p octree carried by @p pose; −1 off the image. */
+/** @brief The pixel (row · width + column) of every leaf of @p octree carried by @p pose; −1 off the image, and,
+ *         with a finite @p visibleDepth, −1 for the leaves not on the surface the développée shows (leafPixels()). */
 Result<std::vector<std::int64_t>> posedLeafPixels(const octree::PackedOctree& octree, const Eigen::Isometry3d& pose,
-                                                  const unroll::UnrollMap& map, ProgressSink* progress = nullptr);
+                                                  const unroll::UnrollMap& map, ProgressSink* progress = nullptr,
+                                                  double visibleDepth = std::numeric_limits<double>::infinity());
 
 class AssemblyLeafIndex {
 public:

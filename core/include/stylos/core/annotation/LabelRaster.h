@@ -30,6 +30,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <limits>
 #include <span>
 #include <string>
 #include <vector>
@@ -59,9 +60,24 @@ Status writeLabelRaster(const LabelRaster& raster, const std::filesystem::path& 
 Status checkLabelRaster(const LabelRaster& raster, const std::string& rasterName, const unroll::UnrollMap& map,
                         const std::string& mapName, const Legend& legend, AnnotationLayer layer);
 
-/** @brief The pixel index (row · width + column) of every leaf, in leaf order; −1 where off the image. */
+/**
+ * @brief The pixel index (row · width + column) of every leaf, in leaf order; −1 where off the image.
+ * @param visibleDepth metres, finite: only the surface the développée shows — a leaf seen edge-on (its normal
+ *        within 17° of the surface's plane, |n · outward| < 0.3: a fracture or bed face) is left out (−1), and so
+ *        is one lower (in the map's height) than the highest leaf of its pixel that is not, by more than this (a
+ *        fragment's inner break face). Infinite (the default): every leaf, whatever its height and facing.
+ */
 Result<std::vector<std::int64_t>> leafPixels(const octree::PackedOctree& octree, const unroll::UnrollMap& map,
-                                             ProgressSink* progress = nullptr);
+                                             ProgressSink* progress = nullptr,
+                                             double visibleDepth = std::numeric_limits<double>::infinity());
+
+/**
+ * @brief The visibleDepth of painting on a développée of @p pixelSize metres (the workbench's brush and fills,
+ *        `stylos-cli annotate`): ten pixels, at least 10 mm. A flute's wall within a pixel stays in (a semicircular
+ *        flute of radius ρ drops √(2ρP) in its first pixel column: 8.5 mm for ρ = 36 mm, P = 1 mm); a fragment's
+ *        inner break face, tens of millimetres down, does not, so its area is not counted with the outer surface's.
+ */
+double paintDepth(double pixelSize);
 
 /** @brief Sets labels[i] = raster id at pixels[i] where that id ≠ 0; returns how many labels changed.
  *         Preconditions (asserted): labels and pixels of equal size, pixels inside the raster or −1. */
