@@ -104,7 +104,8 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
         if (!octree) return octree.error();
         auto labels = labelsOf(f, *octree, *panel.layer);
         if (!labels) return labels.error();
-        auto pixels = annotation::leafPixels(*octree, dev.map);
+        // The classes of the surface the développée shows, as painting labels it (annotation::paintDepth).
+        auto pixels = annotation::leafPixels(*octree, dev.map, nullptr, annotation::paintDepth(dev.map.pixelSize()));
         if (!pixels) return pixels.error();
         field.classes = annotation::labelRasterFromLeaves(*labels, *pixels, field.width, field.height).ids;
     }
