@@ -2561,6 +2561,10 @@
         <source>Could not copy the octrees into the project&apos;s folder: %1.</source>
         <translation>Δεν ήταν δυνατή η αντιγραφή των οκταδικών δέντρων στον φάκελο του έργου: %1.</translation>
     </message>
+    <message>
+        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
+        <translation>Η διάταξη πίνακα που φυλάσσεται στο %1 δεν διαβάστηκε: το έργο ανοίγει χωρίς αυτήν, και το κείμενό της μένει στο αρχείο έως ότου εξαχθεί νέος πίνακας.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>

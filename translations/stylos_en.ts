@@ -2557,6 +2557,10 @@
         <source>Could not copy the octrees into the project&apos;s folder: %1.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>

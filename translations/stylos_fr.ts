@@ -2557,6 +2557,10 @@
         <source>Could not copy the octrees into the project&apos;s folder: %1.</source>
         <translation>Impossible de copier les octrees dans le dossier du projet : %1.</translation>
     </message>
+    <message>
+        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
+        <translation>La mise en planche conservée dans %1 n’a pas pu être lue : le projet s’ouvre sans elle, et son texte reste dans le fichier jusqu’à l’export d’une nouvelle planche.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>

@@ -239,8 +239,32 @@ TEST(PlateSpec, TheProjectKeepsItsPlate)
 
     auto json = nlohmann::json::parse(ProjectFile::toJson(scene, "/p/a.stylos"));
     json["plate"]["panels"][0]["layer"] = "paint";
+    json["plate"]["scael"] = 20; // a misspelt key too
+    // The project opens without the plate it cannot read, says why, and writes the section back as it was.
     const auto bad = ProjectFile::fromJson(json.dump(), "/p/a.stylos");
-    ASSERT_FALSE(bad.ok());
-    EXPECT_NE(bad.error().message.find("plate"), std::string::npos) << bad.error().message;
-    EXPECT_NE(bad.error().message.find("panels[0].layer"), std::string::npos) << bad.error().message;
+    ASSERT_TRUE(bad.ok()) << bad.error().message;
+    EXPECT_FALSE(bad->scene.plate().has_value());
+    ASSERT_TRUE(bad->plateProblem.has_value());
+    EXPECT_EQ(bad->plateProblem->code, stylos::core::ErrorCode::Malformed);
+    EXPECT_NE(bad->plateProblem->message.find("/p/a.stylos: plate"), std::string::npos) << bad->plateProblem->message;
+    EXPECT_NE(bad->plateProblem->message.find("scael"), std::string::npos) << bad->plateProblem->message;
+    EXPECT_TRUE(bad->problems.empty());
+    EXPECT_EQ(nlohmann::json::parse(bad->scene.unreadPlate()), json["plate"]);
+    const auto saved = nlohmann::json::parse(ProjectFile::toJson(bad->scene, "/p/a.stylos"));
+    EXPECT_EQ(saved["plate"], json["plate"]);
+    EXPECT_EQ(saved["legend"], json["legend"]);
+
+    // A plate exported since replaces it.
+    auto replaced = bad->scene;
+    replaced.setPlate(plate);
+    EXPECT_TRUE(replaced.unreadPlate().empty());
+    const auto again = ProjectFile::fromJson(ProjectFile::toJson(replaced, "/p/a.stylos"), "/p/a.stylos");
+    ASSERT_TRUE(again.ok());
+    EXPECT_FALSE(again->plateProblem.has_value());
+    ASSERT_TRUE(again->scene.plate().has_value());
+    EXPECT_EQ(*again->scene.plate(), plate);
+
+    // The project's other sections are still checked strictly.
+    json["legend"] = 3;
+    EXPECT_FALSE(ProjectFile::fromJson(json.dump(), "/p/a.stylos").ok());
 }

@@ -34,6 +34,7 @@ private Q_SLOTS:
     void modifiedFollowsTheCleanState();
     void saveThenOpenGivesAnEqualScene();
     void aMissingOctreeIsReportedAndTheProjectOpens();
+    void anUnreadablePlateIsReportedAndKept();
     void aBadProjectKeepsTheCurrentOne();
     void undoingARemovalDuringLoadingReopensTheOctree();
     void assembliesMoveTheirFragmentsAndUndoExactly();
@@ -308,6 +309,45 @@ void SceneDocumentTest::aMissingOctreeIsReportedAndTheProjectOpens()
     QVERIFY(errors[0].contains(gone));
     QVERIFY(reopened.octree(1));
     QVERIFY(!reopened.octree(goneId));
+    QVERIFY(tasks.waitForIdle(10000));
+}
+
+void SceneDocumentTest::anUnreadablePlateIsReportedAndKept()
+{
+    const QString folder = m_dir.filePath("plate");
+    QVERIFY(QDir().mkpath(folder));
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    doc.addFragment(fragment("drum"), m_octree);
+    QString error;
+    const QString path = folder + "/project.stylos";
+    QVERIFY2(doc.saveAs(path, &error), qPrintable(error));
+    // A hand-edited plate section with a misspelt key.
+    QFile file(path);
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QByteArray text = file.readAll();
+    file.close();
+    const QByteArray plate = "\"plate\": {\"pagee\": \"A4\", \"panels\": []},\n  \"fragments\"";
+    QVERIFY(text.contains("\"fragments\""));
+    text.replace("\"fragments\"", plate);
+    stylos::test::writeFile(folder, "project.stylos", text);
+
+    SceneDocument reopened(tasks);
+    QSignalSpy loaded(&reopened, &SceneDocument::loadingFinished);
+    QVERIFY2(reopened.open(path, &error), qPrintable(error));
+    QCOMPARE(reopened.scene().size(), 1u);
+    QVERIFY(!reopened.scene().plate());
+    QVERIFY(loaded.wait(10000));
+    const QStringList errors = loaded.at(0).at(0).toStringList();
+    QCOMPARE(errors.size(), 1);
+    QVERIFY2(errors[0].startsWith("The plate layout kept in project.stylos could not be read"), qPrintable(errors[0]));
+    QVERIFY2(errors[0].contains("plate: pagee"), qPrintable(errors[0]));
+    QVERIFY(reopened.octree(1));
+
+    // Saving does not lose the section the user may want to mend.
+    QVERIFY2(reopened.saveAs(path, &error), qPrintable(error));
+    QVERIFY(file.open(QIODevice::ReadOnly));
+    QVERIFY(file.readAll().contains("\"pagee\": \"A4\""));
     QVERIFY(tasks.waitForIdle(10000));
 }
 

@@ -186,9 +186,15 @@ Result<LoadedProject> SceneReader::read(const json& root)
         project.scene.setLegend(std::move(read).value());
     }
     if (const json* plate = member(root, "plate")) {
+        // The plate only remembers the last export's layout: one this version cannot read (a misspelt key,
+        // a later version's layout) must not keep the fragments, poses and labels from opening.
         auto read = plate::PlateSpec::fromJson(*plate, m_file + ": plate");
-        if (!read) return read.error();
-        project.scene.setPlate(std::move(read).value());
+        if (read) {
+            project.scene.setPlate(std::move(read).value());
+        } else {
+            project.plateProblem = read.error();
+            project.scene.setUnreadPlate(plate->dump());
+        }
     }
     return project;
 }
@@ -342,7 +348,10 @@ std::string ProjectFile::toJson(const Scene& scene, const std::filesystem::path&
     root["assemblies"] = std::move(assemblies);
     root["fragments"] = std::move(fragments);
     root["legend"] = OrderedJson::parse(scene.legend().toJson().dump());
-    if (scene.plate()) root["plate"] = OrderedJson::parse(scene.plate()->toJson().dump());
+    if (scene.plate())
+        root["plate"] = OrderedJson::parse(scene.plate()->toJson().dump());
+    else if (!scene.unreadPlate().empty())
+        root["plate"] = OrderedJson::parse(scene.unreadPlate());
     return root.dump(2) + "\n";
 }
 

@@ -550,6 +550,11 @@ bool SceneDocument::open(const QString& path, QString* error)
     }
     resetScene(std::move(loaded->scene));
     setProjectPath(absolute);
+    if (loaded->plateProblem)
+        m_loadErrors << tr("The plate layout kept in %1 could not be read: the project opens without it, and its "
+                           "text stays in the file until a new plate is exported.")
+                                .arg(QFileInfo(path).fileName()) +
+                            QLatin1Char('\n') + QString::fromStdString(loaded->plateProblem->message);
     std::size_t problem = 0;
     for (const Fragment& f : m_scene.fragments()) {
         if (f.octreeMissing && problem < loaded->problems.size())

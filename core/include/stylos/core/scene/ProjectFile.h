@@ -42,6 +42,7 @@
 #include "stylos/core/util/Result.h"
 
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -55,10 +56,14 @@ inline constexpr int ProjectFormatVersion = 2;
 /** @brief The project file's extension, dot included. */
 inline constexpr std::string_view ProjectExtension = ".stylos";
 
-/** @brief A loaded project: the scene, and what was wrong with single fragments (missing octrees). */
+/** @brief A loaded project: the scene, and what was wrong with single fragments (missing octrees) or with
+ *  its plate layout. */
 struct LoadedProject {
     Scene scene;
     std::vector<Error> problems;  ///< one per fragment whose octree is missing, in fragment order
+    /** The "plate" section could not be read (named key and problem): the project opens without a plate
+     *  and keeps the section's text (Scene::unreadPlate). */
+    std::optional<Error> plateProblem;
 };
 
 class ProjectFile {

@@ -15,6 +15,7 @@
 
 #include <cstddef>
 #include <optional>
+#include <string>
 #include <vector>
 
 namespace stylos::core::scene {
@@ -98,7 +99,17 @@ public:
     /** @brief The plate last exported (File › Export plate…), kept so the figure can be made again; none
      *  until one is. clear() keeps it. */
     const std::optional<plate::PlateSpec>& plate() const { return m_plate; }
-    void setPlate(std::optional<plate::PlateSpec> plate) { m_plate = std::move(plate); }
+    void setPlate(std::optional<plate::PlateSpec> plate)
+    {
+        m_plate = std::move(plate);
+        m_unreadPlate.clear();
+    }
+
+    /** @brief A "plate" section of the project file that this version could not read (a misspelt key, a
+     *  later version's layout), as JSON text: kept verbatim and written back while no plate replaces it,
+     *  so opening and saving a project never loses it. Empty when there is none. setPlate() drops it. */
+    const std::string& unreadPlate() const { return m_unreadPlate; }
+    void setUnreadPlate(std::string json) { m_unreadPlate = std::move(json); }
 
     bool operator==(const Scene&) const = default;
 
@@ -109,6 +120,7 @@ private:
     AssemblyId m_nextAssemblyId = 1;
     annotation::Legend m_legend = annotation::Legend::defaults();
     std::optional<plate::PlateSpec> m_plate;
+    std::string m_unreadPlate;
 };
 
 } // namespace stylos::core::scene
