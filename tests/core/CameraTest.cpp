@@ -318,3 +318,25 @@ TEST(CameraTest, ClipPlanesHoldTheScene)
     camera.setOrthographic(true);
     EXPECT_LT(camera.nearPlane(), 0);
 }
+
+TEST(CameraTest, AFragmentFarAwayDoesNotClipWhatTheCameraLooksAt)
+{
+    Camera camera;
+    const Eigen::AlignedBox3d drum(Eigen::Vector3d(-0.5, -0.5, 0), Eigen::Vector3d(0.5, 0.5, 1));
+    camera.setSceneBounds(drum);
+    camera.fit(drum);
+    const double nearAlone = camera.nearPlane(), farAlone = camera.farPlane();
+    // A fragment typed 10,000 km away: the scene's box now spans it.
+    Eigen::AlignedBox3d scene = drum;
+    scene.extend(Eigen::Vector3d(1e7, 0, 0));
+    camera.setSceneBounds(scene);
+    const double radius = 0.5 * drum.diagonal().norm();
+    EXPECT_NEAR(camera.nearPlane(), 0.05 * camera.distance(), 1e-12); // was 1e-4 of 10,000 km: 1 km
+    EXPECT_LT(camera.nearPlane(), camera.distance() - radius);
+    EXPECT_NEAR(camera.farPlane(), 1e4 * camera.nearPlane(), 1e-6); // the far fragment is clipped
+    EXPECT_GT(camera.farPlane(), camera.distance() + radius);
+    // Back to the drum alone: the planes as before.
+    camera.setSceneBounds(drum);
+    EXPECT_DOUBLE_EQ(camera.nearPlane(), nearAlone);
+    EXPECT_DOUBLE_EQ(camera.farPlane(), farAlone);
+}

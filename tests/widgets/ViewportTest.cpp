@@ -52,6 +52,7 @@ private Q_SLOTS:
     void markerIsDrawn();
     void ambientShading();
     void aPoseChangeMovesTheDrawnFragmentWithoutACut();
+    void aFragmentFarAwayLeavesTheDrumInView();
     void orbitBenchmarkReports();
     void poseBenchmarkReports();
 
@@ -276,6 +277,27 @@ void ViewportTest::aPoseChangeMovesTheDrawnFragmentWithoutACut()
     waitRefined();
     QVERIFY(m_view->scheduler().cutsStarted() > cuts);
     QVERIFY(m_view->setFragmentPose(42, Eigen::Matrix4d::Identity()));
+    waitRefined();
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
+}
+
+void ViewportTest::aFragmentFarAwayLeavesTheDrumInView()
+{
+    waitRefined();
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
+    // A second fragment typed 10,000 km away (the scene's box then spans 10,000 km): the drum the camera
+    // looks at stays drawn (the near plane was put at 1 km, a blank view until Fit).
+    ViewFragment drum;
+    drum.id = 42;
+    drum.octree = m_drum.octree;
+    ViewFragment far = drum;
+    far.id = 43;
+    far.pose.topRightCorner<3, 1>() = Eigen::Vector3d(1e7, 0, 0);
+    m_view->setFragments({drum, far});
+    waitRefined();
+    QVERIFY(m_view->camera().nearPlane() < 0.5 * m_view->camera().distance());
+    QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
+    m_view->setFragments({drum});
     waitRefined();
     QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
 }

@@ -148,6 +148,14 @@ void Camera::clipRange(double& nearPlane, double& farPlane) const
     if (!m_orthographic) {
         if (farPlane <= 0) farPlane = m_distance + radius; // the scene is behind: anything valid
         nearPlane = std::max(nearPlane, std::max(farPlane * 1e-4, 1e-6));
+        // A scene deeper than the depth buffer's 1e4 : 1 (a fragment moved kilometres away) must not push the
+        // near plane past what the camera looks at: the target's surroundings stay in range, and what lies
+        // beyond 1e4 near-plane distances is clipped instead.
+        const double closest = std::max(0.05 * m_distance, 1e-6);
+        if (nearPlane > closest && depth - radius < closest) {
+            nearPlane = std::max(depth - radius, closest);
+            farPlane = std::min(farPlane, nearPlane * 1e4);
+        }
     }
 }
 
