@@ -41,6 +41,7 @@ private Q_SLOTS:
     void editsInTheTreeAreUndoable();
     void developpeeRowFollowsTheDocument();
     void propertiesShowAndEditTheFragment();
+    void poseFieldsReadScientificNotation();
     void assembliesAreRowsHoldingTheirMembersAndTakeDrops();
 
 private:
@@ -195,6 +196,44 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     doc.removeFragment(id);
     QCOMPARE(properties.fragment(), stylos::core::scene::NoFragment);
     QVERIFY(!properties.nameEdit()->isEnabled());
+}
+
+void SceneTreeModelTest::poseFieldsReadScientificNotation()
+{
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    const FragmentId id = doc.addFragment(fragment("drum"), m_octree);
+    FragmentPropertiesWidget properties(doc);
+    properties.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&properties));
+    properties.setFragment(id);
+    QDoubleSpinBox* x = properties.poseSpin(0);
+    const auto type = [x](const QString& text) {
+        x->setFocus();
+        x->selectAll();
+        QTest::keyClicks(x, text);
+        QTest::keyClick(x, Qt::Key_Return);
+    };
+    type("2.5e-3");
+    QCOMPARE(x->value(), 0.0025);
+    QCOMPARE(doc.fragment(id)->pose.toTranslationAngles().translation[0], 0.0025);
+    type("-1.5E2");
+    QCOMPARE(x->value(), -150.0);
+    // Out of range (10,000 km at most): not applied, where the plain spin box dropped the "e" and read 112.
+    const int edits = doc.undoStack()->count();
+    type("1e12");
+    QCOMPARE(x->value(), -150.0);
+    x->clearFocus();
+    QCOMPARE(x->value(), -150.0);
+    QCOMPARE(doc.undoStack()->count(), edits);
+    type("1e1x"); // the "x" is refused as typed
+    QCOMPARE(x->value(), 10.0);
+    type("12");
+    QCOMPARE(x->value(), 12.0);
+    // With a French decimal comma.
+    x->setLocale(QLocale(QLocale::French, QLocale::France));
+    type("2,5e1");
+    QCOMPARE(x->value(), 25.0);
 }
 
 void SceneTreeModelTest::developpeeRowFollowsTheDocument()

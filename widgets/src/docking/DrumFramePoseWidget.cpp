@@ -1,6 +1,7 @@
 #include "stylos/widgets/docking/DrumFramePoseWidget.h"
 
 #include "docking/FragmentBounds.h"
+#include "document/NumberSpinBox.h"
 #include "stylos/core/dock/DrumFramePose.h"
 #include "stylos/core/scene/SceneEigen.h"
 
@@ -55,7 +56,7 @@ DrumFramePoseWidget::DrumFramePoseWidget(SceneDocument& document, QWidget* paren
     m_form->addRow(m_status);
     for (int i = 0; i < FieldCount; ++i) {
         const auto field = Field(i);
-        auto* spin = new QDoubleSpinBox(this);
+        auto* spin = new NumberSpinBox(this);
         spin->setObjectName(QStringLiteral("drumFrame%1").arg(i));
         spin->setKeyboardTracking(false); // one edit per Enter, arrow step or focus change
         if (isAngle(field)) {

@@ -3,6 +3,8 @@
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/widgets/document/SceneDocument.h"
 
+#include "document/NumberSpinBox.h"
+
 #include <QCheckBox>
 #include <QColorDialog>
 #include <QDoubleSpinBox>
@@ -26,7 +28,7 @@ constexpr double DegreesPerRadian = 180.0 / std::numbers::pi;
 
 QDoubleSpinBox* makeSpin(QWidget* parent, bool angle)
 {
-    auto* spin = new QDoubleSpinBox(parent);
+    auto* spin = new NumberSpinBox(parent);
     spin->setKeyboardTracking(false); // one edit per Enter, arrow step or focus change
     if (angle) {
         spin->setRange(-180.0, 180.0);
