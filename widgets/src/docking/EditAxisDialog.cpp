@@ -1,5 +1,7 @@
 #include "stylos/widgets/docking/EditAxisDialog.h"
 
+#include "document/NumberSpinBox.h"
+
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
 #include <QFormLayout>
@@ -18,7 +20,7 @@ QWidget* row(QWidget* parent, std::array<QDoubleSpinBox*, 3>& spins, const QStri
     auto* layout = new QHBoxLayout(box);
     layout->setContentsMargins(0, 0, 0, 0);
     for (int k = 0; k < 3; ++k) {
-        auto* spin = new QDoubleSpinBox(box);
+        auto* spin = new NumberSpinBox(box);
         spin->setObjectName(QStringLiteral("%1%2").arg(name).arg(k));
         spin->setRange(-1e7, 1e7);
         spin->setDecimals(decimals);

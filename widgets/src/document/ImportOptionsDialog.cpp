@@ -1,5 +1,7 @@
 #include "stylos/widgets/document/ImportOptionsDialog.h"
 
+#include "document/NumberSpinBox.h"
+
 #include <QComboBox>
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>
@@ -49,7 +51,7 @@ ImportOptionsDialog::ImportOptionsDialog(const core::io::ImportFrame& frame, QWi
     auto* offsetRow = new QHBoxLayout;
     const char* offsetNames[] = {"importOffsetX", "importOffsetY", "importOffsetZ"};
     for (int axis = 0; axis < 3; ++axis) {
-        m_offset[axis] = new QDoubleSpinBox(this);
+        m_offset[axis] = new NumberSpinBox(this);
         m_offset[axis]->setObjectName(QString::fromLatin1(offsetNames[axis]));
         m_offset[axis]->setRange(-1e9, 1e9);
         m_offset[axis]->setDecimals(3);
