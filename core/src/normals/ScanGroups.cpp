@@ -44,20 +44,22 @@ Result<NormalReport> runNormalJobPerScan(const NormalJob& job, std::span<const d
         return runNormalJob(one, options, progress);
     }
     try {
-        // The points of each scan, queries first: one counting sort by id.
-        std::vector<std::uint32_t> start(MaxScanId + 2, 0), queryEnd(MaxScanId + 1, 0);
+        // The points of each scan, queries first: one counting sort by id, over the ids up to the largest met
+        // (a tile of one or two scans does not pay for 65,536 of them).
+        const std::size_t top = std::size_t(*std::max_element(scans.begin(), scans.end()));
+        std::vector<std::uint32_t> start(top + 2, 0), queryEnd(top + 1, 0);
         for (std::size_t i = 0; i < total; ++i) ++start[std::size_t(scans[i]) + 1];
         for (std::size_t s = 1; s < start.size(); ++s) start[s] += start[s - 1];
         std::vector<std::uint32_t> order(total), fill(start.begin(), start.end() - 1);
         for (std::size_t i = 0; i < queries; ++i) order[fill[std::size_t(scans[i])]++] = std::uint32_t(i);
-        for (std::size_t s = 0; s <= MaxScanId; ++s) queryEnd[s] = fill[s];
+        for (std::size_t s = 0; s <= top; ++s) queryEnd[s] = fill[s];
         for (std::size_t i = queries; i < total; ++i) order[fill[std::size_t(scans[i])]++] = std::uint32_t(i);
 
         NormalReport report;
         std::vector<double> positions;
         std::vector<float> normals, quality;
         std::size_t done = 0;
-        for (std::size_t s = 0; s <= MaxScanId; ++s) {
+        for (std::size_t s = 0; s <= top; ++s) {
             const std::size_t first = start[s], own = queryEnd[s] - first, count = start[s + 1] - first;
             if (own == 0) continue;
             positions.resize(3 * count);
