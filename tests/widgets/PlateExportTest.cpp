@@ -35,6 +35,15 @@ using namespace stylos;
 namespace cp = core::plate;
 using core::annotation::AnnotationLayer;
 
+/** A document and the plate actions of a window over it, as the workbench wires them. */
+struct PlateBench {
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document{tasks};
+    QWidget window;
+    widgets::DeveloppeeView view;
+    app::PlateActions actions{document, view, window};
+};
+
 class PlateExportTest : public QObject {
     Q_OBJECT
 
@@ -134,8 +143,8 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
 
 void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()
 {
-    widgets::TaskManager tasks;
-    widgets::SceneDocument document(tasks);
+    PlateBench bench;
+    widgets::SceneDocument& document = bench.document;
     const auto id = addDrum(document);
     QVERIFY(id != 0);
     const auto held = document.labels().labels(id, AnnotationLayer::Material);
@@ -152,9 +161,7 @@ void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()
     QVERIFY(std::count(classes.begin(), classes.end(), std::uint8_t(3)) > 0);
     QCOMPARE(plate->panels[0].image.channels, 3); // tinted in the legend's colour
 
-    QWidget window;
-    widgets::DeveloppeeView view;
-    app::PlateActions actions(document, view, window);
+    app::PlateActions& actions = bench.actions;
     QVERIFY(actions.plateAction()->isEnabled());
     QVERIFY(!actions.exportDeveloppee(m_dir.filePath(QStringLiteral("none.png"))));
     QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
@@ -193,12 +200,9 @@ std::optional<std::array<double, 4>> topCamera()
 
 void PlateExportTest::viewImageIsTheChosenWidthAlongTheCamera()
 {
-    widgets::TaskManager tasks;
-    widgets::SceneDocument document(tasks);
-    QVERIFY(addDrum(document) != 0);
-    QWidget window;
-    widgets::DeveloppeeView view;
-    app::PlateActions actions(document, view, window);
+    PlateBench bench;
+    QVERIFY(addDrum(bench.document) != 0);
+    app::PlateActions& actions = bench.actions;
     QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
     const QString png = m_dir.filePath(QStringLiteral("view.png"));
     actions.exportViewImage(800, png); // no camera source: refused at once
@@ -222,18 +226,15 @@ void PlateExportTest::aCancelledExportIsNoError()
 {
     // Cancelled from the Tasks dock, or by quitting: said in the log, never in an error box (a box that came up
     // after the window had closed kept the application running without a window).
-    widgets::TaskManager tasks;
-    widgets::SceneDocument document(tasks);
-    QVERIFY(addDrum(document) != 0);
-    QWidget window;
-    widgets::DeveloppeeView view;
-    app::PlateActions actions(document, view, window);
+    PlateBench bench;
+    QVERIFY(addDrum(bench.document) != 0);
+    app::PlateActions& actions = bench.actions;
     actions.setCameraSource(topCamera);
     QSignalSpy finished(&actions, &app::PlateActions::plateFinished);
     QSignalSpy reported(&actions, &app::PlateActions::reported);
     const QString png = m_dir.filePath(QStringLiteral("cancelled.png"));
     actions.exportViewImage(12000, png);
-    tasks.cancelAll();
+    bench.tasks.cancelAll();
     QVERIFY(finished.wait(60000));
     QCOMPARE(finished.at(0).at(0).toBool(), false);
     QCOMPARE(reported.count(), 1);
