@@ -10,6 +10,8 @@
 #include "stylos/core/dock/DockRegistration.h"
 #include "stylos/core/dock/DrumGuides.h"
 #include "stylos/core/dock/GuidesFile.h"
+#include "stylos/core/io/PointFileFormat.h"
+#include "stylos/core/octree/PackedOctree.h"
 
 #include <nlohmann/json.hpp>
 
@@ -71,6 +73,20 @@ int fail(const core::Error& error)
     return ExitFailure;
 }
 
+/** The drum named with --guides is the frame the pose is given in, not read for its points: still a cloud or
+ *  an octree, whose header opens (a folder, an empty or foreign file is named as such). */
+core::Status checkDrumFile(const DockRequest& r)
+{
+    if (core::cloud::isPoctPath(r.drum)) {
+        auto octree = core::octree::PackedOctree::open(r.drum);
+        if (!octree) return octree.error();
+        return {};
+    }
+    auto reader = core::io::openPointReader(r.drum, r.load.read);
+    if (!reader) return reader.error();
+    return {};
+}
+
 /** The guides: from --guides (refitted from the drum about its axis when the file has no profile), or
  *  fitted on the drum. */
 core::Result<dock::DrumGuides> guidesFor(const DockRequest& r)
@@ -80,6 +96,7 @@ core::Result<dock::DrumGuides> guidesFor(const DockRequest& r)
     dock::GuideOptions options;
     options.threads = r.threads;
     if (!r.guides.empty()) {
+        if (const core::Status drum = checkDrumFile(r); !drum) return drum.error();
         auto guides = dock::readGuidesFile(r.guides);
         if (!guides || !guides->profile.empty()) return guides;
         options.axis = guides->axis;

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <numbers>
 #include <sstream>
@@ -135,6 +136,17 @@ TEST(CliDock, BadInputFailsNamingTheProblem)
     run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides}); // identity start: metres away
     EXPECT_EQ(run.exitCode, 1);
     EXPECT_NE(run.err.find("too far from the drum"), std::string::npos) << run.err;
+
+    // With --guides the drum's points are not needed, but the file must still be a cloud (it names the frame).
+    std::ofstream(dir / "junk.ply") << "hello\n";
+    std::filesystem::create_directory(dir / "folder.ply");
+    run = runCli({"dock", s.fragment, "--drum", (dir / "junk.ply").string(), "--guides", s.guides});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("junk.ply: byte 0: not a PLY file"), std::string::npos) << run.err;
+    EXPECT_TRUE(run.out.empty()) << run.out;
+    run = runCli({"dock", s.fragment, "--drum", (dir / "folder.ply").string(), "--guides", s.guides});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("folder.ply: is a directory"), std::string::npos) << run.err;
 
     std::ofstream(dir / "bad.json") << "{\"axis_point\": [0, 0]}";
     run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", (dir / "bad.json").string()});

@@ -116,6 +116,35 @@ TEST(DockRegistrationTest, LockedUnknownsDoNotMove)
     EXPECT_EQ(result->uncertainty.size(), 2u); // r and tangent
 }
 
+TEST(DockRegistrationTest, FluteShiftIsTheTurnAboutTheAxis)
+{
+    const DrumFrame frame(guides());
+    const double pitchDeg = 360.0 / 48.0;
+    const double degree = std::numbers::pi / 180.0;
+    // A fragment started 2° round the axis from its place: docked, it turns 2° back.
+    const auto& fragment = test::dockFragment(5);
+    const Eigen::Isometry3d truth = test::truePose(fragment, test::dockDrum());
+    const Eigen::Vector3d centre = truth * test::cloudCentre(fragment.cloud);
+    auto turned = dockFragment(fragment.cloud, guides(), test::perturbed(truth, frame, centre, 2.0 * degree, 0.0, 0.0));
+    ASSERT_TRUE(turned.ok()) << turned.error().message;
+    EXPECT_NEAR(turned->fluteShift, -2.0 / pitchDeg, 0.003);
+
+    // The whole drum against its own guides (its place is where it is): turned 1°, it turns 1° back; slid 1 mm
+    // sideways, it turns by nothing (its centre's azimuth, on the axis, read 0.108 pitches).
+    const auto& drum = test::dockDrum().cloud;
+    const Eigen::Vector3d axisPoint = frame.origin, e1 = frame.rows.row(0).transpose();
+    auto drumTurned = dockFragment(drum, guides(), test::perturbed(Eigen::Isometry3d::Identity(), frame,
+                                                                   axisPoint + 0.3 * e1, 1.0 * degree, 0.0, 0.0));
+    ASSERT_TRUE(drumTurned.ok()) << drumTurned.error().message;
+    EXPECT_NEAR(drumTurned->fluteShift, -1.0 / pitchDeg, 0.003);
+    const Eigen::Isometry3d slid(Eigen::Translation3d(0.001 * e1));
+    auto drumSlid = dockFragment(drum, guides(), slid);
+    ASSERT_TRUE(drumSlid.ok()) << drumSlid.error().message;
+    EXPECT_LT(std::abs(drumSlid->fluteShift), 0.003) << drumSlid->fluteShift;
+    const Eigen::Vector3d onSurface = axisPoint + guides().radius * e1;
+    EXPECT_LT((drumSlid->pose * onSurface - onSurface).norm(), 2e-4) << frame.origin.transpose(); // slid back
+}
+
 TEST(DockRegistrationTest, NamesUnknownsAndLocks)
 {
     EXPECT_STREQ(dockUnknownName(DockUnknown::TiltRoll), "tilt_roll");

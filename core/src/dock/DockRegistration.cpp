@@ -359,13 +359,17 @@ Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGui
             result.uncertainty.push_back({u, std::sqrt(std::max(0.0, cov(i, i))) / (angular ? p.scale : 1.0)});
         }
     }
-    // Rotation about the axis from start to end, of the fragment's centre.
-    Eigen::Vector3d centreLocal = Eigen::Vector3d::Zero();
-    for (const Eigen::Vector3d& v : p.local) centreLocal += v;
-    centreLocal /= double(p.local.size());
-    const Eigen::Vector3d a0 = startFrame * centreLocal, a1 = p.toFrame * centreLocal;
-    double turn = std::atan2(a1.y(), a1.x()) - std::atan2(a0.y(), a0.x());
-    turn -= 2.0 * std::numbers::pi * std::floor(turn / (2.0 * std::numbers::pi) + 0.5);
+    // Rotation about the axis from start to end: the turn that best carries the points' start places onto their
+    // docked places about the axis (least squares, in the frame's xy plane). A fragment's slide along the surface
+    // counts, as it moves the fragment round the drum; a whole drum's does not (its centre lies on the axis,
+    // whose azimuth is noise).
+    double across = 0.0, along = 0.0;
+    for (const Eigen::Vector3d& v : p.local) {
+        const Eigen::Vector3d a0 = startFrame * v, a1 = p.toFrame * v;
+        across += a0.x() * a1.y() - a0.y() * a1.x();
+        along += a0.x() * a1.x() + a0.y() * a1.y();
+    }
+    const double turn = std::atan2(across, along);
     result.fluteShift = turn / model->pitch();
 
     result.pose = frameOfWorld.inverse() * p.toFrame * Eigen::Translation3d(-fragment.origin);
