@@ -162,6 +162,7 @@ int runAo(const std::vector<std::string>& args)
     AoRequest r;
     std::string problem;
     if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
+    if (const std::string target = outputProblem(r.output); !target.empty()) return failure(target);
 
     const auto start = Clock::now();
     // A point file: its octree first, in a folder beside the output that goes when this function returns.

@@ -178,6 +178,7 @@ int runBuild(const std::vector<std::string>& args)
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "build needs -o OUT.poct");
     if (!core::io::hasPoctExtension(*output)) return usageError(cl, "the output must be a .poct file, not \"" + *output + "\"");
+    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
 
     oct::BuildOptions options;
     core::synth::SyntheticStreamOptions stream;

@@ -170,6 +170,23 @@ int usageError(const CommandLine& cl, const std::string& message)
     return ExitUsage;
 }
 
+int failure(const std::string& message)
+{
+    std::cerr << "stylos-cli: " << message << "\n";
+    return ExitFailure;
+}
+
+std::string outputProblem(const std::filesystem::path& target)
+{
+    namespace fs = std::filesystem;
+    std::error_code ignored;
+    if (fs::is_directory(target, ignored)) return target.string() + " is a folder; name a file";
+    const fs::path folder = target.parent_path();
+    if (!folder.empty() && !fs::is_directory(folder, ignored))
+        return target.string() + ": the folder " + folder.string() + " does not exist";
+    return {};
+}
+
 std::string lowerExtension(const std::filesystem::path& path)
 {
     std::string ext = path.extension().string();

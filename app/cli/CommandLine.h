@@ -69,6 +69,16 @@ enum ExitCode { ExitOk = 0, ExitFailure = 1, ExitUsage = 2 };
  */
 int usageError(const CommandLine& cl, const std::string& message);
 
+/** Prints one line to stderr, "stylos-cli: message", and returns ExitFailure. */
+int failure(const std::string& message);
+
+/**
+ * What keeps @p target from being written, checked by every command before its work (so a long build does not
+ * end on it): "TARGET is a folder; name a file" or "TARGET: the folder F does not exist"; empty when none.
+ * Reported with failure() (exit 1, the output not writable), like a write that fails later.
+ */
+std::string outputProblem(const std::filesystem::path& target);
+
 /** The extension of @p path in lower case, with its dot (".ply"); empty without one. */
 std::string lowerExtension(const std::filesystem::path& path);
 

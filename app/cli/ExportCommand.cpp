@@ -46,6 +46,7 @@ int runExport(const std::vector<std::string>& args)
     if (output.empty()) return usageError(cl, "export needs -o OUT.ply|las");
     const std::string ext = lowerExtension(output);
     if (ext != ".ply" && ext != ".las") return usageError(cl, "the output must be a .ply or .las file, not \"" + output + "\"");
+    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     if (cl.value("legend") && ext != ".las") return usageError(cl, "--legend goes with a .las output");
     std::vector<std::string> layers;
     std::stringstream list(cl.value("layers").value_or("material,toolmark"));

@@ -35,6 +35,7 @@ int runGenerate(const std::vector<std::string>& args)
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "generate needs -o OUT.ply");
     if (lowerExtension(*output) != ".ply") return usageError(cl, "the output must be a .ply file, not \"" + *output + "\"");
+    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
 
     core::synth::SyntheticOptions options;
     long long seed = static_cast<long long>(options.seed), scans = options.scans, designSeed = 0;

@@ -88,6 +88,7 @@ int runGuides(const std::vector<std::string>& args)
     GuidesRequest r;
     std::string problem;
     if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
+    if (const std::string target = outputProblem(r.output); !target.empty()) return failure(target);
 
     const auto start = std::chrono::steady_clock::now();
     auto cloud = core::cloud::loadPointCloud(r.input, r.load);

@@ -56,6 +56,7 @@ int runNormals(const std::vector<std::string>& args)
     if (cl.positionals().size() != 1) return usageError(cl, "normals takes exactly one input file");
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "normals needs -o OUT.ply");
+    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
 
     core::normals::NormalFileOptions options;
     long long k = static_cast<long long>(options.normals.neighbours), mib = 256, threads = 0;

@@ -158,6 +158,7 @@ int runPlate(const std::vector<std::string>& args)
     const std::string output = cl.value("output").value_or("");
     if (output.empty()) return usageError(cl, "plate needs -o OUT.pdf|svg|tif|png");
     if (!plate::plateFormatOf(output)) return usageError(cl, "the output " + output + " must end in .pdf, .svg, .tif or .png");
+    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     if (const auto format = plate::plateFormatOf(output);
         cl.value("bits") && (*format == plate::PlateFormat::Pdf || *format == plate::PlateFormat::Svg))
         return usageError(cl, "--bits applies to TIFF and PNG plates; a PDF or SVG keeps its images as they are drawn");

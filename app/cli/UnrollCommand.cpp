@@ -129,7 +129,8 @@ int runUnroll(const std::vector<std::string>& args)
     UnrollRequest r;
     std::string problem;
     if (!parseRequest(cl, r, problem)) return usageError(cl, problem);
-    if (auto s = checkImagePaths(r.output, r.heights, r.bits); !s) return usageError(cl, s.error().message);
+    if (auto s = checkImagePaths(r.output, r.heights, r.bits); !s)
+        return s.error().code == core::ErrorCode::WriteFailed ? failure(s.error().message) : usageError(cl, s.error().message);
 
     const auto start = Clock::now();
     ConsoleProgress progress("unrolling " + r.input);

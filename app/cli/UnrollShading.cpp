@@ -64,10 +64,8 @@ core::Status checkImagePaths(const std::string& output, const std::string& heigh
         return invalid("--heights " + heights + " is the image or its map; name another file");
     for (const std::string& target : {output, map, heights}) {
         if (target.empty()) continue;
-        if (fs::is_directory(target)) return invalid(target + " is a folder; name a file");
-        const fs::path folder = fs::path(target).parent_path();
-        if (!folder.empty() && !fs::is_directory(folder))
-            return invalid(target + ": the folder " + folder.string() + " does not exist");
+        if (std::string problem = outputProblem(target); !problem.empty())
+            return core::Error{core::ErrorCode::WriteFailed, std::move(problem)};
     }
     return {};
 }

@@ -17,7 +17,8 @@ namespace stylos::cli {
 bool parseShading(CommandLine& cl, core::developpee::DeveloppeeOptions& options, std::string& problem);
 /** The image extensions the writer takes: .png/.tif/.tiff/.exr for the shading, .tif/.tiff/.exr for the
  *  heights, no 8/16-bit EXR; three different files (the image, the heights, the image's .json map), none of
- *  them a folder, each in an existing folder. InvalidArgument with the problem otherwise. */
+ *  them a folder, each in an existing folder. InvalidArgument with the problem otherwise (a usage error);
+ *  WriteFailed when a target is a folder or its folder does not exist (outputProblem). */
 core::Status checkImagePaths(const std::string& output, const std::string& heights,
                              std::optional<core::image::SampleFormat> bits);
 

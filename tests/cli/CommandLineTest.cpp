@@ -144,3 +144,46 @@ TEST(CliCommandLine, RuntimeFailuresExitOneWithOneLine)
     EXPECT_EQ(lines(run.err), 1u) << run.err;
     EXPECT_TRUE(run.out.empty());
 }
+
+TEST(CliCommandLine, AnOutputThatCannotBeWrittenIsFoundBeforeTheWork)
+{
+    // Every command that writes a file: a folder in its place, or a folder that does not exist, is exit 1 with
+    // one line naming it, before any work (a build of millions of points used to end on it).
+    TempDir dir;
+    const std::string scan = (dir / "scan.ply").string();
+    ASSERT_EQ(runCli({"generate", "fragment", "-o", scan, "--spacing", "0.01"}).exitCode, 0);
+    const std::string octree = (dir / "scan.poct").string();
+    ASSERT_EQ(runCli({"build", scan, "-o", octree, "--depth", "6"}).exitCode, 0);
+    const auto folderNamed = [&](const std::string& name) {
+        std::filesystem::create_directory(dir / name);
+        return (dir / name).string();
+    };
+    const std::string nowhere = (dir / "nowhere").string();
+    const std::vector<std::vector<std::string>> commands{
+        {"generate", "drum", "-o", "%.ply"},
+        {"normals", scan, "-o", "%.ply"},
+        {"build", scan, "-o", "%.poct"},
+        {"ao", octree, "-o", "%.ply"},
+        {"unroll", scan, "-o", "%.png"},
+        {"guides", scan, "-o", "%.json"},
+        {"export", octree, "-o", "%.ply"},
+        {"plate", octree, "-o", "%.pdf", "--scale", "10"},
+        {"annotate", octree, "--layer", "material", "--raster", scan, "--map", scan, "-o", "%.poct"},
+    };
+    for (const auto& command : commands) {
+        for (const bool isFolder : {true, false}) {
+            std::vector<std::string> args = command;
+            const auto at = std::find_if(args.begin(), args.end(), [](const std::string& a) { return a[0] == '%'; });
+            const std::string ext(at->begin() + 1, at->end());
+            const std::string out = isFolder ? folderNamed(args[0] + ext) : nowhere + "/out" + ext;
+            *at = out;
+            const auto run = runCli(args);
+            EXPECT_EQ(run.exitCode, 1) << args[0] << ": " << run.err;
+            const std::string expected = isFolder ? out + " is a folder; name a file"
+                                                  : out + ": the folder " + nowhere + " does not exist";
+            EXPECT_EQ(run.err, "stylos-cli: " + expected + "\n") << args[0];
+            EXPECT_TRUE(run.out.empty()) << args[0];
+        }
+    }
+    EXPECT_FALSE(std::filesystem::exists(nowhere));
+}

@@ -136,7 +136,6 @@ TEST(CliUnroll, UsageErrorsExitTwo)
         {"unroll", scan, "-o", (dir / "x.exr").string(), "--bits", "16"},
         {"unroll", scan, "-o", out, "--heights", (dir / "h.png").string()},
         {"unroll", scan, "-o", (dir / "x.tif").string(), "--heights", (dir / "x.tif").string()}, // the image itself
-        {"unroll", scan, "-o", out, "--heights", (dir / "no-folder" / "h.tif").string()},
         {"unroll", scan, "-o", out, "--shading", "light", "--light-azimuth", "nan"},
         {"unroll", scan, "-o", out, "--shading", "light", "--light-elevation", "nan"},
     };
@@ -145,6 +144,10 @@ TEST(CliUnroll, UsageErrorsExitTwo)
         EXPECT_EQ(run.exitCode, 2) << args.back() << ": " << run.err;
         EXPECT_NE(run.err.find("stylos-cli unroll"), std::string::npos) << run.err;
     }
+    // A folder that does not exist is the output not writable (exit 1, as in every command), found before the work.
+    const auto noFolder = runCli({"unroll", scan, "-o", out, "--heights", (dir / "no-folder" / "h.tif").string()});
+    EXPECT_EQ(noFolder.exitCode, 1) << noFolder.err;
+    EXPECT_NE(noFolder.err.find("no-folder does not exist"), std::string::npos) << noFolder.err;
     EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
     EXPECT_NE(runCli({"unroll", scan, "-o", out, "--shading", "light", "--light-azimuth", "nan"})
                   .err.find("--light-azimuth expects a finite number, not \"nan\""),
@@ -159,7 +162,7 @@ TEST(CliUnroll, UsageErrorsExitTwo)
              {"unroll", scan, "-o", out},
              {"unroll", scan, "-o", (dir / "y.png").string(), "--heights", (dir / "h.tif").string()}}) {
         const auto run = runCli(args);
-        EXPECT_EQ(run.exitCode, 2) << run.err;
+        EXPECT_EQ(run.exitCode, 1) << run.err; // the output not writable, as in every command
         EXPECT_NE(run.err.find("is a folder; name a file"), std::string::npos) << run.err;
     }
     EXPECT_FALSE(fs::exists(out));
