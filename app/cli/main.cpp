@@ -3,7 +3,9 @@
 #include "Commands.h"
 #include "ConsoleProgress.h"
 
+#include <algorithm>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -20,7 +22,7 @@ struct Command {
 
 constexpr Command Commands[] = {
     {"info", runInfo, "info FILE", "format, point count, bounds and attributes of a point file;\n"
-                                   "                         depth, cells per level and bytes of a .poct octree"},
+                                   "depth, cells per level and bytes of a .poct octree"},
     {"generate", runGenerate, "generate KIND -o OUT", "synthetic scan with known truth: drum, omphalos or fragment"},
     {"normals", runNormals, "normals IN -o OUT.ply", "estimate normals (k-nearest PCA) for a scan that has none"},
     {"build", runBuild, "build IN -o OUT.poct", "build the packed point octree of a scan (or of --synthetic-drum N)"},
@@ -31,13 +33,20 @@ constexpr Command Commands[] = {
     {"annotate", runAnnotate, "annotate IN.poct ...", "label the leaves from a label raster painted on a développée"},
     {"export", runExport, "export IN.poct -o OUT.ply", "one point per leaf with its annotation and ambient layers"},
     {"plate", runPlate, "plate IN -o OUT.pdf", "a publication plate at 1:N: développée or orthographic view, scale bar,\n"
-                                           "                         legend, caption; PDF, SVG, TIFF or PNG"},
+                                           "legend, caption; PDF, SVG, TIFF or PNG"},
 };
 
 void printUsage()
 {
     std::puts("usage: stylos-cli COMMAND [ARGS] (stylos-cli COMMAND --help for details)\n\ncommands:");
-    for (const Command& c : Commands) std::printf("  %-23s%s\n", c.synopsis, c.summary);
+    std::size_t column = 0; // the widest synopsis and two spaces
+    for (const Command& c : Commands) column = std::max(column, std::strlen(c.synopsis) + 2);
+    for (const Command& c : Commands) {
+        std::string summary = c.summary;
+        for (std::size_t at = summary.find('\n'); at != std::string::npos; at = summary.find('\n', at + 1))
+            summary.insert(at + 1, column + 2, ' ');
+        std::printf("  %-*s%s\n", int(column), c.synopsis, summary.c_str());
+    }
 }
 
 /** One line on stderr naming the problem and the commands; the usage-error exit code. */

@@ -55,7 +55,11 @@ TEST(CliCommandLine, HelpOnEveryCommandPrintsTheUsageAndExitsZero)
     const auto top = runCli({"--help"});
     EXPECT_EQ(top.exitCode, 0);
     EXPECT_EQ(top.out.rfind("usage: stylos-cli COMMAND [ARGS]", 0), 0u) << top.out;
-    EXPECT_NE(top.out.find("\n  ao IN -o OUT.ply|poct  3D skydome"), std::string::npos) << top.out;
+    // One column for every summary, past the widest synopsis (it ran into "dock FRAGMENT --drum DRUM").
+    EXPECT_NE(top.out.find("\n  ao IN -o OUT.ply|poct      3D skydome"), std::string::npos) << top.out;
+    EXPECT_NE(top.out.find("\n  dock FRAGMENT --drum DRUM  dock a fragment"), std::string::npos) << top.out;
+    EXPECT_NE(top.out.find("\n  export IN.poct -o OUT.ply  one point"), std::string::npos) << top.out;
+    EXPECT_NE(top.out.find("scale bar,\n                             legend, caption"), std::string::npos) << top.out;
 }
 
 TEST(CliCommandLine, NoCommandOrAnUnknownOneIsOneLine)

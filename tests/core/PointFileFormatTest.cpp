@@ -97,6 +97,14 @@ TEST(PointFileFormat, EveryListedExtensionReachesItsReader)
     EXPECT_NE(octree.error().message.find("is a packed octree (.poct), not a point file: it is already built"),
               std::string::npos)
         << octree.error().message;
+    // So does one renamed: recognised by its signature (it read "not a PLY file").
+    stylos::test::writeText(dir / "renamed.ply", std::string("\x89POCT\r\n\x1A", 8) + std::string(56, '\0'));
+    auto renamed = openPointReader(dir / "renamed.ply");
+    ASSERT_FALSE(renamed.ok());
+    EXPECT_EQ(renamed.error().message, (dir / "renamed.ply").string() +
+                                           ": this is a packed octree (.poct), not a point file: it is already built. "
+                                           "Open it in the workbench, describe it with `stylos-cli info`, or give the "
+                                           "scan it was built from");
 }
 
 TEST(PointFileFormat, OptionsForOtherFormatsAreRefusedNotIgnored)

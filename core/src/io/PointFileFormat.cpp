@@ -10,6 +10,7 @@
 #include "stylos/core/io/PlyReader.h"
 #include "stylos/core/io/PtxReader.h"
 #include "stylos/core/io/TextReader.h"
+#include "stylos/core/octree/PackedOctree.h"
 
 #include <algorithm>
 #include <cctype>
@@ -113,6 +114,13 @@ PointFormat detectPointFormat(const fs::path& path)
 
 namespace {
 
+Error poctIsNoPointFile(const fs::path& path)
+{
+    return Error::at(ErrorCode::UnknownFormat, path.string(), "",
+                     "this is a packed octree (.poct), not a point file: it is already built. Open it in the "
+                     "workbench, describe it with `stylos-cli info`, or give the scan it was built from");
+}
+
 Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const ReadOptions& options)
 {
     auto file = BufferedFile::open(path, 4096);
@@ -122,6 +130,9 @@ Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const
     const PointFormat byExtension = formatFromExtension(path);
     const std::size_t n = file->fill(128);
     PointFormat format = formatFromMagic(file->data(), n, byExtension);
+    if (format == PointFormat::Unknown &&
+        octree::isPoctSignature(std::span<const std::uint8_t>(reinterpret_cast<const std::uint8_t*>(file->data()), n)))
+        return poctIsNoPointFile(path); // whatever its extension
     if (format == PointFormat::Unknown) {
         format = byExtension;
         // A file named .ply/.las that lacks the magic is corrupt, not another format.
@@ -157,10 +168,7 @@ Result<std::unique_ptr<PointReader>> openInFileFrame(const fs::path& path, const
     case PointFormat::Ptx: return PtxReader::open(path, options);
     case PointFormat::Unknown: break;
     }
-    if (hasPoctExtension(path))
-        return Error::at(ErrorCode::UnknownFormat, path.string(), "",
-                         "this is a packed octree (.poct), not a point file: it is already built. Open it in the "
-                         "workbench, describe it with `stylos-cli info`, or give the scan it was built from");
+    if (hasPoctExtension(path)) return poctIsNoPointFile(path);
     return Error::at(ErrorCode::UnknownFormat, path.string(), "",
                      "unknown point file format (Stylos reads PLY, LAS, E57, PTX, text and OBJ files: " +
                          readableExtensionsText() + ")");
