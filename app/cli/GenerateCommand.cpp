@@ -57,8 +57,10 @@ int runGenerate(const std::vector<std::string>& args)
     const auto start = std::chrono::steady_clock::now();
     auto report = core::synth::generateScan(*kind, options, *output, &progress);
     if (!report) {
-        std::cerr << "stylos-cli: " << report.error().message << "\n";
-        return ExitFailure;
+        // An option value the generator cannot take (a taper past a fifth of the radius, a spacing too fine) is a
+        // usage error, as the ranges checked above.
+        if (report.error().code == core::ErrorCode::InvalidArgument) return usageError(cl, report.error().message);
+        return failure(report.error().message);
     }
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (cl.flag("json")) {

@@ -44,15 +44,18 @@ TEST(CliGenerate, UsageErrorsAndFailuresLeaveNothing)
     const auto las = runCli({"generate", "drum", "-o", (dir / "x.las").string()}); // it writes PLY only
     EXPECT_EQ(las.exitCode, 2);
     EXPECT_NE(las.err.find("the output must be a .ply file"), std::string::npos) << las.err;
-    // A folder in the way: the rename's own reason, and nothing left.
+    // A folder in the way: found before the work, and nothing left.
     std::filesystem::create_directory(dir / "folder.ply");
     const auto folder = runCli({"generate", "drum", "-o", (dir / "folder.ply").string(), "--spacing", "0.05"});
     EXPECT_EQ(folder.exitCode, 1);
-    EXPECT_NE(folder.err.find("cannot move the finished file into place: Is a directory"), std::string::npos)
-        << folder.err;
+    EXPECT_NE(folder.err.find("folder.ply is a folder; name a file"), std::string::npos) << folder.err;
     std::filesystem::remove(dir / "folder.ply");
-    const auto huge = runCli({"generate", "drum", "-o", out, "--spacing", "0.00001"});
-    EXPECT_EQ(huge.exitCode, 1);
-    EXPECT_NE(huge.err.find("x.ply"), std::string::npos) << huge.err;
+    // Values the generator cannot take are usage errors, as the ranges the command checks itself.
+    const auto huge = runCli({"generate", "drum", "-o", out, "--spacing", "0.0000001"});
+    EXPECT_EQ(huge.exitCode, 2);
+    EXPECT_NE(huge.err.find("x.ply: spacing 1e-07 m would give about 4.2"), std::string::npos) << huge.err;
+    const auto taper = runCli({"generate", "drum", "-o", out, "--taper", "0.5"});
+    EXPECT_EQ(taper.exitCode, 2);
+    EXPECT_NE(taper.err.find("the taper must lie within a fifth of the radius (110 mm)"), std::string::npos) << taper.err;
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
 }

@@ -54,7 +54,7 @@ std::string DrumParameters::problem() const
     if (!(radius > 0.0) || !(height > 0.0) || !std::isfinite(radius) || !std::isfinite(height))
         return "drum radius and height must be positive";
     if (!std::isfinite(taper) || std::fabs(taper) > 0.2 * radius)
-        return "the taper must lie within a fifth of the radius (" + std::to_string(0.2 * radius) + " m)";
+        return "the taper must lie within a fifth of the radius (" + std::to_string(std::lround(200.0 * radius)) + " mm)";
     if (grooves == 0) return {};
     if (grooves < 3 || grooves > 1000) return "groove count must be 0 or between 3 and 1000";
     if (!(filletFraction >= 0.0 && filletFraction < 1.0)) return "fillet fraction must be in [0, 1)";

@@ -9,6 +9,7 @@
 #include "stylos/core/synth/ScanSimulator.h"
 
 #include <cmath>
+#include <cstdio>
 #include <memory>
 #include <numbers>
 #include <string>
@@ -29,6 +30,14 @@ const char* kindName(SyntheticKind kind)
     case SyntheticKind::Fragment: return "fragment";
     }
     return "drum";
+}
+
+/** @p value in at most 6 significant digits, exponent when needed: 1e-07, 3.5e+12, 0.002. */
+std::string shortNumber(double value)
+{
+    char text[32];
+    std::snprintf(text, sizeof text, "%g", value);
+    return text;
 }
 
 Error invalid(const std::filesystem::path& output, const std::string& problem)
@@ -114,8 +123,8 @@ Result<SyntheticReport> generateScan(SyntheticKind kind, const SyntheticOptions&
     ScanSimulator simulator(*object, options, pose, options.seed);
     const double estimate = simulator.estimatePoints();
     if (!(estimate <= kMaxPoints))
-        return invalid(output, "spacing " + std::to_string(options.spacing) + " m would give about " +
-                                   std::to_string(static_cast<long long>(estimate)) + " points (limit 2e9)");
+        return invalid(output, "spacing " + shortNumber(options.spacing) + " m would give about " +
+                                   shortNumber(estimate) + " points (limit 2e9)");
 
     io::PointSchema schema;
     schema.hasNormals = options.writeNormals;
