@@ -147,6 +147,10 @@ bool CommandLine::integer(const std::string& name, long long& out)
     const auto v = value(name);
     if (!v) return true;
     const auto [end, ec] = std::from_chars(v->data(), v->data() + v->size(), out);
+    if (ec == std::errc::result_out_of_range && end == v->data() + v->size()) {
+        m_error = "--" + name + " is out of range: " + *v;
+        return false;
+    }
     if (ec != std::errc() || end != v->data() + v->size() || v->empty()) {
         m_error = "--" + name + " expects an integer, not \"" + *v + "\"";
         return false;

@@ -76,6 +76,8 @@ TEST(CliCommandLine, UsageErrorsAreOneLineNamingTheProblem)
     const std::string info = " (usage: stylos-cli info FILE [--json]; --help for the options)";
     expectUsageLine(runCli({"build", "--depth", "abc", "x.ply", "-o", "y.poct"}),
                     "stylos-cli: --depth expects an integer, not \"abc\"" + build);
+    expectUsageLine(runCli({"build", "--depth", "99999999999999999999", "x.ply", "-o", "y.poct"}),
+                    "stylos-cli: --depth is out of range: 99999999999999999999" + build); // an integer, too large
     expectUsageLine(runCli({"build", "x.ply", "-o"}), "stylos-cli: option --output needs a value (OUT.poct)" + build);
     expectUsageLine(runCli({"build", "x.ply", "-o", "y.poct", "--depth"}),
                     "stylos-cli: option --depth needs a value (L)" + build);
