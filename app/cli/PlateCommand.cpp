@@ -6,6 +6,7 @@
 #include "Commands.h"
 #include "ConsoleProgress.h"
 
+#include "stylos/core/annotation/Legend.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/plate/PlateSources.h"
 #include "stylos/core/util/ScratchFolder.h"
@@ -17,6 +18,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <iostream>
 
 namespace stylos::cli {
@@ -48,6 +50,20 @@ cp::PanelShading defaultShading3d(const cp::PlateSources& sources, const std::st
         if (!octree || !octree->attribute("ambient")) return cp::PanelShading::Headlight;
     }
     return cp::PanelShading::Skydome;
+}
+
+/** Whether any fragment a panel of @p spec draws with a layer holds that layer (a point file holds none). */
+bool someLayerDrawn(const cp::PlateSources& sources, const cp::PlateSpec& spec)
+{
+    for (const cp::PanelSpec& panel : spec.panels) {
+        if (!panel.layer) continue;
+        for (const cp::PlateFragment& f : sources.fragments) {
+            if ((!panel.fragment.empty() && f.name != panel.fragment) || !f.isOctree || f.missing) continue;
+            auto octree = core::octree::PackedOctree::open(f.path);
+            if (octree && octree->attribute(core::annotation::layerName(*panel.layer))) return true;
+        }
+    }
+    return false;
 }
 
 /** The one-panel plate of the command line; false with @p problem on a usage error. */
@@ -194,6 +210,10 @@ int runPlate(const std::vector<std::string>& args)
             std::cerr << "stylos-cli: " << input << " has no skydome layer: the 3D view is lit from the viewer (headlight)\n";
     }
     if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s) return usageError(cl, s.error().message);
+    const auto layered = std::find_if(spec.panels.begin(), spec.panels.end(), [](const cp::PanelSpec& p) { return p.layer; });
+    if (layered != spec.panels.end() && !sources->isProject && !someLayerDrawn(*sources, spec))
+        std::cerr << "stylos-cli: " << input << " has no " << core::annotation::layerName(*layered->layer)
+                  << " layer: the plate shows no classes (label it with `stylos-cli annotate` or in the workbench)\n";
 
     // Qt draws the page; the offscreen platform needs no display.
     int qtArgc = 3;

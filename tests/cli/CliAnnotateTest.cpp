@@ -68,6 +68,17 @@ TEST(CliAnnotate, LabelsTheRectangleAndReportsTheContractKeys)
     // The input is untouched.
     const auto before = labelsOf(d.poct, ann::AnnotationLayer::Material);
     EXPECT_EQ(std::count(before.begin(), before.end(), 0), std::ptrdiff_t(before.size()));
+
+    // A plate of the labelled octree draws its classes; of one without the layer, it says it shows none.
+    const std::string note = "has no material layer: the plate shows no classes";
+    const auto labelled = runCli({"plate", (dir / "out.poct").string(), "-o", (dir / "l.png").string(), "--scale", "20",
+                                  "--dpi", "72", "--layer", "material"});
+    ASSERT_EQ(labelled.exitCode, 0) << labelled.err;
+    EXPECT_EQ(labelled.err.find(note), std::string::npos) << labelled.err;
+    const auto bare = runCli({"plate", d.poct.string(), "-o", (dir / "b.png").string(), "--scale", "20", "--dpi", "72",
+                              "--layer", "material"});
+    ASSERT_EQ(bare.exitCode, 0) << bare.err;
+    EXPECT_NE(bare.err.find(d.poct.filename().string() + " " + note), std::string::npos) << bare.err;
 }
 
 TEST(CliAnnotate, InPlaceAddsToEarlierLabels)
