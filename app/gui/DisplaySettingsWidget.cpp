@@ -1,5 +1,6 @@
 #include "DisplaySettingsWidget.h"
 
+#include "stylos/widgets/util/WheelGuard.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QCheckBox>
@@ -36,6 +37,8 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
       m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this)), m_gapFill(new QCheckBox(this))
 {
     setObjectName(QStringLiteral("displaySettings"));
+    for (QWidget* field : std::initializer_list<QWidget*>{m_shading, m_layer, m_splat, m_budget, m_detail, m_level})
+        widgets::guardWheel(field); // the wheel scrolls the Properties dock
     m_shading->addItems({QString(), QString(), QString(), QString(), QString()});
     m_layer->setObjectName(QStringLiteral("annotationLayerBox"));
     m_layer->addItems({QString(), QString()});

@@ -16,9 +16,11 @@
 #include <QLabel>
 #include <QLineEdit>
 #include <QMimeData>
+#include <QScrollArea>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
+#include <QWheelEvent>
 
 #include <numbers>
 
@@ -42,6 +44,7 @@ private Q_SLOTS:
     void developpeeRowFollowsTheDocument();
     void propertiesShowAndEditTheFragment();
     void poseFieldsReadScientificNotation();
+    void theWheelScrollsPastUnfocusedPoseFields();
     void assembliesAreRowsHoldingTheirMembersAndTakeDrops();
 
 private:
@@ -234,6 +237,58 @@ void SceneTreeModelTest::poseFieldsReadScientificNotation()
     x->setLocale(QLocale(QLocale::French, QLocale::France));
     type("2,5e1");
     QCOMPARE(x->value(), 25.0);
+    x->setLocale(QLocale::c());
+
+    // A plain number out of range is not applied either (the spin box refused the last key: 720° became 72°).
+    QDoubleSpinBox* rz = properties.poseSpin(5);
+    const double turned = rz->value();
+    const int before = doc.undoStack()->count();
+    rz->setFocus();
+    rz->selectAll();
+    QTest::keyClicks(rz, QStringLiteral("720"));
+    QTest::keyClick(rz, Qt::Key_Return);
+    QCOMPARE(rz->value(), turned);
+    QCOMPARE(doc.undoStack()->count(), before);
+}
+
+void SceneTreeModelTest::theWheelScrollsPastUnfocusedPoseFields()
+{
+    // Scrolling the Properties dock with the wheel passed over the pose fields and moved the fragment, one undo step
+    // per notch: a field takes the wheel only once it has the focus.
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    const FragmentId id = doc.addFragment(fragment("drum"), m_octree);
+    QScrollArea area;
+    auto* properties = new FragmentPropertiesWidget(doc);
+    area.setWidget(properties);
+    area.resize(300, 150); // smaller than the fields: the area scrolls
+    area.show();
+    area.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&area));
+    properties->setFragment(id);
+    QDoubleSpinBox* x = properties->poseSpin(0);
+    // Qt passes a wheel event that a field leaves unaccepted on to its parents (the scroll area) when it comes from
+    // the window system; one sent here is not propagated, so what is checked is that the field declines it.
+    const auto wheel = [](QWidget* target) {
+        const QPointF at(target->width() / 2.0, target->height() / 2.0);
+        QWheelEvent event(at, target->mapToGlobal(at), QPoint(), QPoint(0, -120), Qt::NoButton, Qt::NoModifier,
+                          Qt::NoScrollPhase, false);
+        QApplication::sendEvent(target, &event);
+        return event.isAccepted();
+    };
+    area.setFocus();
+    QVERIFY(!x->hasFocus());
+    const int steps = doc.undoStack()->count();
+    for (QDoubleSpinBox* spin : {x, properties->poseSpin(5)}) QVERIFY(!wheel(spin));
+    QCOMPARE(doc.undoStack()->count(), steps);
+    QCOMPARE(x->value(), 0.0);
+    QVERIFY(!x->hasFocus());
+    // Clicked into, the field steps with the wheel as before.
+    x->setFocus();
+    QVERIFY(x->hasFocus());
+    QVERIFY(wheel(x));
+    QCOMPARE(doc.undoStack()->count(), steps + 1);
+    QVERIFY(x->value() != 0.0);
 }
 
 void SceneTreeModelTest::developpeeRowFollowsTheDocument()

@@ -6,6 +6,7 @@
 #include "stylos/widgets/annotation/LabelStore.h"
 #include "stylos/widgets/annotation/LegendText.h"
 #include "stylos/widgets/document/SceneDocument.h"
+#include "stylos/widgets/util/WheelGuard.h"
 
 #include <QColorDialog>
 #include <QComboBox>
@@ -311,6 +312,7 @@ void LegendWidget::rebuild()
             hatch->setCurrentIndex(hatch->findData(int(c.hatch)));
             hatch->setDescription(tr("The black-and-white pattern of this class on plates"));
             m_tree->setItemWidget(item, HatchColumn, hatch);
+            guardWheel(hatch); // the wheel scrolls the legend
             const std::uint8_t id = c.id;
             connect(hatch, &QComboBox::currentIndexChanged, this, [this, layer, id, hatch] {
                 if (m_updating) return;

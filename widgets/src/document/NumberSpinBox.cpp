@@ -1,9 +1,13 @@
 #include "document/NumberSpinBox.h"
 
+#include "stylos/widgets/util/WheelGuard.h"
+
 #include <QLocale>
 #include <QRegularExpression>
 
 namespace stylos::widgets {
+
+NumberSpinBox::NumberSpinBox(QWidget* parent) : QDoubleSpinBox(parent) { guardWheel(this); }
 
 std::optional<double> NumberSpinBox::scientific(const QString& text, bool* partial) const
 {
@@ -30,6 +34,14 @@ QValidator::State NumberSpinBox::validate(QString& text, int& pos) const
     if (const auto value = scientific(text, &partial))
         return *value >= minimum() && *value <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
     if (partial) return QValidator::Intermediate;
+    // A plain number out of range: kept as typed, not applied (the plain spin box refused the key that took it
+    // out of range, so 720 became 72 and was applied).
+    QString number = text;
+    if (!prefix().isEmpty() && number.startsWith(prefix())) number.remove(0, prefix().size());
+    if (!suffix().isEmpty() && number.endsWith(suffix())) number.chop(suffix().size());
+    bool ok = false;
+    const double value = locale().toDouble(number.trimmed(), &ok);
+    if (ok && (value < minimum() || value > maximum())) return QValidator::Intermediate;
     return QDoubleSpinBox::validate(text, pos);
 }
 

@@ -7,6 +7,7 @@
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/plate/PlatePainter.h"
 #include "stylos/widgets/plate/PlateTexts.h"
+#include "stylos/widgets/util/WheelGuard.h"
 
 #include <QCheckBox>
 #include <QComboBox>
@@ -283,6 +284,9 @@ void PlateDialog::addPanelRow(const cp::PanelSpec& panel)
     m_panels->setCellWidget(row, LayerColumn, layer);
     m_panels->setCellWidget(row, HatchColumn, hatches);
     m_panels->setCellWidget(row, FragmentColumn, fragment);
+    for (QWidget* field : {static_cast<QWidget*>(view), static_cast<QWidget*>(scale), static_cast<QWidget*>(shading),
+                           static_cast<QWidget*>(layer), static_cast<QWidget*>(hatches), static_cast<QWidget*>(fragment)})
+        guardWheel(field); // the wheel scrolls the table
     connect(view, &QComboBox::currentIndexChanged, this, [this, view, shading, fillShading] {
         fillShading(cp::PanelView(view->currentData().toInt()), cp::PanelShading(shading->currentData().toInt()));
         schedulePreview();
