@@ -4,6 +4,8 @@
 #include "WidgetTestSupport.h"
 
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/scene/SceneEigen.h"
+#include "stylos/core/view/GuideGeometry.h"
 #include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 #include "stylos/widgets/document/SceneDocument.h"
@@ -174,12 +176,18 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     properties.poseSpin(2)->setValue(4.5);
     QCOMPARE(doc.undoStack()->count(), before + 1);
     QCOMPARE(doc.fragment(id)->pose, pose.withTranslation({1.25, -2.5, 4.5}));
-    // Editing a rotation angle keeps the translation.
+    // Editing a rotation angle turns the fragment about its centre (as the gizmo does), not about its file frame's
+    // origin: the centre stays, the translation follows.
+    const Eigen::Vector3d centre = stylos::core::view::occupiedBounds(*m_octree).center();
+    const Eigen::Vector3d centreBefore = stylos::core::scene::apply(doc.fragment(id)->pose, centre);
     properties.poseSpin(3)->setValue(30.0);
     const auto angles = doc.fragment(id)->pose.toTranslationAngles();
     QVERIFY(std::abs(angles.angles[0] - std::numbers::pi / 6) < 1e-12);
     QVERIFY(std::abs(angles.angles[2] - std::numbers::pi / 2) < 1e-12);
-    QCOMPARE(angles.translation, (std::array<double, 3>{1.25, -2.5, 4.5}));
+    QVERIFY((stylos::core::scene::apply(doc.fragment(id)->pose, centre) - centreBefore).norm() < 1e-12);
+    QVERIFY(centre.norm() > 0.01); // so the translation had to change
+    QVERIFY(angles.translation != (std::array<double, 3>{1.25, -2.5, 4.5}));
+    QCOMPARE(properties.poseSpin(0)->value(), std::round(angles.translation[0] * 1e4) / 1e4); // and shows
 
     properties.nameEdit()->setText("Drum 1");
     QMetaObject::invokeMethod(properties.nameEdit(), "editingFinished");

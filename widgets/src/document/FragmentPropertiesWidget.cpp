@@ -1,6 +1,8 @@
 #include "stylos/widgets/document/FragmentPropertiesWidget.h"
 
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/scene/SceneEigen.h"
+#include "stylos/core/view/GuideGeometry.h"
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include "document/NumberSpinBox.h"
@@ -206,7 +208,19 @@ void FragmentPropertiesWidget::applyPose(int component)
     } else {
         auto angles = pose.toTranslationAngles().angles;
         angles[static_cast<std::size_t>(component - 3)] = value / DegreesPerRadian;
-        pose = pose.withAngles(angles);
+        const core::scene::Pose turned = pose.withAngles(angles);
+        pose = turned;
+        // About the fragment's centre, as the gizmo turns it, not about its file frame's origin: a scan in site
+        // coordinates lies kilometres from that origin, and 1° swung it tens of metres away. The translation follows.
+        if (const auto octree = m_document.octree(m_id)) {
+            const Eigen::AlignedBox3d box = core::view::occupiedBounds(*octree);
+            if (!box.isEmpty()) {
+                using core::scene::apply;
+                const Eigen::Vector3d centre = box.center();
+                const Eigen::Vector3d shift = apply(f->pose, centre) - apply(turned, centre);
+                pose = turned.withTranslation(core::scene::toArray(core::scene::toEigen(turned.translationPart()) + shift));
+            }
+        }
     }
     m_document.setFragmentPose(m_id, pose);
 }
