@@ -272,6 +272,13 @@ void dockSecondFragment(MainWindow& window, int timeoutMs, std::function<void(qu
             dock();
             return;
         }
+        // A fit that fails (no flutes found, cancelled) ends the run with its message, as a failed dock does.
+        QObject::connect(&window.docking().guideFits(), &widgets::GuideFitRunner::failed, &window,
+                         [drum](quint64 id, const QString& message) {
+            if (id != drum) return;
+            std::fprintf(stderr, "stylos: %s\n", qPrintable(message));
+            QApplication::exit(1);
+        });
         window.docking().guideFits().start(drum);
         auto* fitted = new QMetaObject::Connection;
         *fitted = QObject::connect(&window.document(), &widgets::SceneDocument::fragmentChanged, &window,

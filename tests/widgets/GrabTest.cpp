@@ -3,6 +3,7 @@
 // that failed; --orbit-benchmark N FILE and --pose-benchmark N FILE print the frame times as JSON; --version
 // and --help.
 #include "DrumOctreeFixture.h"
+#include "SceneTestSupport.h"
 #include "WidgetTestSupport.h"
 
 #include <QJsonDocument>
@@ -22,6 +23,7 @@ private Q_SLOTS:
     void grabsTheDrumInTheView();
     void grabsTheDemoScene();
     void failsNamingTheBadFile();
+    void aDockWhoseGuidesCannotBeFittedEndsNamingWhy();
     void orbitBenchmarkPrintsFrameTimes();
     void poseBenchmarkPrintsFrameTimes();
     void rejectsBadOptions();
@@ -128,6 +130,18 @@ void GrabTest::failsNamingTheBadFile()
     QString err;
     QCOMPARE(run({"--grab", png, bad}, nullptr, &err), 1);
     QVERIFY2(err.contains("broken-capital.ply"), qPrintable(err));
+}
+
+void GrabTest::aDockWhoseGuidesCannotBeFittedEndsNamingWhy()
+{
+    // --dock on two fragments (no drum among them): the first one's guide fit finds no flutes, and the run ends with
+    // exit 1 naming it (it waited for ever for flutes).
+    if (!hasDisplay()) QSKIP("no display: the 3D view is not created");
+    const QString piece = stylos::test::makeOctreeFile(m_dir.path(), QStringLiteral("piece.poct"));
+    QString err;
+    QCOMPARE(run({"--grab", m_dir.filePath("dock.png"), "--dock", piece, piece}, nullptr, &err, 100000), 1);
+    QVERIFY2(err.contains("stylos: Could not fit the guides of piece"), qPrintable(err));
+    QVERIFY(!QFile::exists(m_dir.filePath("dock.png")));
 }
 
 void GrabTest::orbitBenchmarkPrintsFrameTimes()
