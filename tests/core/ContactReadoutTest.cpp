@@ -152,6 +152,20 @@ TEST(ContactReadoutTest, NoContactAndRefusals)
     EXPECT_EQ(r->points, 0u);
     EXPECT_EQ(r->largestInterpenetration, 0.0);
 
+    // A stray point in the band among 200 away from it (a fragment moved 15 cm off): no contact, not a readout of
+    // one point; 2 of 200 (1 %) are a contact.
+    std::vector<Eigen::Vector3d> far(199, Eigen::Vector3d(0.65, 0.0, 0.0));
+    far.push_back({0.0, 0.5 - 0.004, 0.0});
+    r = measureContact(cloudOf(far), g, Eigen::Isometry3d::Identity());
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->points, 0u);
+    EXPECT_EQ(r->largestInterpenetration, 0.0);
+    far[0] = {0.0, -0.5, 0.0};
+    r = measureContact(cloudOf(far), g, Eigen::Isometry3d::Identity());
+    ASSERT_TRUE(r.ok());
+    EXPECT_EQ(r->points, 2u);
+    EXPECT_NEAR(r->largestInterpenetration, 0.004, 1e-7); // the cloud keeps float offsets
+
     Eigen::Isometry3d broken = Eigen::Isometry3d::Identity();
     broken.translation().x() = std::nan("");
     r = measureContact(c, g, broken);

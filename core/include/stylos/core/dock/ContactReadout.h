@@ -15,7 +15,8 @@
  *
  * The readout over those points: the largest interpenetration max(0, −min d); the median, 90th and 99th
  * percentiles of d (linear interpolation between order statistics: p·(n − 1)); the share with |d| ≤ 0.5 mm;
- * their number. A fragment that does not touch the drum (no point in the band) gives points = 0 and zeros.
+ * their number. A fragment that does not touch the drum (fewer than minShare of its points measured in the band:
+ * none, or a few strays) gives points = 0 and zeros.
  *
  * Failure (InvalidArgument, naming the fragment's source): guides without a flute profile, a pose that is not
  * finite. Units: metres, radians. Thread-safety: reentrant. Cost: O(n), a fixed stride down to maxPoints,
@@ -37,6 +38,7 @@ struct ContactOptions {
     double band = 0.005;             ///< metres: points within ± band of the profile are the outer face
     double normalCosine = 0.8;       ///< with normals: |n · profile normal| at least this
     std::size_t maxPoints = 200'000; ///< fragment points used (fixed stride)
+    double minShare = 0.01;          ///< fewer of the points measured on the outer face: it does not touch
 };
 
 struct ContactReadout {
