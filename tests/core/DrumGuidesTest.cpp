@@ -195,6 +195,12 @@ TEST(DrumGuidesTest, TheGuidesFileKeepsTheTaper)
     ASSERT_FALSE(bad.ok());
     EXPECT_NE(bad.error().message.find("bad.json"), std::string::npos) << bad.error().message;
     EXPECT_NE(bad.error().message.find("radius_slope"), std::string::npos) << bad.error().message;
+    json["radius_slope"] = g.slope;
+    json["flutes"] = 40; // edited by hand: the 48 lines say otherwise
+    auto edited = guidesFromJson(json, "edited.json");
+    ASSERT_FALSE(edited.ok());
+    EXPECT_EQ(edited.error().message,
+              "edited.json: flutes (40) disagrees with its 48 flute_lines: give the count the guides were fitted with");
 }
 
 TEST(DrumGuidesTest, TwentyFourFlutesMatchTheTruth)

@@ -75,6 +75,12 @@ Result<DrumGuides> guidesFromJson(const nlohmann::json& o, const std::string& so
     if (flutes == o.end() || !flutes->is_number_integer() || flutes->get<long long>() < 3 || flutes->get<long long>() > 1000)
         return invalid(source, "flutes must be a whole number from 3 to 1000");
     g.flutes = flutes->get<int>();
+    // The lines are placed again from the count and the phase; a file whose lines disagree with its count was
+    // edited by hand (a dock against it failed blaming the fragment's flutes).
+    if (const auto lines = o.find("flute_lines"); lines != o.end() && lines->is_array() && !lines->empty() &&
+                                                  lines->size() != std::size_t(g.flutes))
+        return invalid(source, "flutes (" + std::to_string(g.flutes) + ") disagrees with its " +
+                                   std::to_string(lines->size()) + " flute_lines: give the count the guides were fitted with");
     double phaseDeg = 0.0;
     if (!number(o, "phase_deg", phaseDeg)) return invalid(source, "phase_deg must be a number of degrees");
     const double pitch = 2.0 * std::numbers::pi / g.flutes;
