@@ -1578,6 +1578,10 @@
         <source>Dock %1</source>
         <translation>Πρόσδεση του %1</translation>
     </message>
+    <message>
+        <source>Docking %1 was cancelled</source>
+        <translation>Η πρόσδεση του %1 ακυρώθηκε</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DrumFramePoseWidget</name>
@@ -1839,6 +1843,10 @@
     <message>
         <source>Fit the guides of %1</source>
         <translation>Προσαρμογή των οδηγών του %1</translation>
+    </message>
+    <message>
+        <source>Fitting the guides of %1 was cancelled</source>
+        <translation>Η προσαρμογή των οδηγών του %1 ακυρώθηκε</translation>
     </message>
 </context>
 <context>

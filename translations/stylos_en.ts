@@ -1578,6 +1578,10 @@
         <source>Dock %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Docking %1 was cancelled</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DrumFramePoseWidget</name>
@@ -1838,6 +1842,10 @@
     </message>
     <message>
         <source>Fit the guides of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Fitting the guides of %1 was cancelled</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

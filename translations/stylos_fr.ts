@@ -1578,6 +1578,10 @@
         <source>Dock %1</source>
         <translation>Amarrer %1</translation>
     </message>
+    <message>
+        <source>Docking %1 was cancelled</source>
+        <translation>L’amarrage de %1 a été annulé</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DrumFramePoseWidget</name>
@@ -1839,6 +1843,10 @@
     <message>
         <source>Fit the guides of %1</source>
         <translation>Ajuster les guides de %1</translation>
+    </message>
+    <message>
+        <source>Fitting the guides of %1 was cancelled</source>
+        <translation>L’ajustement des guides de %1 a été annulé</translation>
     </message>
 </context>
 <context>

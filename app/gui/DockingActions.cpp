@@ -81,6 +81,8 @@ DockingActions::DockingActions(widgets::SceneDocument& document, widgets::Viewpo
     });
     connect(m_fits, &widgets::GuideFitRunner::failed, this,
             [this](quint64, const QString& message) { Q_EMIT reported(message, true); });
+    connect(m_fits, &widgets::GuideFitRunner::cancelled, this,
+            [this](quint64, const QString& message) { Q_EMIT reported(message, false); });
     createDocking();
     createAxisEditing(viewport);
     connect(&document, &widgets::SceneDocument::fragmentChanged, this, &DockingActions::updateEnabled);
@@ -119,6 +121,8 @@ void DockingActions::createDocking()
     });
     connect(m_docker, &widgets::DockRunner::failed, this,
             [this](quint64, const QString& message) { Q_EMIT reported(message, true); });
+    connect(m_docker, &widgets::DockRunner::cancelled, this,
+            [this](quint64, const QString& message) { Q_EMIT reported(message, false); });
     connect(&m_document, &widgets::SceneDocument::fragmentRemoved, this, &DockingActions::updateEnabled);
 }
 

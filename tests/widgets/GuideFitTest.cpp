@@ -31,6 +31,7 @@ private Q_SLOTS:
     void initTestCase();
     void fitsTheDrumAsOneUndoStep();
     void noFlutesChangesNothing();
+    void aCancelledFitIsSaidAndChangesNothing();
     void theGuidesAreDrawn();
 
 private:
@@ -132,6 +133,27 @@ void GuideFitTest::noFlutesChangesNothing()
     QVERIFY2(message.contains(QStringLiteral("no flutes found")), qPrintable(message));
     QVERIFY(document.fragment(id)->guides.empty());
     QCOMPARE(document.undoStack()->count(), 1);
+    tasks.cancelAllAndWait();
+}
+
+void GuideFitTest::aCancelledFitIsSaidAndChangesNothing()
+{
+    // Cancelled from the Tasks dock: a line for the log (nothing was said), no error, the guides untouched.
+    TaskManager tasks;
+    SceneDocument document(tasks);
+    GuideFitRunner runner(document);
+    const scene::FragmentId id = addDrum(document, m_drum.poct);
+    QSignalSpy fitted(&runner, &GuideFitRunner::fitted);
+    QSignalSpy failed(&runner, &GuideFitRunner::failed);
+    QSignalSpy cancelled(&runner, &GuideFitRunner::cancelled);
+    QVERIFY(runner.start(id));
+    tasks.cancelAll();
+    QTRY_COMPARE_WITH_TIMEOUT(cancelled.size(), 1, 60000);
+    QCOMPARE(cancelled.first().at(0).toULongLong(), quint64(id));
+    QCOMPARE(cancelled.first().at(1).toString(), QStringLiteral("Fitting the guides of drum was cancelled"));
+    QCOMPARE(fitted.size(), 0);
+    QCOMPARE(failed.size(), 0);
+    QVERIFY(document.fragment(id)->guides.empty());
     tasks.cancelAllAndWait();
 }
 

@@ -112,7 +112,11 @@ void DockRunner::delivered(FragmentId id, const QFuture<DockJobResult>& future)
     if (it == m_launched.end()) return;
     const Launched launched = it->second;
     m_launched.erase(it);
-    if (future.isCanceled() || future.resultCount() == 0) return;
+    if (future.isCanceled() || future.resultCount() == 0) {
+        if (const core::scene::Fragment* f = m_document.fragment(id))
+            Q_EMIT cancelled(id, tr("Docking %1 was cancelled").arg(m_document.nameOf(id, QString::fromStdString(f->name))));
+        return;
+    }
     const DockJobResult result = future.result();
     if (!result.ok()) {
         Q_EMIT failed(id, result.error);

@@ -28,7 +28,11 @@ bool GuideFitRunner::deleteGuides(FragmentId id)
 
 void GuideFitRunner::delivered(FragmentId id, const QFuture<GuideFitResult>& future)
 {
-    if (future.isCanceled() || future.resultCount() == 0) return;
+    if (future.isCanceled() || future.resultCount() == 0) {
+        if (const core::scene::Fragment* f = m_document.fragment(id))
+            Q_EMIT cancelled(id, tr("Fitting the guides of %1 was cancelled").arg(m_document.nameOf(id, QString::fromStdString(f->name))));
+        return;
+    }
     const GuideFitResult result = future.result();
     if (!result.ok()) {
         Q_EMIT failed(id, result.error);

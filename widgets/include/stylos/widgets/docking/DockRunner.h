@@ -49,6 +49,8 @@ Q_SIGNALS:
     void docked(quint64 id, const stylos::widgets::DockJobResult& result);
     /** @brief Docking @p id failed or was dropped: @p message is translated and names the fragment and the reason. */
     void failed(quint64 id, const QString& message);
+    /** @brief Docking @p id was cancelled (from the Tasks dock): @p message says so, translated. */
+    void cancelled(quint64 id, const QString& message);
 
 private:
     void launch(FragmentId id, FragmentId drum);

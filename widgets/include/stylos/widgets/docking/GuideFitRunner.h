@@ -36,6 +36,8 @@ Q_SIGNALS:
     void fitted(quint64 id, const stylos::widgets::GuideFitResult& result);
     /** @brief A fit failed: @p message is translated and names the fragment and the reason. */
     void failed(quint64 id, const QString& message);
+    /** @brief A fit was cancelled (from the Tasks dock): @p message says so, translated. */
+    void cancelled(quint64 id, const QString& message);
 
 private:
     void delivered(FragmentId id, const QFuture<GuideFitResult>& future);
