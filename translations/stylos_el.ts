@@ -1637,6 +1637,14 @@
         <source>In the frame of %1:</source>
         <translation>Στο σύστημα του %1:</translation>
     </message>
+    <message>
+        <source>Spin:</source>
+        <translation>Ιδιοπεριστροφή:</translation>
+    </message>
+    <message>
+        <source>Turn about the line through the fragment&apos;s centre parallel to the axis; with θ and the tilts it fixes the orientation. The tilts and the spin are measured from the fragment&apos;s frame as scanned</source>
+        <translation>Περιστροφή γύρω από την ευθεία που περνά από το κέντρο του θραύσματος παράλληλα στον άξονα· μαζί με το θ και τις κλίσεις ορίζει τον προσανατολισμό. Οι κλίσεις και η ιδιοπεριστροφή μετρώνται από το σύστημα του θραύσματος όπως σαρώθηκε</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::EditAxisDialog</name>

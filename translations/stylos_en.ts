@@ -1637,6 +1637,14 @@
         <source>In the frame of %1:</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Spin:</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn about the line through the fragment&apos;s centre parallel to the axis; with θ and the tilts it fixes the orientation. The tilts and the spin are measured from the fragment&apos;s frame as scanned</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::EditAxisDialog</name>

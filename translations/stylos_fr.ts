@@ -1637,6 +1637,14 @@
         <source>In the frame of %1:</source>
         <translation>Dans le repère de %1 :</translation>
     </message>
+    <message>
+        <source>Spin:</source>
+        <translation>Rotation propre :</translation>
+    </message>
+    <message>
+        <source>Turn about the line through the fragment&apos;s centre parallel to the axis; with θ and the tilts it fixes the orientation. The tilts and the spin are measured from the fragment&apos;s frame as scanned</source>
+        <translation>Rotation autour de la droite passant par le centre du fragment, parallèle à l’axe ; avec θ et les inclinaisons, elle fixe l’orientation. Les inclinaisons et la rotation propre sont mesurées depuis le repère du fragment tel qu’il a été numérisé</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::EditAxisDialog</name>

@@ -114,6 +114,7 @@ void DrumFramePoseWidgetTest::readsThePlacementAboutTheDrumAxis()
     QCOMPARE(m_widget->field(DrumFramePoseWidget::Z)->value(), 50.0);
     QCOMPARE(m_widget->field(DrumFramePoseWidget::TiltLean)->value(), 0.0);
     QCOMPARE(m_widget->field(DrumFramePoseWidget::TiltRoll)->value(), 0.0);
+    QCOMPARE(m_widget->field(DrumFramePoseWidget::Spin)->value(), std::round(read().spin / Degree * 1e3) / 1e3);
     QVERIFY(m_widget->statusLabel()->text().contains(QStringLiteral("drum")));
     // The drum's own octree is the piece's: the drum itself has no drum to be placed in.
     m_widget->setFragment(m_drumId);
@@ -130,6 +131,7 @@ void DrumFramePoseWidgetTest::typingAValueMovesThePieceAsOneUndoStep_data()
     QTest::newRow("r") << int(DrumFramePoseWidget::R) << QStringLiteral("545") << 0.545;
     QTest::newRow("lean") << int(DrumFramePoseWidget::TiltLean) << QStringLiteral("2") << 2 * Degree;
     QTest::newRow("roll") << int(DrumFramePoseWidget::TiltRoll) << QStringLiteral("-1.5") << -1.5 * Degree;
+    QTest::newRow("spin") << int(DrumFramePoseWidget::Spin) << QStringLiteral("12.5") << 12.5 * Degree;
 }
 
 void DrumFramePoseWidgetTest::typingAValueMovesThePieceAsOneUndoStep()
@@ -142,16 +144,16 @@ void DrumFramePoseWidgetTest::typingAValueMovesThePieceAsOneUndoStep()
     type(m_widget->field(DrumFramePoseWidget::Field(field)), text);
     QCOMPARE(m_document->undoStack()->count(), 1);
     const dock::DrumFramePose now = read();
-    const auto unknowns = {dock::DockUnknown::Theta, dock::DockUnknown::Z, dock::DockUnknown::R,
-                           dock::DockUnknown::TiltLean, dock::DockUnknown::TiltRoll};
-    int index = 0;
-    for (dock::DockUnknown u : unknowns) {
-        const double expected = index == field ? value : start.value(u);
-        QVERIFY2(std::abs(now.value(u) - expected) < 1e-9,
-                 qPrintable(QStringLiteral("%1: %2, expected %3").arg(index).arg(now.value(u)).arg(expected)));
-        ++index;
+    // Six values, the whole placement: the one typed changes, the others stay.
+    const auto values = [](const dock::DrumFramePose& p) {
+        return std::array<double, 6>{p.theta, p.z, p.r, p.tiltLean, p.tiltRoll, p.spin};
+    };
+    for (int index = 0; index < 6; ++index) {
+        const double expected = index == field ? value : values(start)[std::size_t(index)];
+        const double got = values(now)[std::size_t(index)];
+        QVERIFY2(std::abs(got - expected) < 1e-9,
+                 qPrintable(QStringLiteral("%1: %2, expected %3").arg(index).arg(got).arg(expected)));
     }
-    QVERIFY(std::abs(now.spin - start.spin) < 1e-9);
     // The fields show the new value; undo puts the pose back exactly.
     QCOMPARE(m_widget->field(DrumFramePoseWidget::Field(field))->text().remove(QLatin1Char(' ')).startsWith(text), true);
     m_document->undoStack()->undo();

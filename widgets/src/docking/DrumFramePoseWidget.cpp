@@ -18,17 +18,32 @@ namespace {
 
 constexpr double DegreesPerRadian = 180.0 / std::numbers::pi;
 
-core::dock::DockUnknown unknownOf(DrumFramePoseWidget::Field field)
+/** The value of @p field in @p pose (metres, radians): the docking unknowns and the spin, which with them fixes
+ *  the fragment's orientation. */
+double valueOf(const core::dock::DrumFramePose& pose, DrumFramePoseWidget::Field field)
 {
     using core::dock::DockUnknown;
     switch (field) {
-    case DrumFramePoseWidget::Theta: return DockUnknown::Theta;
-    case DrumFramePoseWidget::Z: return DockUnknown::Z;
-    case DrumFramePoseWidget::R: return DockUnknown::R;
-    case DrumFramePoseWidget::TiltLean: return DockUnknown::TiltLean;
-    case DrumFramePoseWidget::TiltRoll: return DockUnknown::TiltRoll;
+    case DrumFramePoseWidget::Theta: return pose.theta;
+    case DrumFramePoseWidget::Z: return pose.z;
+    case DrumFramePoseWidget::R: return pose.r;
+    case DrumFramePoseWidget::TiltLean: return pose.tiltLean;
+    case DrumFramePoseWidget::TiltRoll: return pose.tiltRoll;
+    case DrumFramePoseWidget::Spin: return pose.spin;
     }
-    return DockUnknown::Theta;
+    return 0.0;
+}
+
+void setValue(core::dock::DrumFramePose& pose, DrumFramePoseWidget::Field field, double value)
+{
+    switch (field) {
+    case DrumFramePoseWidget::Theta: pose.theta = value; break;
+    case DrumFramePoseWidget::Z: pose.z = value; break;
+    case DrumFramePoseWidget::R: pose.r = value; break;
+    case DrumFramePoseWidget::TiltLean: pose.tiltLean = value; break;
+    case DrumFramePoseWidget::TiltRoll: pose.tiltRoll = value; break;
+    case DrumFramePoseWidget::Spin: pose.spin = value; break;
+    }
 }
 
 bool isAngle(DrumFramePoseWidget::Field field) { return field != DrumFramePoseWidget::Z && field != DrumFramePoseWidget::R; }
@@ -62,7 +77,7 @@ DrumFramePoseWidget::DrumFramePoseWidget(SceneDocument& document, QWidget* paren
         if (isAngle(field)) {
             spin->setRange(-180.0, 180.0);
             spin->setDecimals(3);
-            spin->setWrapping(field == Theta);
+            spin->setWrapping(field == Theta || field == Spin);
             spin->setSuffix(QStringLiteral("°"));
         } else {
             spin->setRange(field == R ? 0.0 : -1e7, 1e7);
@@ -103,6 +118,7 @@ void DrumFramePoseWidget::retranslateUi()
     m_labels[R]->setText(tr("r from the axis:"));
     m_labels[TiltLean]->setText(tr("Lean:"));
     m_labels[TiltRoll]->setText(tr("Roll:"));
+    m_labels[Spin]->setText(tr("Spin:"));
     m_fields[Theta]->setToolTip(tr("Azimuth of the fragment's centre about the drum axis, from the drum's reference "
                                    "direction (as in its développée); typing turns the fragment about the axis"));
     m_fields[Z]->setToolTip(tr("Height of the fragment's centre along the drum axis, from the axis guide's point"));
@@ -110,6 +126,9 @@ void DrumFramePoseWidget::retranslateUi()
     m_fields[TiltLean]->setToolTip(tr("Turn about the tangent through the fragment's centre (leans it in or out)"));
     m_fields[TiltRoll]->setToolTip(tr("Turn about the radial direction through the fragment's centre (turns its "
                                       "flutes sideways)"));
+    m_fields[Spin]->setToolTip(tr("Turn about the line through the fragment's centre parallel to the axis; with θ "
+                                  "and the tilts it fixes the orientation. The tilts and the spin are measured from "
+                                  "the fragment's frame as scanned"));
     refresh();
 }
 
@@ -149,7 +168,7 @@ void DrumFramePoseWidget::refresh()
     m_status->setText(tr("In the frame of %1:").arg(QString::fromStdString(m_document.fragment(drumId)->name)));
     const core::dock::DrumFramePose value = core::dock::drumFramePose(p.frame, p.relative, p.centre);
     for (int i = 0; i < FieldCount; ++i)
-        m_fields[std::size_t(i)]->setValue(value.value(unknownOf(Field(i))) * displayScale(Field(i)));
+        m_fields[std::size_t(i)]->setValue(valueOf(value, Field(i)) * displayScale(Field(i)));
     m_updating = false;
 }
 
@@ -160,7 +179,7 @@ void DrumFramePoseWidget::apply(Field field)
     if (!placement(p)) return;
     // Only the edited value changes; the others keep their exact values, not the spin boxes' rounding.
     core::dock::DrumFramePose value = core::dock::drumFramePose(p.frame, p.relative, p.centre);
-    value.set(unknownOf(field), m_fields[std::size_t(field)]->value() / displayScale(field));
+    setValue(value, field, m_fields[std::size_t(field)]->value() / displayScale(field));
     const Eigen::Isometry3d world = p.drumWorld * core::dock::placeInDrumFrame(p.frame, value, p.centre);
     m_document.setFragmentWorldPose(m_id, core::scene::poseFromEigen(world.matrix()));
 }

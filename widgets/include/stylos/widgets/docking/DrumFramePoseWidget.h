@@ -29,8 +29,8 @@ class DrumFramePoseWidget : public QWidget {
 public:
     using FragmentId = SceneDocument::FragmentId;
     /** The fields, in this order. */
-    enum Field { Theta, Z, R, TiltLean, TiltRoll };
-    static constexpr int FieldCount = 5;
+    enum Field { Theta, Z, R, TiltLean, TiltRoll, Spin };
+    static constexpr int FieldCount = 6;
 
     /** @p document is not owned and must outlive the widget. */
     explicit DrumFramePoseWidget(SceneDocument& document, QWidget* parent = nullptr);
