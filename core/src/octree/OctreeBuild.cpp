@@ -9,6 +9,7 @@
 #include "stylos/core/octree/ConstructionOctree.h"
 #include "stylos/core/octree/LeafSpacing.h"
 #include "stylos/core/octree/PoctWriter.h"
+#include "stylos/core/util/ScratchFolder.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
@@ -23,38 +24,6 @@ namespace stylos::core::octree {
 namespace {
 
 namespace fs = std::filesystem;
-
-/** A fresh folder ".NAME.build-XXXXXXXXXXXXXXXX" in @p parent, removed with its content on destruction. */
-class TemporaryFolder {
-public:
-    ~TemporaryFolder()
-    {
-        std::error_code ignored;
-        if (!m_path.empty()) fs::remove_all(m_path, ignored);
-    }
-    bool create(const fs::path& parent, const std::string& name)
-    {
-        std::random_device device;
-        for (int attempt = 0; attempt < 8; ++attempt) {
-            const auto ticks = std::uint64_t(std::chrono::steady_clock::now().time_since_epoch().count());
-            char suffix[17];
-            std::snprintf(suffix, sizeof suffix, "%016llx",
-                          static_cast<unsigned long long>((std::uint64_t(device()) << 32) ^ device() ^ ticks));
-            std::error_code error;
-            const fs::path candidate = parent / ("." + name + ".build-" + suffix);
-            if (fs::create_directory(candidate, error) && !error) {
-                m_path = candidate;
-                return true;
-            }
-            if (!fs::is_directory(parent, error)) return false;
-        }
-        return false;
-    }
-    const fs::path& path() const { return m_path; }
-
-private:
-    fs::path m_path;
-};
 
 /**
  * The levels of a construction octree not pulled yet: the first visitLevels() pulls it and hands the cells
@@ -148,11 +117,8 @@ Result<BuildReport> buildOctreeFile(const fs::path& input, const fs::path& outpu
     const Status valid = checkBuildOptions(options);  // before the (long) estimation
     if (!valid.ok()) return valid.error();
 
-    TemporaryFolder folder;
-    const fs::path parent = output.has_parent_path() ? output.parent_path() : fs::path(".");
-    if (!folder.create(parent, output.filename().string()))
-        return Error::at(ErrorCode::WriteFailed, parent.string(), "",
-                         "cannot create a temporary folder for the estimated normals");
+    ScratchFolder folder; // the estimated normals, removed with it
+    if (const Status created = folder.create(output, "build"); !created) return created.error();
     const fs::path withNormals = folder.path() / "normals.ply";
     normals::NormalFileOptions estimate;
     estimate.normals.threads = options.threads;
