@@ -75,6 +75,7 @@ bool parseOnePanel(CommandLine& cl, cp::PlateSpec& spec, bool& shadingGiven, std
     panel.view = *view;
     if (!cl.value("scale")) return problem = "plate needs --scale N (the panel at 1:N)", false;
     if (!cl.number("scale", panel.scale)) return problem = cl.error(), false;
+    if (!(panel.scale >= 1 && panel.scale <= 1e6)) return problem = "--scale must be a number in 1..1000000 (the panel at 1:N)", false;
     shadingGiven = cl.value("shading").has_value();
     if (shadingGiven) {
         const auto s = cp::panelShadingFromName(*cl.value("shading"));
@@ -97,6 +98,8 @@ bool parsePage(CommandLine& cl, cp::PlateSpec& spec, std::string& problem)
 {
     if (const auto page = cl.value("page")) {
         const auto size = cp::pageFromName(*page);
+        if (!size && page->find_first_of("xX") != std::string::npos)
+            return problem = "--page WxH: each side must be a number of millimetres in 10..2000, not \"" + *page + "\"", false;
         if (!size) return problem = "unknown page \"" + *page + "\" (A4, A3, letter, 170x105, 205x135 or WxH in mm)", false;
         spec.pageName = *page;
         spec.page = *size;

@@ -92,6 +92,19 @@ TEST(PlateCommand, UsageErrorsAndBadInput)
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--view", "side"}).exitCode, 2);
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", (dir / "p.jpg").string(), "--scale", "10"}).exitCode, 2);
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--dpi", "5"}).exitCode, 2);
+    // Out-of-range values name the option, not a layout key.
+    const auto zero = runCli({"plate", "x.ply", "-o", out, "--scale", "0"});
+    EXPECT_EQ(zero.exitCode, 2);
+    EXPECT_EQ(zero.err.rfind("stylos-cli: --scale must be a number in 1..1000000 (the panel at 1:N) (usage:", 0), 0u)
+        << zero.err;
+    for (const char* page : {"5x5", "nanx100", "axb"}) {
+        const auto small = runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--page", page});
+        EXPECT_EQ(small.exitCode, 2) << page;
+        EXPECT_NE(small.err.find(std::string("--page WxH: each side must be a number of millimetres in 10..2000, not \"") +
+                                 page + "\""),
+                  std::string::npos)
+            << small.err;
+    }
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--view", "front", "--shading", "light"}).exitCode, 2);
     const auto bits = runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--bits", "16"}); // a PDF: not taken
     EXPECT_EQ(bits.exitCode, 2);

@@ -74,7 +74,7 @@ std::optional<PageSize> pageFromName(std::string_view name)
     if (x == std::string::npos) return std::nullopt;
     const auto w = parseNumber(std::string_view(n).substr(0, x));
     const auto h = parseNumber(std::string_view(n).substr(x + 1));
-    if (!w || !h || *w < 10 || *h < 10 || *w > 2000 || *h > 2000) return std::nullopt;
+    if (!w || !h || !(*w >= 10 && *w <= 2000) || !(*h >= 10 && *h <= 2000)) return std::nullopt; // NaN too
     return PageSize{*w, *h};
 }
 
