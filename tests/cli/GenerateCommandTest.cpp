@@ -54,6 +54,11 @@ TEST(CliGenerate, UsageErrorsAndFailuresLeaveNothing)
     const auto huge = runCli({"generate", "drum", "-o", out, "--spacing", "0.0000001"});
     EXPECT_EQ(huge.exitCode, 2);
     EXPECT_NE(huge.err.find("x.ply: spacing 1e-07 m would give about 4.2"), std::string::npos) << huge.err;
+    const auto coarse = runCli({"generate", "drum", "-o", out, "--spacing", "5"}); // "wrote 2 points"
+    EXPECT_EQ(coarse.exitCode, 2);
+    EXPECT_NE(coarse.err.find("x.ply: spacing 5 m would give about 0 points: too coarse to be a scan (at least 100)"),
+              std::string::npos)
+        << coarse.err;
     const auto taper = runCli({"generate", "drum", "-o", out, "--taper", "0.5"});
     EXPECT_EQ(taper.exitCode, 2);
     EXPECT_NE(taper.err.find("the taper must lie within a fifth of the radius (110 mm)"), std::string::npos) << taper.err;

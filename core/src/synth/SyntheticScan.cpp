@@ -19,6 +19,7 @@ namespace stylos::core::synth {
 namespace {
 
 constexpr double kMaxPoints = 2.0e9; ///< refuse to generate more (the estimate, not the exact count)
+constexpr double kMinPoints = 100.0; ///< nor fewer: a spacing that large samples no surface
 const Eigen::Vector3d kMuseumOrigin(1000.0, 2000.0, 50.0);
 constexpr double kPoseSpread = 3.0;  ///< the pose's translation is kMuseumOrigin ± this, metres
 
@@ -125,6 +126,10 @@ Result<SyntheticReport> generateScan(SyntheticKind kind, const SyntheticOptions&
     if (!(estimate <= kMaxPoints))
         return invalid(output, "spacing " + shortNumber(options.spacing) + " m would give about " +
                                    shortNumber(estimate) + " points (limit 2e9)");
+    if (!(estimate >= kMinPoints))
+        return invalid(output, "spacing " + shortNumber(options.spacing) + " m would give about " +
+                                   shortNumber(std::round(estimate)) + " points: too coarse to be a scan (at least " +
+                                   shortNumber(kMinPoints) + ")");
 
     io::PointSchema schema;
     schema.hasNormals = options.writeNormals;
