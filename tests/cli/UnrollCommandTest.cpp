@@ -148,6 +148,10 @@ TEST(CliUnroll, UsageErrorsExitTwo)
     const auto noFolder = runCli({"unroll", scan, "-o", out, "--heights", (dir / "no-folder" / "h.tif").string()});
     EXPECT_EQ(noFolder.exitCode, 1) << noFolder.err;
     EXPECT_NE(noFolder.err.find("no-folder does not exist"), std::string::npos) << noFolder.err;
+    // A pixel as large as the drum: no développée of 1 × 2 pixels written (exit 1, the data and the value).
+    const auto huge = runCli({"unroll", scan, "-o", out, "--pixel-size", "10"});
+    EXPECT_EQ(huge.exitCode, 1) << huge.err;
+    EXPECT_NE(huge.err.find("a pixel of 1e+04 mm gives a développée of 1 × "), std::string::npos) << huge.err;
     EXPECT_EQ(entriesIn(dir.path()), 2u); // the scan and its truth sidecar only
     EXPECT_NE(runCli({"unroll", scan, "-o", out, "--shading", "light", "--light-azimuth", "nan"})
                   .err.find("--light-azimuth expects a finite number, not \"nan\""),

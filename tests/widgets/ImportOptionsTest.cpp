@@ -73,12 +73,21 @@ void ImportOptionsTest::theDialogGivesTheChosenAxisAndUnit()
     dialog.offsetBox(1)->setValue(-4100000.5);
     dialog.offsetBox(2)->setValue(0);
     QCOMPARE(dialog.frame().offset, (std::array<double, 3>{512000.125, -4100000.5, 0.0}));
-    // Typed as scientific notation too (the plain spin box read "4.1e6" as 4.16).
+    // Typed as scientific notation too (the plain spin box read "4.1e6" as 4.16); applied on leaving the field.
+    dialog.show();
+    dialog.activateWindow();
+    QVERIFY(QTest::qWaitForWindowActive(&dialog));
     dialog.offsetBox(2)->setFocus();
     dialog.offsetBox(2)->selectAll();
     QTest::keyClicks(dialog.offsetBox(2), QStringLiteral("-4.1e6"));
     QTest::keyClick(dialog.offsetBox(2), Qt::Key_Tab);
     QCOMPARE(dialog.frame().offset, (std::array<double, 3>{512000.125, -4100000.5, -4100000.0}));
+    // Out of range (1e9 at most): not applied, nor any prefix typed on the way (it kept 10, from "1e1").
+    dialog.offsetBox(2)->setFocus();
+    dialog.offsetBox(2)->selectAll();
+    QTest::keyClicks(dialog.offsetBox(2), QStringLiteral("1e12"));
+    QTest::keyClick(dialog.offsetBox(2), Qt::Key_Tab);
+    QCOMPARE(dialog.frame().offset[2], -4100000.0);
     dialog.offsetBox(2)->setValue(0);
     // Every item names its axis; OK accepts.
     for (int i = 0; i < dialog.upBox()->count(); ++i)

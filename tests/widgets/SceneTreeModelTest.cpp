@@ -245,6 +245,16 @@ void SceneTreeModelTest::poseFieldsReadScientificNotation()
     x->setLocale(QLocale(QLocale::French, QLocale::France));
     type("2,5e1");
     QCOMPARE(x->value(), 25.0);
+    type("2.5"); // a point typed where French writes a comma: the decimal point, not refused (25)
+    QCOMPARE(x->value(), 2.5);
+    type("2.5e-3");
+    QCOMPARE(x->value(), 0.0025);
+    // Greek groups with the point: scientific notation with a point still reads as such (it read 253).
+    x->setLocale(QLocale(QLocale::Greek, QLocale::Greece));
+    type("2.5e-3");
+    QCOMPARE(x->value(), 0.0025);
+    type("2,5");
+    QCOMPARE(x->value(), 2.5);
     x->setLocale(QLocale::c());
 
     // A plain number out of range is not applied either (the spin box refused the last key: 720° became 72°).

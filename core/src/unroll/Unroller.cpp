@@ -30,6 +30,7 @@ constexpr double kDefaultBand = 0.15;      ///< × referenceRadius
 constexpr double kDefaultTolerance = 2.0;  ///< × pixel size
 /** The default pixel is enlarged by these factors, in turn, while its image covers less than kDefaultCoverage. */
 constexpr std::array<double, 4> kDefaultPixelSteps{1.25, 1.5, 2.0, 3.0};
+constexpr int kMinImagePixels = 64;          ///< a given pixel must leave at least this many pixels
 
 std::string format(const char* pattern, double value)
 {
@@ -278,6 +279,16 @@ Result<Unrolled> Unroller::run()
     const bool mayGrow = !m_options.pixelSize && m_options.fillHoles;
     auto attempt = rasterise(stats, cut, arc, pixel, spacing, 0.35, mayGrow ? 0.9 : 1.0);
     if (!attempt) return attempt.error();
+    if (m_options.pixelSize) {
+        // A pixel as large as the object gives an image of a few pixels (10 m: 1 × 2), no développée (a thin band
+        // of one row is one).
+        const double pixels = double(attempt->field.width()) * double(attempt->field.height());
+        if (pixels < kMinImagePixels)
+            return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm gives a développée of " +
+                           std::to_string(attempt->field.width()) + " × " + std::to_string(attempt->field.height()) +
+                           " pixels: give a pixel size of at most " +
+                           format("%.4g", pixel * std::sqrt(std::max(pixels, 1.0) / kMinImagePixels) * 1000.0) + " mm");
+    }
     if (m_options.pixelSize && attempt->coverage.fraction() < m_options.minCoverage)
         return invalid("a pixel of " + format("%.4g", pixel * 1000.0) + " mm covers only "
                        + format("%.1f", attempt->coverage.fraction() * 100.0) + " % of the surface"
