@@ -339,4 +339,14 @@ TEST(CameraTest, AFragmentFarAwayDoesNotClipWhatTheCameraLooksAt)
     camera.setSceneBounds(drum);
     EXPECT_DOUBLE_EQ(camera.nearPlane(), nearAlone);
     EXPECT_DOUBLE_EQ(camera.farPlane(), farAlone);
+
+    // A close-up 1 cm from a drum of a 10 m column: the planes the scene gives (the rule must not clip the column
+    // beyond 5 m): near at 1e-4 of far, far past the column's end.
+    const Eigen::AlignedBox3d column(Eigen::Vector3d(-0.5, -0.5, 0), Eigen::Vector3d(0.5, 0.5, 10));
+    camera.setSceneBounds(column);
+    camera.setDistance(0.01);
+    const double radiusColumn = 0.5 * column.diagonal().norm() * 1.05;
+    const double depth = (column.center() - camera.eye()).dot(camera.forward());
+    EXPECT_NEAR(camera.farPlane(), depth + radiusColumn, 1e-9);
+    EXPECT_NEAR(camera.nearPlane(), 1e-4 * camera.farPlane(), 1e-12);
 }

@@ -151,8 +151,10 @@ void Camera::clipRange(double& nearPlane, double& farPlane) const
         // A scene deeper than the depth buffer's 1e4 : 1 (a fragment moved kilometres away) must not push the
         // near plane past what the camera looks at: the target's surroundings stay in range, and what lies
         // beyond 1e4 near-plane distances is clipped instead.
+        // Only when the near plane would cut into what the camera looks at (past half its distance): a close-up
+        // in a tall scene keeps the planes the scene gives.
         const double closest = std::max(0.05 * m_distance, 1e-6);
-        if (nearPlane > closest && depth - radius < closest) {
+        if (nearPlane > 0.5 * m_distance && depth - radius < closest) {
             nearPlane = std::max(depth - radius, closest);
             farPlane = std::min(farPlane, nearPlane * 1e4);
         }
