@@ -254,15 +254,16 @@ TEST(PlateSpec, TheProjectKeepsItsPlate)
     EXPECT_EQ(saved["plate"], json["plate"]);
     EXPECT_EQ(saved["legend"], json["legend"]);
 
-    // A plate exported since replaces it.
+    // A plate set since is what is written; set and undone (no plate again), the unread section comes back.
     auto replaced = bad->scene;
     replaced.setPlate(plate);
-    EXPECT_TRUE(replaced.unreadPlate().empty());
     const auto again = ProjectFile::fromJson(ProjectFile::toJson(replaced, "/p/a.stylos"), "/p/a.stylos");
     ASSERT_TRUE(again.ok());
     EXPECT_FALSE(again->plateProblem.has_value());
     ASSERT_TRUE(again->scene.plate().has_value());
     EXPECT_EQ(*again->scene.plate(), plate);
+    replaced.setPlate(std::nullopt);
+    EXPECT_EQ(nlohmann::json::parse(ProjectFile::toJson(replaced, "/p/a.stylos"))["plate"], json["plate"]);
 
     // The project's other sections are still checked strictly.
     json["legend"] = 3;

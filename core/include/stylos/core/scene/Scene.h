@@ -99,15 +99,12 @@ public:
     /** @brief The plate last exported (File › Export plate…), kept so the figure can be made again; none
      *  until one is. clear() keeps it. */
     const std::optional<plate::PlateSpec>& plate() const { return m_plate; }
-    void setPlate(std::optional<plate::PlateSpec> plate)
-    {
-        m_plate = std::move(plate);
-        m_unreadPlate.clear();
-    }
+    void setPlate(std::optional<plate::PlateSpec> plate) { m_plate = std::move(plate); }
 
     /** @brief A "plate" section of the project file that this version could not read (a misspelt key, a
-     *  later version's layout), as JSON text: kept verbatim and written back while no plate replaces it,
-     *  so opening and saving a project never loses it. Empty when there is none. setPlate() drops it. */
+     *  later version's layout), as JSON text: written back (same keys and values) whenever the scene has no
+     *  plate, so opening and saving a project never loses it — a plate set and undone included. Empty when
+     *  there is none. */
     const std::string& unreadPlate() const { return m_unreadPlate; }
     void setUnreadPlate(std::string json) { m_unreadPlate = std::move(json); }
 
