@@ -207,6 +207,14 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     doc.removeFragment(id);
     QCOMPARE(properties.fragment(), stylos::core::scene::NoFragment);
     QVERIFY(!properties.nameEdit()->isEnabled());
+
+    // A fragment whose octree is not open has no centre to turn about: its rotations are off, its translation on.
+    Fragment gone = fragment("gone");
+    gone.octreePath = (m_dir.path() + "/missing.poct").toStdString();
+    const FragmentId goneId = doc.addFragment(gone, nullptr);
+    properties.setFragment(goneId);
+    QVERIFY(properties.poseSpin(0)->isEnabled());
+    QVERIFY(!properties.poseSpin(3)->isEnabled() && !properties.poseSpin(5)->isEnabled());
 }
 
 void SceneTreeModelTest::poseFieldsReadScientificNotation()

@@ -131,7 +131,8 @@ void FragmentPropertiesWidget::refresh()
     m_updating = true;
     for (QWidget* w : {static_cast<QWidget*>(m_name), static_cast<QWidget*>(m_visible), static_cast<QWidget*>(m_colour)})
         w->setEnabled(f != nullptr);
-    for (QDoubleSpinBox* spin : m_pose) spin->setEnabled(f != nullptr);
+    // The rotations turn the fragment about its centre, which its octree gives: off until it is open.
+    for (std::size_t i = 0; i < m_pose.size(); ++i) m_pose[i]->setEnabled(f && (i < 3 || m_document.octree(m_id)));
     const QLocale locale;
     const QString none = QStringLiteral("–");
     if (!f) {
@@ -212,14 +213,14 @@ void FragmentPropertiesWidget::applyPose(int component)
         pose = turned;
         // About the fragment's centre, as the gizmo turns it, not about its file frame's origin: a scan in site
         // coordinates lies kilometres from that origin, and 1° swung it tens of metres away. The translation follows.
-        if (const auto octree = m_document.octree(m_id)) {
-            const Eigen::AlignedBox3d box = core::view::occupiedBounds(*octree);
-            if (!box.isEmpty()) {
-                using core::scene::apply;
-                const Eigen::Vector3d centre = box.center();
-                const Eigen::Vector3d shift = apply(f->pose, centre) - apply(turned, centre);
-                pose = turned.withTranslation(core::scene::toArray(core::scene::toEigen(turned.translationPart()) + shift));
-            }
+        const auto octree = m_document.octree(m_id);
+        if (!octree) return; // not open yet: no centre to turn about (the fields are off then)
+        const Eigen::AlignedBox3d box = core::view::occupiedBounds(*octree);
+        if (!box.isEmpty()) {
+            using core::scene::apply;
+            const Eigen::Vector3d centre = box.center();
+            const Eigen::Vector3d shift = apply(f->pose, centre) - apply(turned, centre);
+            pose = turned.withTranslation(core::scene::toArray(core::scene::toEigen(turned.translationPart()) + shift));
         }
     }
     m_document.setFragmentPose(m_id, pose);
