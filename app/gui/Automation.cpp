@@ -256,10 +256,12 @@ void dockSecondFragment(MainWindow& window, int timeoutMs, std::function<void(qu
                                [](const core::scene::Guide& g) { return g.kind == core::scene::GuideKind::Groove; });
         };
         QObject::connect(&docking.docker(), &widgets::DockRunner::docked, &window, [then, piece] { then(piece); });
-        QObject::connect(&docking.docker(), &widgets::DockRunner::failed, &window, [](quint64, const QString& message) {
+        const auto dockEnded = [](quint64, const QString& message) {
             std::fprintf(stderr, "stylos: %s\n", qPrintable(message));
             QApplication::exit(1);
-        });
+        };
+        QObject::connect(&docking.docker(), &widgets::DockRunner::failed, &window, dockEnded);
+        QObject::connect(&docking.docker(), &widgets::DockRunner::cancelled, &window, dockEnded);
         auto dock = [&window, &docking, drum, piece] {
             window.document().setDockingDrum(drum);
             window.sceneDock().selectFragment(piece);
@@ -272,14 +274,19 @@ void dockSecondFragment(MainWindow& window, int timeoutMs, std::function<void(qu
             dock();
             return;
         }
-        // A fit that fails (no flutes found, cancelled) ends the run with its message, as a failed dock does.
-        QObject::connect(&window.docking().guideFits(), &widgets::GuideFitRunner::failed, &window,
-                         [drum](quint64 id, const QString& message) {
+        // A fit that fails (no flutes found) or is cancelled ends the run with its message, as a failed dock does.
+        const auto endWith = [drum](quint64 id, const QString& message) {
             if (id != drum) return;
             std::fprintf(stderr, "stylos: %s\n", qPrintable(message));
             QApplication::exit(1);
-        });
-        window.docking().guideFits().start(drum);
+        };
+        QObject::connect(&window.docking().guideFits(), &widgets::GuideFitRunner::failed, &window, endWith);
+        QObject::connect(&window.docking().guideFits(), &widgets::GuideFitRunner::cancelled, &window, endWith);
+        if (!window.docking().guideFits().start(drum)) {
+            std::fprintf(stderr, "stylos: --dock could not start fitting the guides of the first fragment\n");
+            QApplication::exit(1);
+            return;
+        }
         auto* fitted = new QMetaObject::Connection;
         *fitted = QObject::connect(&window.document(), &widgets::SceneDocument::fragmentChanged, &window,
                                    [drum, dock, hasFlutes, fitted](quint64 id) {

@@ -113,7 +113,7 @@ void DockRunner::delivered(FragmentId id, const QFuture<DockJobResult>& future)
     const Launched launched = it->second;
     m_launched.erase(it);
     if (future.isCanceled() || future.resultCount() == 0) {
-        if (const core::scene::Fragment* f = m_document.fragment(id))
+        if (const core::scene::Fragment* f = future.isCanceled() ? m_document.fragment(id) : nullptr)
             Q_EMIT cancelled(id, tr("Docking %1 was cancelled").arg(m_document.nameOf(id, QString::fromStdString(f->name))));
         return;
     }

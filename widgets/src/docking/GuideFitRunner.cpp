@@ -29,7 +29,7 @@ bool GuideFitRunner::deleteGuides(FragmentId id)
 void GuideFitRunner::delivered(FragmentId id, const QFuture<GuideFitResult>& future)
 {
     if (future.isCanceled() || future.resultCount() == 0) {
-        if (const core::scene::Fragment* f = m_document.fragment(id))
+        if (const core::scene::Fragment* f = future.isCanceled() ? m_document.fragment(id) : nullptr)
             Q_EMIT cancelled(id, tr("Fitting the guides of %1 was cancelled").arg(m_document.nameOf(id, QString::fromStdString(f->name))));
         return;
     }
