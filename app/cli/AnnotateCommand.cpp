@@ -54,11 +54,12 @@ int runAnnotate(const std::vector<std::string>& args)
     const std::string mapPath = cl.value("map").value_or("");
     if (output.empty() || rasterPath.empty() || mapPath.empty() || !cl.value("layer"))
         return usageError(cl, "annotate needs --layer, --raster, --map and -o OUT.poct");
-    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     const auto layer = ann::layerFromName(*cl.value("layer"));
     if (!layer) return usageError(cl, "unknown layer \"" + *cl.value("layer") + "\" (material or toolmark)");
     if (std::filesystem::path(output).extension() != ".poct") return usageError(cl, "the output must be a .poct file, not \"" + output + "\"");
 
+    // Usage checked: an output that cannot be written is found before the work.
+    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     const auto start = core::Clock::now();
     ann::Legend legend = ann::Legend::defaults();
     if (const auto path = cl.value("legend")) {

@@ -178,7 +178,6 @@ int runBuild(const std::vector<std::string>& args)
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "build needs -o OUT.poct");
     if (!core::io::hasPoctExtension(*output)) return usageError(cl, "the output must be a .poct file, not \"" + *output + "\"");
-    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
 
     oct::BuildOptions options;
     core::synth::SyntheticStreamOptions stream;
@@ -199,6 +198,8 @@ int runBuild(const std::vector<std::string>& args)
         options.memoryLimit = limit - baseline - WorkingReserve;
     }
 
+    // Usage checked: an output that cannot be written is found before the work.
+    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
     const std::string input = synthetic ? "synthetic-drum" : cl.positionals()[0];
     ConsoleProgress progress("building " + *output);
     auto build = [&]() -> core::Result<oct::BuildReport> {

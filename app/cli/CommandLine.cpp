@@ -186,8 +186,14 @@ std::string outputProblem(const std::filesystem::path& target)
     std::error_code ignored;
     if (fs::is_directory(target, ignored)) return target.string() + " is a folder; name a file";
     const fs::path folder = target.parent_path();
-    if (!folder.empty() && !fs::is_directory(folder, ignored))
-        return target.string() + ": the folder " + folder.string() + " does not exist";
+    if (folder.empty()) return {};
+    std::error_code error;
+    const fs::file_status status = fs::status(folder, error);
+    if (error && error != std::errc::no_such_file_or_directory) // e.g. a folder on the way that cannot be searched
+        return target.string() + ": cannot reach the folder " + folder.string() + ": " + error.message();
+    if (fs::exists(status) && !fs::is_directory(status))
+        return target.string() + ": " + folder.string() + " is a file, not a folder";
+    if (!fs::is_directory(status)) return target.string() + ": the folder " + folder.string() + " does not exist";
     return {};
 }
 

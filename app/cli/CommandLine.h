@@ -74,7 +74,8 @@ int failure(const std::string& message);
 
 /**
  * What keeps @p target from being written, checked by every command before its work (so a long build does not
- * end on it): "TARGET is a folder; name a file" or "TARGET: the folder F does not exist"; empty when none.
+ * end on it): "TARGET is a folder; name a file", "TARGET: the folder F does not exist", "TARGET: F is a file, not a
+ * folder" or "TARGET: cannot reach the folder F: REASON"; empty when none.
  * Reported with failure() (exit 1, the output not writable), like a write that fails later.
  */
 std::string outputProblem(const std::filesystem::path& target);

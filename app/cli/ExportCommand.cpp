@@ -46,7 +46,6 @@ int runExport(const std::vector<std::string>& args)
     if (output.empty()) return usageError(cl, "export needs -o OUT.ply|las");
     const std::string ext = lowerExtension(output);
     if (ext != ".ply" && ext != ".las") return usageError(cl, "the output must be a .ply or .las file, not \"" + output + "\"");
-    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     if (cl.value("legend") && ext != ".las") return usageError(cl, "--legend goes with a .las output");
     std::vector<std::string> layers;
     std::stringstream list(cl.value("layers").value_or("material,toolmark"));
@@ -56,6 +55,8 @@ int runExport(const std::vector<std::string>& args)
         layers.push_back(name);
     }
 
+    // Usage checked: an output that cannot be written is found before the work.
+    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     const auto start = core::Clock::now();
     auto opened = core::octree::PackedOctree::open(input);
     if (!opened) {

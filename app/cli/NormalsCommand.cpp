@@ -56,7 +56,6 @@ int runNormals(const std::vector<std::string>& args)
     if (cl.positionals().size() != 1) return usageError(cl, "normals takes exactly one input file");
     const auto output = cl.value("output");
     if (!output || output->empty()) return usageError(cl, "normals needs -o OUT.ply");
-    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
 
     core::normals::NormalFileOptions options;
     long long k = static_cast<long long>(options.normals.neighbours), mib = 256, threads = 0;
@@ -77,6 +76,8 @@ int runNormals(const std::vector<std::string>& args)
     }
 
     const std::string input = cl.positionals()[0];
+    // Usage checked: an output that cannot be written is found before the work.
+    if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
     ConsoleProgress progress("normals " + input);
     const auto start = std::chrono::steady_clock::now();
     auto report = core::normals::estimateNormalsForFile(input, *output, options, &progress);

@@ -177,7 +177,6 @@ int runPlate(const std::vector<std::string>& args)
     const std::string output = cl.value("output").value_or("");
     if (output.empty()) return usageError(cl, "plate needs -o OUT.pdf|svg|tif|png");
     if (!plate::plateFormatOf(output)) return usageError(cl, "the output " + output + " must end in .pdf, .svg, .tif or .png");
-    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     if (const auto format = plate::plateFormatOf(output);
         cl.value("bits") && (*format == plate::PlateFormat::Pdf || *format == plate::PlateFormat::Svg))
         return usageError(cl, "--bits applies to TIFF and PNG plates; a PDF or SVG keeps its images as they are drawn");
@@ -204,6 +203,8 @@ int runPlate(const std::vector<std::string>& args)
     // Check what can be checked before reading anything (a 3D view's default shading waits for its octrees).
     if (shadingGiven || spec.panels[0].view == cp::PanelView::Developpee)
         if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s) return usageError(cl, s.error().message);
+    // Usage checked: an output that cannot be written is found before the work.
+    if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     const auto start = core::Clock::now();
     auto sources = cp::readPlateSources(input);
     if (!sources) return fail(sources.error());
