@@ -52,16 +52,13 @@ cp::PanelShading defaultShading3d(const cp::PlateSources& sources, const std::st
     return cp::PanelShading::Skydome;
 }
 
-/** Whether any fragment a panel of @p spec draws with a layer holds that layer (a point file holds none). */
-bool someLayerDrawn(const cp::PlateSources& sources, const cp::PlateSpec& spec)
+/** Whether some fragment that @p panel draws holds the annotation layer it draws (a point file holds none). */
+bool panelLayerHeld(const cp::PlateSources& sources, const cp::PanelSpec& panel)
 {
-    for (const cp::PanelSpec& panel : spec.panels) {
-        if (!panel.layer) continue;
-        for (const cp::PlateFragment& f : sources.fragments) {
-            if ((!panel.fragment.empty() && f.name != panel.fragment) || !f.isOctree || f.missing) continue;
-            auto octree = core::octree::PackedOctree::open(f.path);
-            if (octree && octree->attribute(core::annotation::layerName(*panel.layer))) return true;
-        }
+    for (const cp::PlateFragment& f : sources.fragments) {
+        if ((!panel.fragment.empty() && f.name != panel.fragment) || !f.isOctree || f.missing) continue;
+        auto octree = core::octree::PackedOctree::open(f.path);
+        if (octree && octree->attribute(core::annotation::layerName(*panel.layer))) return true;
     }
     return false;
 }
@@ -214,10 +211,11 @@ int runPlate(const std::vector<std::string>& args)
             std::cerr << "stylos-cli: " << input << " has no skydome layer: the 3D view is lit from the viewer (headlight)\n";
     }
     if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s) return usageError(cl, s.error().message);
-    const auto layered = std::find_if(spec.panels.begin(), spec.panels.end(), [](const cp::PanelSpec& p) { return p.layer; });
-    if (layered != spec.panels.end() && !sources->isProject && !someLayerDrawn(*sources, spec))
-        std::cerr << "stylos-cli: " << input << " has no " << core::annotation::layerName(*layered->layer)
-                  << " layer: the plate shows no classes (label it with `stylos-cli annotate` or in the workbench)\n";
+    for (std::size_t i = 0; i < spec.panels.size() && !sources->isProject; ++i)
+        if (spec.panels[i].layer && !panelLayerHeld(*sources, spec.panels[i]))
+            std::cerr << "stylos-cli: " << input << " has no " << core::annotation::layerName(*spec.panels[i].layer)
+                      << " layer: " << (spec.panels.size() > 1 ? "panel " + std::to_string(i + 1) : std::string("the plate"))
+                      << " shows no classes (label it with `stylos-cli annotate` or in the workbench)\n";
 
     // Qt draws the page; the offscreen platform needs no display.
     int qtArgc = 3;
