@@ -111,6 +111,12 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
 
     auto* scale = qobject_cast<QDoubleSpinBox*>(dialog.panelTable()->cellWidget(0, 1));
     QVERIFY(scale);
+    // Typed in scientific notation, 1:1000 (the plain spin box dropped the "e": 1:13).
+    scale->selectAll();
+    QTest::keyClicks(scale, QStringLiteral("1e3"));
+    scale->interpretText();
+    QCOMPARE(scale->value(), 1000.0);
+    QCOMPARE(dialog.spec().panels[0].scale, 1000.0);
     scale->setValue(2);
     QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
     QVERIFY(updated.wait(60000));

@@ -1,6 +1,8 @@
 // File › Export plate…: the plate's statement and a live preview of the page.
 #include "stylos/widgets/plate/PlateDialog.h"
 
+#include "document/NumberSpinBox.h"
+
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/plate/PlateLayout.h"
 #include "stylos/core/view/GuideGeometry.h"
@@ -108,7 +110,7 @@ Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, c
 
 PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const cp::PlateSpec& spec, QWidget* parent)
     : QDialog(parent), m_sources(std::move(sources)), m_page(new QComboBox(this)), m_landscape(new QCheckBox(this)),
-      m_margin(new QDoubleSpinBox(this)), m_dpi(new QSpinBox(this)), m_bits(new QComboBox(this)),
+      m_margin(new NumberSpinBox(this)), m_dpi(new QSpinBox(this)), m_bits(new QComboBox(this)),
       m_legend(new QCheckBox(this)), m_caption(new QPlainTextEdit(this)), m_template(new QComboBox(this)),
       m_panels(new QTableWidget(0, ColumnCount, this)), m_preview(new QLabel(this)), m_message(new QLabel(this)),
       m_buttons(new QDialogButtonBox(QDialogButtonBox::Ok | QDialogButtonBox::Cancel, this)), m_timer(new QTimer(this))
@@ -249,7 +251,7 @@ void PlateDialog::addPanelRow(const cp::PanelSpec& panel)
         view->setProperty("camera", QVariantList{(*camera)[0], (*camera)[1], (*camera)[2], (*camera)[3]});
     }
     view->setCurrentIndex(std::max(0, view->findData(int(panel.view))));
-    auto* scale = new QDoubleSpinBox;
+    auto* scale = new NumberSpinBox; // 1e3 typed is 1:1000 (it read 13)
     scale->setRange(1, 1e6);
     scale->setDecimals(1);
     scale->setValue(panel.scale);
