@@ -808,6 +808,10 @@
         <source>View and tools toolbar</source>
         <translation>Γραμμή προβολής και εργαλείων</translation>
     </message>
+    <message>
+        <source>Could not compute the skydome of %1: its octree %2 does not exist</source>
+        <translation>Δεν υπολογίστηκε ο θόλος ουρανού του %1: το octree του, %2, δεν υπάρχει</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::PlateActions</name>

@@ -808,6 +808,10 @@
         <source>View and tools toolbar</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Could not compute the skydome of %1: its octree %2 does not exist</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::PlateActions</name>

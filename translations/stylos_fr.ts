@@ -294,7 +294,7 @@
     </message>
     <message>
         <source>With --grab: first compute the first fragment&apos;s développée and paint a few annotation regions on it (marble, fractured marble, plaster; a claw-chisel area in the tool-mark layer). With --dock too: after the dock, the développée of the second fragment&apos;s assembly, painted across the drum and the fragment.</source>
-        <translation>Avec --grab : calculer d&apos;abord la développée du premier fragment et y peindre quelques régions d&apos;annotation (marbre, marbre fracturé, plâtre ; une zone de gradine dans la couche des traces d&apos;outil). Avec --dock aussi : après l&apos;accostage, la développée de l&apos;assemblage du deuxième fragment, peinte à travers le tambour et le fragment.</translation>
+        <translation>Avec --grab : calculer d’abord la développée du premier fragment et y peindre quelques régions d’annotation (marbre, marbre fracturé, plâtre ; une zone de gradine dans la couche des traces d’outil). Avec --dock aussi : après l’accostage, la développée de l’assemblage du deuxième fragment, peinte à travers le tambour et le fragment.</translation>
     </message>
     <message>
         <source>--paint does not go with --gizmo or --annotation</source>
@@ -383,19 +383,19 @@
     </message>
     <message>
         <source>Size of the drawn points, as a multiple of the size of their octree cell</source>
-        <translation>Taille des points dessinés, en multiple de la taille de leur cellule d&apos;octree</translation>
+        <translation>Taille des points dessinés, en multiple de la taille de leur cellule d’octree</translation>
     </message>
     <message>
         <source>View-dependent: finer cells near the camera, within the point budget; global level: every fragment drawn at the one octree level below</source>
-        <translation>Selon la vue : des cellules plus fines près de la caméra, dans la limite du budget de points ; niveau global : chaque fragment dessiné au niveau d&apos;octree choisi ci-dessous</translation>
+        <translation>Selon la vue : des cellules plus fines près de la caméra, dans la limite du budget de points ; niveau global : chaque fragment dessiné au niveau d’octree choisi ci-dessous</translation>
     </message>
     <message>
         <source>The octree level drawn when the level of detail is global (0: the root cell)</source>
-        <translation>Le niveau d&apos;octree dessiné quand le niveau de détail est global (0 : la cellule racine)</translation>
+        <translation>Le niveau d’octree dessiné quand le niveau de détail est global (0 : la cellule racine)</translation>
     </message>
     <message>
         <source>Octree level</source>
-        <translation>Niveau d&apos;octree</translation>
+        <translation>Niveau d’octree</translation>
     </message>
     <message>
         <source>Eye-dome lighting</source>
@@ -807,6 +807,10 @@
     <message>
         <source>View and tools toolbar</source>
         <translation>Barre de la vue et des outils</translation>
+    </message>
+    <message>
+        <source>Could not compute the skydome of %1: its octree %2 does not exist</source>
+        <translation>Impossible de calculer le skydome de %1 : son octree %2 n’existe pas</translation>
     </message>
 </context>
 <context>
@@ -1284,7 +1288,7 @@
     </message>
     <message>
         <source>Not painted: the développée of the assembly is out of date (%1). Compute it again to paint.</source>
-        <translation>Rien n&apos;est peint : la développée de l&apos;assemblage n&apos;est plus à jour (%1). Calculez-la à nouveau pour peindre.</translation>
+        <translation>Rien n’est peint : la développée de l’assemblage n’est plus à jour (%1). Calculez-la à nouveau pour peindre.</translation>
     </message>
     <message>
         <source>its drum was removed</source>
@@ -1296,7 +1300,7 @@
     </message>
     <message>
         <source>“%1” is no longer in the assembly</source>
-        <translation>« %1 » n&apos;est plus dans l&apos;assemblage</translation>
+        <translation>« %1 » n’est plus dans l’assemblage</translation>
     </message>
     <message>
         <source>“%1” was moved</source>
@@ -1304,7 +1308,7 @@
     </message>
     <message>
         <source>the octree of “%1” changed</source>
-        <translation>l&apos;octree de « %1 » a changé</translation>
+        <translation>l’octree de « %1 » a changé</translation>
     </message>
 </context>
 <context>
@@ -1398,11 +1402,11 @@
     </message>
     <message>
         <source>Horizon directions</source>
-        <translation>Directions d&apos;horizon</translation>
+        <translation>Directions d’horizon</translation>
     </message>
     <message>
         <source>Skydome shading of the développée: how many azimuths each pixel searches for its horizon (more is smoother and slower). Not the 3D view&apos;s skydome.</source>
-        <translation>Ombrage skydome de la développée : le nombre d&apos;azimuts où chaque pixel cherche son horizon (plus, c&apos;est plus lisse et plus lent). Pas le skydome de la vue 3D.</translation>
+        <translation>Ombrage skydome de la développée : le nombre d’azimuts où chaque pixel cherche son horizon (plus, c’est plus lisse et plus lent). Pas le skydome de la vue 3D.</translation>
     </message>
     <message>
         <source>noise %1 mm smoothed by %2 mm</source>
@@ -1418,11 +1422,11 @@
     </message>
     <message>
         <source>Skydome: smooth the scanner&apos;s noise out of the heights before the horizon search, so that flat, open surfaces read evenly instead of as salt and pepper. Off: the raw heights.</source>
-        <translation>Skydome : lisser le bruit du scanner dans les hauteurs avant la recherche de l&apos;horizon, pour que les surfaces planes et dégagées se lisent uniformément au lieu de poivre et sel. Désactivé : les hauteurs brutes.</translation>
+        <translation>Skydome : lisser le bruit du scanner dans les hauteurs avant la recherche de l’horizon, pour que les surfaces planes et dégagées se lisent uniformément au lieu de poivre et sel. Désactivé : les hauteurs brutes.</translation>
     </message>
     <message>
         <source>Width (Gaussian σ) of the smoothing; Automatic sets it from the noise measured on the heights. The status line says what was used.</source>
-        <translation>Largeur (σ de la gaussienne) du lissage ; Automatique la fixe d&apos;après le bruit mesuré sur les hauteurs. La ligne d&apos;état indique la valeur utilisée.</translation>
+        <translation>Largeur (σ de la gaussienne) du lissage ; Automatique la fixe d’après le bruit mesuré sur les hauteurs. La ligne d’état indique la valeur utilisée.</translation>
     </message>
     <message>
         <source>; </source>
@@ -1917,15 +1921,15 @@
     </message>
     <message>
         <source>Subtracted from every x, before the turn and the scaling</source>
-        <translation>Soustrait de chaque x, avant la rotation et la mise à l&apos;échelle</translation>
+        <translation>Soustrait de chaque x, avant la rotation et la mise à l’échelle</translation>
     </message>
     <message>
         <source>Subtracted from every y, before the turn and the scaling</source>
-        <translation>Soustrait de chaque y, avant la rotation et la mise à l&apos;échelle</translation>
+        <translation>Soustrait de chaque y, avant la rotation et la mise à l’échelle</translation>
     </message>
     <message>
         <source>Subtracted from every z, before the turn and the scaling</source>
-        <translation>Soustrait de chaque z, avant la rotation et la mise à l&apos;échelle</translation>
+        <translation>Soustrait de chaque z, avant la rotation et la mise à l’échelle</translation>
     </message>
 </context>
 <context>
@@ -2252,7 +2256,7 @@
     </message>
     <message>
         <source>Skydome</source>
-        <translation>Voûte céleste</translation>
+        <translation>Skydome</translation>
     </message>
     <message>
         <source>Light</source>

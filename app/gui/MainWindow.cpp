@@ -324,8 +324,18 @@ void MainWindow::openDemo()
 void MainWindow::computeSkydome()
 {
     const auto ids = m_sceneDock->selectedFragments();
-    if (m_skydome->start(ids) == 0 && !ids.isEmpty())
+    if (m_skydome->start(ids) == 0 && !ids.isEmpty()) {
+        // A missing octree file is named, not taken for one still opening.
+        for (const auto id : ids)
+            if (const auto* f = m_document->fragment(id); f && f->octreeMissing) {
+                report(tr("Could not compute the skydome of %1: its octree %2 does not exist")
+                           .arg(QString::fromStdString(f->name), QDir::toNativeSeparators(QString::fromStdString(f->octreePath.string()))),
+                       true);
+                showSkydomeShading();
+                return;
+            }
         report(tr("The skydome of the selection is being computed already, or its octrees are not open yet"), false);
+    }
     showSkydomeShading(); // the result shows as soon as it comes
 }
 

@@ -431,7 +431,8 @@ TEST(OctreeBuilder, BadArgumentsAndEmptySourcesAreRefused)
             if (withBox) o.box = RootBox{};
             auto empty = buildOctree(memorySource(none), dir / "x.poct", o);
             ASSERT_FALSE(empty.ok());
-            EXPECT_EQ(empty.error().code, ErrorCode::InvalidArgument);
+            // Empty: the workbench says "the file is empty" (it said "these data and settings do not allow it").
+            EXPECT_EQ(empty.error().code, ErrorCode::Empty);
             EXPECT_NE(empty.error().message.find("no points"), std::string::npos) << empty.error().message;
         }
         // Depths 1 and 21 work.

@@ -98,7 +98,7 @@ Status BuildContext::endPass(std::uint64_t points, std::uint64_t skipped)
     m_skipped = skipped;
     if (!m_points) {
         if (points == 0)
-            return Error::at(ErrorCode::InvalidArgument, m_name, "", "no points to build an octree from");
+            return Error::at(ErrorCode::Empty, m_name, "", "no points to build an octree from");
         m_points = points;
     } else if (points != *m_points) {
         return inputChanged("pass " + std::to_string(m_passes) + " read " + std::to_string(points) +

@@ -44,6 +44,8 @@ PaintToolBar::PaintToolBar(const SceneDocument& document, DeveloppeeAnnotator& a
 {
     setObjectName(QStringLiteral("PaintToolBar"));
     m_layer->setObjectName(QStringLiteral("paintLayer"));
+    // As wide as its longest name in the language shown (set after the first show; Greek was cut).
+    m_layer->setSizeAdjustPolicy(QComboBox::AdjustToContents);
     m_class->setObjectName(QStringLiteral("paintClass"));
     m_size->setObjectName(QStringLiteral("paintBrushSize"));
     m_criterion->setObjectName(QStringLiteral("paintWandCriterion"));
