@@ -2502,6 +2502,13 @@
         <source>Import %1</source>
         <translation>Εισαγωγή %1</translation>
     </message>
+    <message numerus="yes">
+        <source>%1: %Ln point(s) with NaN or infinite coordinates skipped</source>
+        <translation>
+            <numerusform>%1: παραλείφθηκε %Ln σημείο με συντεταγμένες NaN ή άπειρες</numerusform>
+            <numerusform>%1: παραλείφθηκαν %Ln σημεία με συντεταγμένες NaN ή άπειρες</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneDocument</name>

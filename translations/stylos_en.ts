@@ -2502,6 +2502,13 @@
         <source>Import %1</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>%1: %Ln point(s) with NaN or infinite coordinates skipped</source>
+        <translation>
+            <numerusform>%1: %Ln point with NaN or infinite coordinates skipped</numerusform>
+            <numerusform>%1: %Ln points with NaN or infinite coordinates skipped</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneDocument</name>

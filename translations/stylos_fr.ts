@@ -2502,6 +2502,13 @@
         <source>Import %1</source>
         <translation>Importer %1</translation>
     </message>
+    <message numerus="yes">
+        <source>%1: %Ln point(s) with NaN or infinite coordinates skipped</source>
+        <translation>
+            <numerusform>%1 : %Ln point aux coordonnées NaN ou infinies ignoré</numerusform>
+            <numerusform>%1 : %Ln points aux coordonnées NaN ou infinies ignorés</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneDocument</name>

@@ -248,6 +248,8 @@ void MainWindow::connectDocument()
         if (const auto* f = m_document->fragment(id))
             report(tr("Imported %1").arg(QString::fromStdString(f->name)), false);
     });
+    connect(m_importer, &widgets::ScanImporter::importNote, this,
+            [this](quint64, const QString& message) { report(message, false); });
     connect(m_importer, &widgets::ScanImporter::importsFinished, this, [this](const QStringList& errors) {
         // Each error is in the log already (importFailed); one box says it all.
         if (errors.isEmpty() || !m_errorDialogs || m_closing) return;

@@ -31,6 +31,7 @@ private Q_SLOTS:
     void importsIntoTheProjectFolderOnceSaved();
     void opensAPoctDirectly();
     void aBrokenFileIsNamedAndNothingIsAdded();
+    void skippedPointsAreSaid();
     void cancelLeavesNothing();
     void dialogsAndDropsUseTheCoreListOfExtensions();
 
@@ -193,6 +194,35 @@ void ScanImporterTest::aBrokenFileIsNamedAndNothingIsAdded()
     QVERIFY(doc.scene().empty());
     QCOMPARE(doc.undoStack()->count(), 0);
     QCOMPARE(stylos::test::filesUnder(cache), QStringList());
+}
+
+void ScanImporterTest::skippedPointsAreSaid()
+{
+    // A scan with non-finite coordinates imports its other points and says how many it skipped, as stylos-cli does
+    // (the workbench said only "Imported").
+    const QString folder = freshFolder("nan");
+    QByteArray text;
+    for (int i = 0; i < 8; ++i)
+        for (int j = 0; j < 8; ++j) text += QByteArray::number(i * 0.01) + ' ' + QByteArray::number(j * 0.01) + " 0\n";
+    text += "nan 0 0\n0 inf 0\n0 0 -inf\n";
+    const QString scan = stylos::test::writeFile(folder, "grid.xyz", text);
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    importer.setBuildOptions(m_options);
+    importer.setCacheDirectory(freshFolder("cache-nan"));
+    QSignalSpy imported(&importer, &ScanImporter::fragmentImported);
+    QSignalSpy notes(&importer, &ScanImporter::importNote);
+    QCOMPARE(importer.importFiles({scan}), 1);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(imported.size(), 1);
+    QCOMPARE(notes.size(), 1);
+    QCOMPARE(notes.at(0).at(0), imported.at(0).at(0));
+    const QString note = notes.at(0).at(1).toString(); // "point(s)": the English plural comes with the translator
+    QVERIFY2(note.startsWith(QStringLiteral("grid.xyz: 3 point")) &&
+                 note.endsWith(QStringLiteral(" with NaN or infinite coordinates skipped")),
+             qPrintable(note));
+    QCOMPARE(doc.octree(imported.at(0).at(0).toULongLong())->description().points, 64u);
 }
 
 void ScanImporterTest::cancelLeavesNothing()

@@ -12,6 +12,9 @@
 #include <QFile>
 #include <QFileInfo>
 
+#include <algorithm>
+#include <climits>
+
 #include <optional>
 
 namespace stylos::widgets {
@@ -22,6 +25,7 @@ namespace {
 struct ImportResult {
     SceneDocument::OctreePtr octree;
     std::optional<core::Error> error;
+    std::uint64_t skippedPoints = 0; ///< non-finite points the reader dropped
 };
 
 bool isPoct(const QString& path)
@@ -106,6 +110,7 @@ int ScanImporter::importFiles(const QStringList& paths)
                         promise.addResult(std::move(result));
                         return;
                     }
+                    result.skippedPoints = built->skippedPoints;
                 }
                 auto opened = core::octree::PackedOctree::open(direct ? in : out);
                 if (progress.isCancelRequested()) return; // the GUI side removes the file
@@ -167,6 +172,10 @@ void ScanImporter::importEnded(const QString& input, const QString& output, cons
         const auto id = m_document.addFragment(std::move(fragment), result.octree,
                                                [file = QFileInfo(input).fileName()] { return tr("Import %1").arg(file); });
         Q_EMIT fragmentImported(id);
+        if (result.skippedPoints > 0) // said, as stylos-cli says it: no point dropped silently
+            Q_EMIT importNote(id, tr("%1: %Ln point(s) with NaN or infinite coordinates skipped", nullptr,
+                                     int(std::min<std::uint64_t>(result.skippedPoints, std::uint64_t(INT_MAX))))
+                                      .arg(QFileInfo(input).fileName()));
     }
     if (m_pending.isEmpty()) Q_EMIT importsFinished(std::exchange(m_errors, {}));
 }

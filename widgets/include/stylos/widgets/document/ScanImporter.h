@@ -73,6 +73,9 @@ public:
 Q_SIGNALS:
     /** @brief A fragment was added (one undo step). */
     void fragmentImported(quint64 id);
+    /** @brief Something the user should know of an import that succeeded (@p message translated, naming the file):
+     *  points skipped for NaN or infinite coordinates. */
+    void importNote(quint64 id, const QString& message);
     /** @brief @p message is translated and names the file and the reason. */
     void importFailed(const QString& path, const QString& message);
     /** @brief Every pending import ended; @p errors holds their messages (empty on full success). */
