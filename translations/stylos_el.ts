@@ -2592,6 +2592,10 @@
         <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
         <translation>Η διάταξη πίνακα που φυλάσσεται στο %1 δεν διαβάστηκε: το έργο ανοίγει χωρίς αυτήν, και το κείμενό της μένει στο αρχείο έως ότου εξαχθεί νέος πίνακας.</translation>
     </message>
+    <message>
+        <source>%1 holds keys this version of Stylos does not read; they are left out and will not be saved: %2</source>
+        <translation>Το %1 περιέχει κλειδιά που αυτή η έκδοση του Stylos δεν διαβάζει· παραλείπονται και δεν θα αποθηκευτούν: %2</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>

@@ -2588,6 +2588,10 @@
         <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 holds keys this version of Stylos does not read; they are left out and will not be saved: %2</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>

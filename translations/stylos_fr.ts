@@ -2588,6 +2588,10 @@
         <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
         <translation>La mise en planche conservée dans %1 n’a pas pu être lue : le projet s’ouvre sans elle, et son texte reste dans le fichier jusqu’à l’export d’une nouvelle planche.</translation>
     </message>
+    <message>
+        <source>%1 holds keys this version of Stylos does not read; they are left out and will not be saved: %2</source>
+        <translation>%1 contient des clés que cette version de Stylos ne lit pas ; elles sont ignorées et ne seront pas enregistrées : %2</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneTreeModel</name>

@@ -392,5 +392,28 @@ TEST(ProjectFileTest, TheImportFrameIsKeptPerFragmentAndDefaultsToZUpMetres)
     EXPECT_EQ(read->scene.fragments().at(0).importFrame.unit, io::LengthUnit::Centimetre);
 }
 
+TEST(ProjectFileTest, KeysThisVersionDoesNotReadAreListed)
+{
+    // A hand edit or a later version's keys: the project opens, and the keys that will not be saved are named.
+    Scene scene;
+    Fragment f;
+    f.name = "drum";
+    f.octreePath = "/p/drum.poct"; // need not exist: it is reported apart (problems)
+    f.guides.push_back({"axis", GuideKind::Axis, {0, 0, 0}, {0, 0, 1}});
+    scene.add(f);
+    auto json = nlohmann::json::parse(ProjectFile::toJson(scene, "/p/a.stylos"));
+    json["mystery"] = true;
+    json["fragments"][0]["frobnicate"] = 42;
+    json["fragments"][0]["guides"][0]["colour"] = "red";
+    const auto loaded = ProjectFile::fromJson(json.dump(), "/p/a.stylos");
+    ASSERT_TRUE(loaded.ok()) << loaded.error().message;
+    EXPECT_EQ(loaded->unknownKeys,
+              (std::vector<std::string>{"mystery", "fragments[0].frobnicate", "fragments[0].guides[0].colour"}));
+    // What this version writes it reads: nothing unknown.
+    const auto clean = ProjectFile::fromJson(ProjectFile::toJson(loaded->scene, "/p/a.stylos"), "/p/a.stylos");
+    ASSERT_TRUE(clean.ok());
+    EXPECT_TRUE(clean->unknownKeys.empty());
+}
+
 } // namespace
 } // namespace stylos::core::scene

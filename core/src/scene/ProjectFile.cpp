@@ -113,8 +113,17 @@ private:
     Result<Pose> readPose(const json* pose, const std::string& key) const;
     Result<Guide> readGuide(const json& value, const std::string& key) const;
 
+    /** Notes the keys of @p object (at @p at) that this version does not read: they are not kept on save. */
+    void noteUnknown(const json& object, const std::string& at, std::initializer_list<const char*> known) const
+    {
+        for (auto it = object.begin(); it != object.end(); ++it)
+            if (std::none_of(known.begin(), known.end(), [&](const char* k) { return it.key() == k; }))
+                m_unknown.push_back(at.empty() ? it.key() : at + "." + it.key());
+    }
+
     std::string m_file;
     std::filesystem::path m_folder;
+    mutable std::vector<std::string> m_unknown;
 };
 
 Result<LoadedProject> SceneReader::read(const json& root)
@@ -139,6 +148,7 @@ Result<LoadedProject> SceneReader::read(const json& root)
     if (!fragments->is_array()) return bad("fragments", "is not an array");
 
     LoadedProject project;
+    noteUnknown(root, "", {"format", "version", "nextId", "nextAssemblyId", "assemblies", "fragments", "legend", "plate"});
     // Version 2: the assemblies, before the fragments that refer to them.
     if (const json* assemblies = versionNumber >= 2 ? member(root, "assemblies") : nullptr) {
         if (!assemblies->is_array()) return bad("assemblies", "is not an array");
@@ -196,6 +206,7 @@ Result<LoadedProject> SceneReader::read(const json& root)
             project.scene.setUnreadPlate(plate->dump());
         }
     }
+    project.unknownKeys = std::move(m_unknown);
     return project;
 }
 
@@ -212,6 +223,7 @@ Result<Pose> SceneReader::readPose(const json* pose, const std::string& key) con
 Result<Assembly> SceneReader::readAssembly(const json& value, const std::string& key) const
 {
     if (!value.is_object()) return bad(key, "is not an object");
+    noteUnknown(value, key, {"id", "name", "pose", "drum", "visible"});
     Assembly a;
     const json* id = member(value, "id");
     if (!id) return bad(key + ".id", "is missing");
@@ -237,6 +249,7 @@ Result<Assembly> SceneReader::readAssembly(const json& value, const std::string&
 Result<Fragment> SceneReader::readFragment(const json& value, const std::string& key) const
 {
     if (!value.is_object()) return bad(key, "is not an object");
+    noteUnknown(value, key, {"id", "name", "octree", "source", "pose", "colour", "visible", "guides", "annotations", "assembly", "up", "unit", "offset"});
     Fragment f;
 
     const json* id = member(value, "id");
@@ -311,6 +324,7 @@ Result<Fragment> SceneReader::readFragment(const json& value, const std::string&
 Result<Guide> SceneReader::readGuide(const json& value, const std::string& key) const
 {
     if (!value.is_object()) return bad(key, "is not an object");
+    noteUnknown(value, key, {"name", "kind", "origin", "direction"});
     Guide g;
     const json* name = member(value, "name");
     if (!name || !name->is_string()) return bad(key + ".name", "is missing or not a string");

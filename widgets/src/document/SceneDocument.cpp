@@ -555,6 +555,13 @@ bool SceneDocument::open(const QString& path, QString* error)
                            "text stays in the file until a new plate is exported.")
                                 .arg(QFileInfo(path).fileName()) +
                             QLatin1Char('\n') + QString::fromStdString(loaded->plateProblem->message);
+    if (!loaded->unknownKeys.empty()) {
+        QStringList keys;
+        for (const std::string& key : loaded->unknownKeys) keys << QString::fromStdString(key);
+        m_loadErrors << tr("%1 holds keys this version of Stylos does not read; they are left out and will not be "
+                           "saved: %2")
+                            .arg(QFileInfo(path).fileName(), keys.join(QStringLiteral(", ")));
+    }
     std::size_t problem = 0;
     for (const Fragment& f : m_scene.fragments()) {
         if (f.octreeMissing && problem < loaded->problems.size())

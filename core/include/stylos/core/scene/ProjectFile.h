@@ -64,6 +64,9 @@ struct LoadedProject {
     /** The "plate" section could not be read (named key and problem): the project opens without a plate
      *  and keeps the section's text (Scene::unreadPlate). */
     std::optional<Error> plateProblem;
+    /** Keys this version does not read ("mystery", "fragments[0].frobnicate"), in file order: a later version's or a
+     *  hand edit's; they are not written back on save. */
+    std::vector<std::string> unknownKeys;
 };
 
 class ProjectFile {
