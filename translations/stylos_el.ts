@@ -1826,6 +1826,14 @@
         <source>offset %1, %2, %3</source>
         <translation>μετατόπιση %1, %2, %3</translation>
     </message>
+    <message>
+        <source>Size</source>
+        <translation>Διαστάσεις</translation>
+    </message>
+    <message>
+        <source>Extent of the fragment&apos;s leaf cells along its own x, y and z axes (its scan&apos;s frame, z up), whatever its pose</source>
+        <translation>Έκταση των φύλλων του θραύσματος κατά μήκος των δικών του αξόνων x, y και z (το σύστημα της σάρωσής του, z προς τα πάνω), όποια κι αν είναι η θέση του</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>

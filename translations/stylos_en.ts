@@ -1826,6 +1826,14 @@
         <source>offset %1, %2, %3</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Size</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Extent of the fragment&apos;s leaf cells along its own x, y and z axes (its scan&apos;s frame, z up), whatever its pose</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>

@@ -1826,6 +1826,14 @@
         <source>offset %1, %2, %3</source>
         <translation>décalage %1, %2, %3</translation>
     </message>
+    <message>
+        <source>Size</source>
+        <translation>Dimensions</translation>
+    </message>
+    <message>
+        <source>Extent of the fragment&apos;s leaf cells along its own x, y and z axes (its scan&apos;s frame, z up), whatever its pose</source>
+        <translation>Étendue des cellules feuilles du fragment le long de ses propres axes x, y et z (le repère de son relevé, z vers le haut), quelle que soit sa pose</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::GuideFitJob</name>

@@ -1,10 +1,17 @@
 // core::view guide geometry: the docking drum's axis and flute pitch through its pose, each guide as a segment
 // over the fragment's extent, and the occupied bounds of an octree.
+#include "PoctTestSupport.h"
+#include "ReferenceOctree.h"
+#include "TestSupport.h"
+
+#include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/view/GuideGeometry.h"
 
 #include <gtest/gtest.h>
 
 #include <numbers>
+#include <random>
+#include <vector>
 
 using namespace stylos::core;
 
@@ -48,4 +55,69 @@ TEST(GuideGeometry, SegmentsSpanTheFragment)
     EXPECT_EQ(segments[1].kind, scene::GuideKind::Groove);
     EXPECT_EQ(segments[1].a, Eigen::Vector3d(1, 1.5, 2.25));
     EXPECT_TRUE(view::guideSegments(drum, Eigen::AlignedBox3d()).empty());
+}
+
+namespace {
+
+/** Every cell of @p level, one by one: what occupiedBounds() finds by its descent. */
+Eigen::AlignedBox3d boundsOfEveryCell(const octree::PackedOctree& octree, int level)
+{
+    Eigen::AlignedBox3d box;
+    octree.forEachCell(level, [&box](const octree::CellView& cell) {
+        const Eigen::Vector3d c(cell.centre[0], cell.centre[1], cell.centre[2]);
+        box.extend(c - Eigen::Vector3d::Constant(cell.size / 2));
+        box.extend(c + Eigen::Vector3d::Constant(cell.size / 2));
+        return true;
+    });
+    return box;
+}
+
+} // namespace
+
+TEST(GuideGeometry, OccupiedBoundsOfKnownLeaves)
+{
+    // Root (100, 200, 300), edge 4, depth 2: leaves (0,0,0), (1,0,0), (2,2,2), (3,2,2) of edge 1.
+    const std::vector<double> p{100.5, 200.5, 300.5, 101.5, 200.5, 300.5, 102.5, 202.5, 302.5, 103.5, 202.5, 302.5};
+    const std::vector<float> n{0, 0, 1, 1, 0, 0, 0, 1, 0, 0, 0, -1};
+    const stylos::test::ReferenceOctree reference(p, n, {}, 2, octree::NormalCodeKind::Octahedral16,
+                                                  octree::RootBox{{100, 200, 300}, 4.0});
+    stylos::test::TempDir dir;
+    const auto tree = stylos::test::pack(reference, dir);
+    ASSERT_NE(tree, nullptr);
+    const Eigen::AlignedBox3d leaves = view::occupiedBounds(*tree, 2);
+    EXPECT_EQ(leaves.min(), Eigen::Vector3d(100, 200, 300));
+    EXPECT_EQ(leaves.max(), Eigen::Vector3d(104, 203, 303));
+    const Eigen::AlignedBox3d halves = view::occupiedBounds(*tree, 1); // cells (0,0,0) and (1,1,1) of edge 2
+    EXPECT_EQ(halves.min(), Eigen::Vector3d(100, 200, 300));
+    EXPECT_EQ(halves.max(), Eigen::Vector3d(104, 204, 304));
+    EXPECT_EQ(view::occupiedBounds(*tree, 9).max(), leaves.max()); // clamped to the depth
+    EXPECT_EQ(view::occupiedBounds(*tree, 0).max(), Eigen::Vector3d(104, 204, 304));
+}
+
+TEST(GuideGeometry, OccupiedBoundsAgreeWithEveryCellAtEveryLevel)
+{
+    // A scattered cloud (a lumpy shell and stray points), depth 9: the descent against a walk over every cell.
+    std::mt19937 random(5);
+    std::normal_distribution<double> gauss(0.0, 1.0);
+    std::uniform_real_distribution<double> uniform(-0.3, 0.7);
+    std::vector<double> p;
+    for (int i = 0; i < 3000; ++i) {
+        Eigen::Vector3d v(gauss(random), gauss(random), 0.4 * gauss(random));
+        v = v.normalized() * (0.2 + 0.01 * gauss(random));
+        if (i % 100 == 0) v = Eigen::Vector3d(uniform(random), uniform(random), uniform(random));
+        p.insert(p.end(), {v.x() + 3.0, v.y() - 1.0, v.z() + 0.5});
+    }
+    const std::vector<float> n(p.size(), 0.57735f);
+    // The root box off the cloud's centre: the cloud's low and high cells are not mirror images.
+    const stylos::test::ReferenceOctree reference(p, n, {}, 9, octree::NormalCodeKind::Octahedral16,
+                                                  octree::RootBox{{2.6, -1.35, 0.05}, 1.5});
+    stylos::test::TempDir dir;
+    const auto tree = stylos::test::pack(reference, dir);
+    ASSERT_NE(tree, nullptr);
+    for (int level = 0; level <= 9; ++level) {
+        const Eigen::AlignedBox3d expected = boundsOfEveryCell(*tree, level);
+        const Eigen::AlignedBox3d found = view::occupiedBounds(*tree, level);
+        EXPECT_EQ(found.min(), expected.min()) << "level " << level;
+        EXPECT_EQ(found.max(), expected.max()) << "level " << level;
+    }
 }

@@ -157,6 +157,7 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     properties.show();
     QVERIFY(!properties.nameEdit()->isEnabled());
     QCOMPARE(properties.pointsLabel()->text(), QString("–"));
+    QCOMPARE(properties.sizeLabel()->text(), QString("–"));
 
     properties.setFragment(id);
     QVERIFY(properties.nameEdit()->isEnabled());
@@ -170,6 +171,19 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     QCOMPARE(properties.totalCellsLabel()->text(), locale.toString(qulonglong(m_octree->totalCells())));
     QCOMPARE(properties.depthLabel()->text(), QString("5"));
     QCOMPARE(properties.fileLabel()->text(), m_octreePath);
+    // The size: the leaves' extent along the fragment's own axes, in millimetres, whatever the pose (here a
+    // quarter turn): the extent of every leaf cell, walked one by one.
+    Eigen::AlignedBox3d leaves;
+    m_octree->forEachCell(5, [&leaves](const stylos::core::octree::CellView& cell) {
+        for (int corner = 0; corner < 2; ++corner)
+            leaves.extend(Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]) +
+                          Eigen::Vector3d::Constant((corner - 0.5) * cell.size));
+        return true;
+    });
+    const auto mm = [&locale](double metres) { return locale.toString(metres * 1000.0, 'f', 1); };
+    const QString size = QString("%1 × %2 × %3 mm").arg(mm(leaves.sizes().x()), mm(leaves.sizes().y()), mm(leaves.sizes().z()));
+    QCOMPARE(properties.sizeLabel()->text(), size);
+    QVERIFY(leaves.sizes().maxCoeff() > 0.05 && leaves.sizes().maxCoeff() < 1.0);
 
     // Editing the translation's z keeps the rotation and the other components bit for bit.
     const int before = doc.undoStack()->count();
@@ -188,6 +202,7 @@ void SceneTreeModelTest::propertiesShowAndEditTheFragment()
     QVERIFY(centre.norm() > 0.01); // so the translation had to change
     QVERIFY(angles.translation != (std::array<double, 3>{1.25, -2.5, 4.5}));
     QCOMPARE(properties.poseSpin(0)->value(), std::round(angles.translation[0] * 1e4) / 1e4); // and shows
+    QCOMPARE(properties.sizeLabel()->text(), size); // turned, the same size
 
     properties.nameEdit()->setText("Drum 1");
     QMetaObject::invokeMethod(properties.nameEdit(), "editingFinished");

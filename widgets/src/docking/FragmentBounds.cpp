@@ -13,7 +13,7 @@ Eigen::AlignedBox3d FragmentBounds::of(const SceneDocument& document, SceneDocum
     }
     auto it = m_cache.find(id);
     if (it == m_cache.end() || it->second.octree != octree)
-        it = m_cache.insert_or_assign(id, Entry{octree, core::view::occupiedBounds(*octree)}).first;
+        it = m_cache.insert_or_assign(id, Entry{octree, core::view::occupiedBounds(*octree, m_level)}).first;
     return it->second.bounds;
 }
 

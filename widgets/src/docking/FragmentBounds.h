@@ -1,8 +1,8 @@
 #pragma once
 /** @file
- * @brief The extent of each fragment in its own frame (core::view::occupiedBounds of its opened octree at a
- *        coarse level), cached per octree so that a pose change costs nothing. For the gizmo's centre and the
- *        guides' lengths. GUI thread only.
+ * @brief The extent of each fragment in its own frame (core::view::occupiedBounds of its opened octree, at a
+ *        coarse level by default), cached per octree so that a pose change costs nothing. For the gizmo's centre,
+ *        the guides' lengths and the Properties' size (at the leaves). GUI thread only.
  */
 #include "stylos/widgets/document/SceneDocument.h"
 
@@ -14,6 +14,9 @@ namespace stylos::widgets {
 
 class FragmentBounds {
 public:
+    /** @brief Bounds of the cells of @p level (clamped to each octree's depth: a large value gives the leaves). */
+    explicit FragmentBounds(int level = 5) : m_level(level) {}
+
     /** @brief The bounds of @p id's octree in its own frame; empty while it has none. */
     Eigen::AlignedBox3d of(const SceneDocument& document, SceneDocument::FragmentId id);
 
@@ -22,6 +25,7 @@ private:
         SceneDocument::OctreePtr octree; ///< kept, so that its address is not reused
         Eigen::AlignedBox3d bounds;
     };
+    int m_level;
     std::map<SceneDocument::FragmentId, Entry> m_cache;
 };
 

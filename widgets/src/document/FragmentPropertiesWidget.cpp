@@ -5,6 +5,7 @@
 #include "stylos/core/view/GuideGeometry.h"
 #include "stylos/widgets/document/SceneDocument.h"
 
+#include "docking/FragmentBounds.h"
 #include "document/NumberSpinBox.h"
 
 #include <QCheckBox>
@@ -18,6 +19,7 @@
 #include <QPushButton>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 
 namespace stylos::widgets {
@@ -46,19 +48,36 @@ QDoubleSpinBox* makeSpin(QWidget* parent, bool angle)
     return spin;
 }
 
+/** "x × y × z mm" (one decimal) for @p size in metres, "x × y × z m" (three decimals) from 10 m. */
+QString sizeText(const Eigen::Vector3d& size, const QLocale& locale)
+{
+    if (!(size.minCoeff() >= 0.0)) return QStringLiteral("–"); // an octree without cells
+    const bool metres = size.maxCoeff() >= 10.0;
+    const double scale = metres ? 1.0 : 1000.0;
+    const int decimals = metres ? 3 : 1;
+    const auto number = [&](double v) { return locale.toString(v * scale, 'f', decimals); };
+    return QStringLiteral("%1 × %2 × %3 %4")
+        .arg(number(size.x()), number(size.y()), number(size.z()),
+             metres ? QStringLiteral("m") : QStringLiteral("mm"));
+}
+
 } // namespace
 
 FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWidget* parent)
     : QWidget(parent), m_document(document), m_form(new QFormLayout(this)), m_name(new QLineEdit(this)),
-      m_visible(new QCheckBox(this)), m_colour(new QPushButton(this)), m_points(new QLabel(this)),
-      m_leafCells(new QLabel(this)), m_totalCells(new QLabel(this)), m_depth(new QLabel(this)),
-      m_imported(new QLabel(this)), m_file(new QLabel(this))
+      m_visible(new QCheckBox(this)), m_colour(new QPushButton(this)), m_size(new QLabel(this)),
+      m_points(new QLabel(this)), m_leafCells(new QLabel(this)), m_totalCells(new QLabel(this)),
+      m_depth(new QLabel(this)), m_imported(new QLabel(this)), m_file(new QLabel(this)),
+      m_centres(std::make_unique<FragmentBounds>()),
+      m_leaves(std::make_unique<FragmentBounds>(std::numeric_limits<int>::max()))
 {
     setObjectName(QStringLiteral("FragmentPropertiesWidget"));
     m_name->setObjectName(QStringLiteral("fragmentName"));
     m_visible->setObjectName(QStringLiteral("fragmentVisible"));
     m_colour->setObjectName(QStringLiteral("fragmentColour"));
     m_imported->setObjectName(QStringLiteral("fragmentImported"));
+    m_size->setObjectName(QStringLiteral("fragmentSize"));
+    m_size->setTextInteractionFlags(Qt::TextSelectableByMouse);
     m_imported->setWordWrap(true);
     m_file->setWordWrap(true);
     m_file->setTextInteractionFlags(Qt::TextSelectableByMouse);
@@ -67,9 +86,9 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
         m_pose[static_cast<std::size_t>(i)]->setObjectName(QStringLiteral("fragmentPose%1").arg(i));
         connect(m_pose[static_cast<std::size_t>(i)], &QDoubleSpinBox::valueChanged, this, [this, i] { applyPose(i); });
     }
-    QWidget* fields[RowCount] = {m_name,     m_visible,   m_colour,    m_pose[0],     m_pose[1],
-                                 m_pose[2],  m_pose[3],   m_pose[4],   m_pose[5],     m_points,
-                                 m_leafCells, m_totalCells, m_depth,  m_imported, m_file};
+    QWidget* fields[RowCount] = {m_name,     m_visible,  m_colour,    m_pose[0], m_pose[1], m_pose[2],
+                                 m_pose[3],  m_pose[4],  m_pose[5],   m_size,    m_points,  m_leafCells,
+                                 m_totalCells, m_depth, m_imported, m_file};
     // Labels beside their fields while the dock is wide enough, above them when it is not (the longer
     // French and Greek labels): each field keeps its full width.
     m_form->setRowWrapPolicy(QFormLayout::WrapLongRows);
@@ -99,6 +118,8 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
     refresh();
 }
 
+FragmentPropertiesWidget::~FragmentPropertiesWidget() = default;
+
 void FragmentPropertiesWidget::setFragment(core::scene::FragmentId id)
 {
     m_id = m_document.fragment(id) ? id : core::scene::NoFragment;
@@ -115,13 +136,15 @@ void FragmentPropertiesWidget::retranslateUi()
 {
     const QString labels[RowCount] = {tr("Name"),        tr("Visible"),    tr("Colour"),      tr("X"),
                               tr("Y"),           tr("Z"),          tr("Rotation X"),  tr("Rotation Y"),
-                              tr("Rotation Z"),  tr("Points"),     tr("Leaf cells"),  tr("Total cells"),
-                              tr("Depth"),       tr("Imported as"), tr("File")};
+                              tr("Rotation Z"),  tr("Size"),       tr("Points"),      tr("Leaf cells"),
+                              tr("Total cells"), tr("Depth"),      tr("Imported as"), tr("File")};
     for (std::size_t row = 0; row < RowCount; ++row) m_labels[row]->setText(labels[row]);
     m_visible->setText(tr("Shown in the 3D view"));
     m_colour->setToolTip(tr("Choose the fragment's display colour"));
     m_pose[0]->setToolTip(tr("Translation along the scene's x axis, in metres"));
     m_pose[3]->setToolTip(tr("Rotation about the x axis, applied first, in degrees"));
+    m_size->setToolTip(tr("Extent of the fragment's leaf cells along its own x, y and z axes (its scan's frame, "
+                          "z up), whatever its pose"));
     refresh();
 }
 
@@ -141,7 +164,8 @@ void FragmentPropertiesWidget::refresh()
         m_colour->setText(QString());
         m_colour->setStyleSheet(QString());
         for (QDoubleSpinBox* spin : m_pose) spin->setValue(0.0);
-        for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth, m_imported, m_file}) label->setText(none);
+        for (QLabel* label : {m_size, m_points, m_leafCells, m_totalCells, m_depth, m_imported, m_file})
+            label->setText(none);
         m_updating = false;
         return;
     }
@@ -162,9 +186,10 @@ void FragmentPropertiesWidget::refresh()
         m_leafCells->setText(locale.toString(static_cast<qulonglong>(octree->cellCount(octree->depth()))));
         m_totalCells->setText(locale.toString(static_cast<qulonglong>(octree->totalCells())));
         m_depth->setText(locale.toString(octree->depth()));
+        m_size->setText(sizeText(m_leaves->of(m_document, m_id).sizes(), locale));
     } else {
         const QString state = f->octreeMissing ? tr("missing") : tr("opening…");
-        for (QLabel* label : {m_points, m_leafCells, m_totalCells, m_depth}) label->setText(state);
+        for (QLabel* label : {m_size, m_points, m_leafCells, m_totalCells, m_depth}) label->setText(state);
     }
     // The frame the scan was read in (Z up, metres from the file's up axis and unit), as the project keeps it.
     const core::io::ImportFrame& frame = f->importFrame;
@@ -213,9 +238,8 @@ void FragmentPropertiesWidget::applyPose(int component)
         pose = turned;
         // About the fragment's centre, as the gizmo turns it, not about its file frame's origin: a scan in site
         // coordinates lies kilometres from that origin, and 1° swung it tens of metres away. The translation follows.
-        const auto octree = m_document.octree(m_id);
-        if (!octree) return; // not open yet: no centre to turn about (the fields are off then)
-        const Eigen::AlignedBox3d box = core::view::occupiedBounds(*octree);
+        if (!m_document.octree(m_id)) return; // not open yet: no centre to turn about (the fields are off then)
+        const Eigen::AlignedBox3d box = m_centres->of(m_document, m_id);
         if (!box.isEmpty()) {
             using core::scene::apply;
             const Eigen::Vector3d centre = box.center();

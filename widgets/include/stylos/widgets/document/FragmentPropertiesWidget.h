@@ -1,8 +1,9 @@
 #pragma once
 /** @file
  * @brief The Properties dock's contents for one fragment: its name, visibility and colour, its pose as a
- *        translation (metres) and three rotation angles (degrees, Rz·Ry·Rx, see core::scene::Pose), and
- *        what its octree holds (points, leaf and total cells, depth, file). Every edit goes through the
+ *        translation (metres) and three rotation angles (degrees, Rz·Ry·Rx, see core::scene::Pose), its size
+ *        (the extent of its leaves along its own axes) and what its octree holds (points, leaf and total cells,
+ *        depth, file). Every edit goes through the
  *        document's undo stack; the fields follow the document (undo, other views). GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
@@ -10,6 +11,7 @@
 #include <QWidget>
 
 #include <array>
+#include <memory>
 
 class QCheckBox;
 class QDoubleSpinBox;
@@ -20,6 +22,7 @@ class QPushButton;
 
 namespace stylos::widgets {
 
+class FragmentBounds;
 class SceneDocument;
 
 class FragmentPropertiesWidget : public QWidget {
@@ -28,6 +31,7 @@ class FragmentPropertiesWidget : public QWidget {
 public:
     /** Edits fragments of @p document (not owned; it must outlive the widget). */
     explicit FragmentPropertiesWidget(SceneDocument& document, QWidget* parent = nullptr);
+    ~FragmentPropertiesWidget() override;
 
     /** @brief Shows fragment @p id (NoFragment: nothing, every field disabled). */
     void setFragment(core::scene::FragmentId id);
@@ -39,6 +43,8 @@ public:
     QPushButton* colourButton() const { return m_colour; }
     /** @brief Translation x, y, z in metres (0..2) and rotation about x, y, z in degrees (3..5). */
     QDoubleSpinBox* poseSpin(int i) const { return m_pose[static_cast<std::size_t>(i)]; }
+    /** @brief "x × y × z" of the leaves' extent in the fragment's own frame (mm; m from 10 m). */
+    QLabel* sizeLabel() const { return m_size; }
     QLabel* pointsLabel() const { return m_points; }
     QLabel* leafCellsLabel() const { return m_leafCells; }
     QLabel* totalCellsLabel() const { return m_totalCells; }
@@ -56,7 +62,7 @@ private:
     void applyPose(int component);
     void chooseColour();
 
-    static constexpr std::size_t RowCount = 15;
+    static constexpr std::size_t RowCount = 16;
 
     SceneDocument& m_document;
     core::scene::FragmentId m_id = core::scene::NoFragment;
@@ -66,6 +72,7 @@ private:
     QCheckBox* m_visible;
     QPushButton* m_colour;
     std::array<QDoubleSpinBox*, 6> m_pose{};
+    QLabel* m_size;
     QLabel* m_points;
     QLabel* m_leafCells;
     QLabel* m_totalCells;
@@ -73,6 +80,8 @@ private:
     QLabel* m_imported;  ///< the import frame: up axis, unit (and offset)
     QLabel* m_file;
     std::array<QLabel*, RowCount> m_labels{};  ///< the form's row labels
+    std::unique_ptr<FragmentBounds> m_centres; ///< coarse bounds: the centre a typed rotation turns about
+    std::unique_ptr<FragmentBounds> m_leaves;  ///< the leaves' bounds: the size shown
 };
 
 } // namespace stylos::widgets
