@@ -29,6 +29,7 @@ private Q_SLOTS:
     void initTestCase();
     void importsTwoScansAtOnce();
     void importsIntoTheProjectFolderOnceSaved();
+    void anUndoneImportLeavesNoOctreeOnceTheProjectCloses();
     void opensAPoctDirectly();
     void aBrokenFileIsNamedAndNothingIsAdded();
     void skippedPointsAreSaid();
@@ -129,6 +130,65 @@ void ScanImporterTest::importsIntoTheProjectFolderOnceSaved()
     QVERIFY(doc.save(&error));
     QCOMPARE(stylos::test::filesUnder(project), (QStringList{"fragment.poct", "site.stylos"}));
     QCOMPARE(stylos::test::filesUnder(importer.cacheDirectory()), QStringList());
+}
+
+void ScanImporterTest::anUndoneImportLeavesNoOctreeOnceTheProjectCloses()
+{
+    TaskManager tasks;
+    const QString project = freshFolder("undone");
+    const QString kept = freshFolder("undone-kept");
+    QString error;
+    {
+        SceneDocument doc(tasks);
+        ScanImporter importer(doc, tasks);
+        importer.setBuildOptions(m_options);
+        importer.setCacheDirectory(freshFolder("cache-undone"));
+        QVERIFY(doc.saveAs(project + "/site.stylos", &error));
+        // Imported, undone: the file stays while the import can be redone...
+        QCOMPARE(importer.importFiles({m_fragmentScan}), 1);
+        QVERIFY(tasks.waitForIdle(30000));
+        QCOMPARE(doc.scene().size(), 1u);
+        doc.undoStack()->undo();
+        QCOMPARE(doc.scene().size(), 0u);
+        QCOMPARE(stylos::test::filesUnder(project), (QStringList{"fragment.poct", "site.stylos"}));
+        doc.undoStack()->redo();
+        QVERIFY(doc.octree(doc.scene().fragments()[0].id));
+        doc.undoStack()->undo();
+        // ... and goes when the project closes (a new one here).
+        doc.newProject();
+        QCOMPARE(stylos::test::filesUnder(project), QStringList{"site.stylos"});
+
+        // Imported and saved: a project file references it, it stays; so does a file the project only opened.
+        QVERIFY(doc.saveAs(kept + "/site.stylos", &error));
+        QCOMPARE(importer.importFiles({m_fragmentScan, m_drumScan}), 2);
+        QVERIFY(tasks.waitForIdle(60000));
+        QCOMPARE(doc.scene().size(), 2u);
+        QVERIFY(doc.save(&error));
+        doc.newProject();
+        QCOMPARE(stylos::test::filesUnder(kept), (QStringList{"drum.poct", "fragment.poct", "site.stylos"}));
+        QVERIFY(doc.open(kept + "/site.stylos", &error));
+        QVERIFY(tasks.waitForIdle(30000));
+        doc.newProject();
+        QCOMPARE(stylos::test::filesUnder(kept), (QStringList{"drum.poct", "fragment.poct", "site.stylos"}));
+
+        // Saved, then the import undone and saved again: no project file references it any more.
+        QVERIFY(doc.open(kept + "/site.stylos", &error));
+        QVERIFY(tasks.waitForIdle(30000));
+        QCOMPARE(importer.importFiles({m_fragmentScan}), 1);
+        QVERIFY(tasks.waitForIdle(30000));
+        QVERIFY(doc.save(&error));
+        QCOMPARE(stylos::test::filesUnder(kept),
+                 (QStringList{"drum.poct", "fragment-2.poct", "fragment.poct", "site.stylos"}));
+        doc.undoStack()->undo();
+        QVERIFY(doc.save(&error));
+        // Imported into the unsaved changes and undone: gone when the document goes, as at a close.
+        QCOMPARE(importer.importFiles({m_drumScan}), 1);
+        QVERIFY(tasks.waitForIdle(30000));
+        doc.undoStack()->undo();
+        QCOMPARE(stylos::test::filesUnder(kept),
+                 (QStringList{"drum-2.poct", "drum.poct", "fragment-2.poct", "fragment.poct", "site.stylos"}));
+    }
+    QCOMPARE(stylos::test::filesUnder(kept), (QStringList{"drum.poct", "fragment.poct", "site.stylos"}));
 }
 
 void ScanImporterTest::opensAPoctDirectly()

@@ -171,6 +171,7 @@ void ScanImporter::importEnded(const QString& input, const QString& output, cons
         fragment.pose = placement(*result.octree);
         const auto id = m_document.addFragment(std::move(fragment), result.octree,
                                                [file = QFileInfo(input).fileName()] { return tr("Import %1").arg(file); });
+        if (!output.isEmpty()) m_document.noteImportedOctree(output); // removed with the project if no save keeps it
         Q_EMIT fragmentImported(id);
         if (result.skippedPoints > 0) // said, as stylos-cli says it: no point dropped silently
             Q_EMIT importNote(id, tr("%1: %Ln point(s) with NaN or infinite coordinates skipped", nullptr,

@@ -18,10 +18,12 @@
 #include "document/commands/SetFragmentVisibleCommand.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
+#include <QFile>
 #include <QFileInfo>
 #include <QStandardPaths>
 
 #include <algorithm>
+#include <utility>
 #include <set>
 #include <QUndoStack>
 
@@ -59,6 +61,28 @@ SceneDocument::~SceneDocument()
     // Commands refer to the document: delete them while it is whole.
     delete m_undo;
     m_undo = nullptr;
+    removeUnreferencedImports();
+}
+
+void SceneDocument::noteImportedOctree(const QString& path)
+{
+    m_importedOctrees << QFileInfo(path).absoluteFilePath();
+}
+
+void SceneDocument::noteProjectOctrees(const QString& path)
+{
+    QStringList octrees;
+    for (const Fragment& f : m_scene.fragments()) octrees << QFileInfo(qtPath(f.octreePath)).absoluteFilePath();
+    m_projectFiles[QFileInfo(path).absoluteFilePath()] = octrees;
+}
+
+void SceneDocument::removeUnreferencedImports()
+{
+    for (const QString& file : std::exchange(m_importedOctrees, {})) {
+        const bool referenced = std::any_of(m_projectFiles.begin(), m_projectFiles.end(),
+                                            [&file](const auto& project) { return project.second.contains(file); });
+        if (!referenced) QFile::remove(file);
+    }
 }
 
 SceneDocument::OctreePtr SceneDocument::octree(FragmentId id) const
@@ -513,9 +537,15 @@ bool SceneDocument::gatherOctrees(const QString& path, OctreeCopies copies, QStr
     const core::scene::GatherPlan plan = octreeGatherPlan(path);
     const auto gathered = core::scene::gather(m_scene, plan, copies == OctreeCopies::All);
     // The fragments repointed so far stay repointed (their copies are whole), even after a failure.
-    for (const core::scene::OctreeTransfer& t : plan.transfers)
+    for (const core::scene::OctreeTransfer& t : plan.transfers) {
+        bool copied = false;
         for (FragmentId id : t.fragments)
-            if (const Fragment* f = m_scene.find(id); f && f->octreePath == t.to) Q_EMIT fragmentChanged(id);
+            if (const Fragment* f = m_scene.find(id); f && f->octreePath == t.to) {
+                copied = true;
+                Q_EMIT fragmentChanged(id);
+            }
+        if (copied) noteImportedOctree(qtPath(t.to)); // a copy this project made: as an import's octree
+    }
     if (gathered) return true;
     if (error)
         *error = tr("Could not copy the octrees into the project's folder: %1.").arg(ErrorText::reason(gathered.error().code)) +
@@ -536,6 +566,7 @@ bool SceneDocument::saveAs(const QString& path, QString* error, OctreeCopies cop
         return false;
     }
     setProjectPath(absolute);
+    noteProjectOctrees(absolute);
     m_undo->setClean();
     return true;
 }
@@ -550,6 +581,7 @@ bool SceneDocument::open(const QString& path, QString* error)
     }
     resetScene(std::move(loaded->scene));
     setProjectPath(absolute);
+    noteProjectOctrees(absolute);
     if (loaded->plateProblem)
         m_loadErrors << tr("The plate layout kept in %1 could not be read: the project opens without it, and its "
                            "text stays in the file until a new plate is exported.")
@@ -621,6 +653,7 @@ void SceneDocument::resetScene(core::scene::Scene scene)
     cancelLoads();
     Q_EMIT sceneAboutToBeReset();
     m_undo->clear();
+    removeUnreferencedImports(); // the project closing: its imports no project file keeps
     m_scene = std::move(scene);
     m_octrees.clear();
     m_developpees.clear();

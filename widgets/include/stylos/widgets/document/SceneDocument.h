@@ -211,6 +211,14 @@ public:
     /** @brief The user cache's "octrees" folder: the default octreeCacheFolder(). */
     static QString defaultOctreeCacheFolder();
     /**
+     * @brief Notes that an import built the octree @p path for this project (ScanImporter; saving notes the copies
+     *        it makes in the project's folder too). When the project is
+     *        closed (a new or another project opened, or the document destroyed), each such file that no project
+     *        file saved or opened since is left referencing is removed: an import undone, or discarded unsaved,
+     *        leaves no octree behind in the project's folder or the cache.
+     */
+    void noteImportedOctree(const QString& path);
+    /**
      * @brief Replaces the project by the one in @p path and opens each fragment's octree in the
      *        background; loadingFinished() follows with the problems met. On failure (unreadable or
      *        malformed project) returns false with @p error and keeps the current project.
@@ -287,6 +295,10 @@ private:
     void loadLabels(FragmentId id);
 
     void resetScene(core::scene::Scene scene);
+    /** Records the octrees the project file @p path references now (after a save or an open). */
+    void noteProjectOctrees(const QString& path);
+    /** Removes the imported octrees no project file noted references (noteImportedOctree()). */
+    void removeUnreferencedImports();
     void setProjectPath(const QString& path);
     void startLoad(FragmentId id);
     void loadEnded(FragmentId id, QFutureWatcherBase* watcher);
@@ -304,6 +316,8 @@ private:
     std::map<FragmentId, QPointer<QFutureWatcherBase>> m_loads;  ///< octrees being opened
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
     QString m_path;
+    QStringList m_importedOctrees;                 ///< built by imports since the project was opened or made
+    std::map<QString, QStringList> m_projectFiles; ///< per project file saved or opened: the octrees it references
     FragmentId m_dockingDrum = core::scene::NoFragment;
     LabelStore* m_labels;
     quint64 m_lastStroke = 0;
