@@ -1,6 +1,7 @@
 #include "DisplaySettingsWidget.h"
 
 #include "stylos/widgets/util/WheelGuard.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QCheckBox>
@@ -33,7 +34,7 @@ constexpr int MaxLevel = 21;                                 ///< the octree's d
 DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, QWidget* parent)
     : QWidget(parent), m_viewport(viewport), m_form(new QFormLayout(this)), m_shading(new QComboBox(this)),
       m_layer(new QComboBox(this)),
-      m_splat(new QDoubleSpinBox(this)), m_budget(new QDoubleSpinBox(this)), m_detail(new QComboBox(this)),
+      m_splat(new widgets::NumberSpinBox(this)), m_budget(new widgets::NumberSpinBox(this)), m_detail(new QComboBox(this)),
       m_level(new QSlider(Qt::Horizontal, this)), m_levelValue(new QLabel(this)), m_gapFill(new QCheckBox(this))
 {
     setObjectName(QStringLiteral("displaySettings"));

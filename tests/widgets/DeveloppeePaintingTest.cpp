@@ -365,6 +365,22 @@ void DeveloppeePaintingTest::toolBarSetsTheView()
     QVERIFY(size && layer && cls);
     size->setValue(25.0);
     QCOMPARE(m_view->brushSize(), 0.025);
+    // Typed: scientific notation is read; a value out of range is not applied (the plain box made 600 into 60).
+    m_view->setTool(PaintTool::Brush); // the size is off for the tools without one
+    bar.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&bar));
+    QVERIFY(size->isEnabled());
+    const auto type = [size](const QString& text) {
+        size->setFocus();
+        size->selectAll();
+        QTest::keyClicks(size, text);
+        QTest::keyClick(size, Qt::Key_Return);
+    };
+    type(QStringLiteral("1.5e1")); // the plain box read 1.51
+    QCOMPARE(m_view->brushSize(), 0.015);
+    type(QStringLiteral("600"));
+    QCOMPARE(m_view->brushSize(), 0.015);
+    size->setValue(25.0);
     QCOMPARE(cls->currentData().toInt(), 2);
     QCOMPARE(cls->count(), 4);
     layer->setCurrentIndex(layer->findData(int(AnnotationLayer::Toolmark)));

@@ -360,6 +360,22 @@ void DeveloppeeViewTest::dockComputeCarriesTheBarSettings()
     QCOMPARE(s.shading, DeveloppeeShading::Skydome);
     QCOMPARE(s.directions, 64);
     QCOMPARE(s.pixelSize, 0.0005);
+    // Typed in scientific notation, and back to Automatic (0, the special value's text).
+    dock.show();
+    QVERIFY(QTest::qWaitForWindowExposed(&dock));
+    const auto type = [pixel](const QString& text) {
+        pixel->setFocus();
+        pixel->selectAll();
+        QTest::keyClicks(pixel, text);
+        QTest::keyClick(pixel, Qt::Key_Return);
+    };
+    type(QStringLiteral("2.5e-1"));
+    QCOMPARE(pixel->value(), 0.25);
+    type(QStringLiteral("2e3")); // beyond 1000 mm: not applied
+    QCOMPARE(pixel->value(), 0.25);
+    pixel->setValue(0.0);
+    QCOMPARE(pixel->text(), pixel->specialValueText());
+    pixel->setValue(0.5);
     QVERIFY(s.axis && s.axis->point == m_fixture->axis.point && s.axis->direction == m_fixture->axis.direction);
     // Directions only apply to the skydome; busy disables Compute.
     shading->setCurrentIndex(shading->findData(int(DeveloppeeShading::Light)));

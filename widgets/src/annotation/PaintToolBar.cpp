@@ -1,5 +1,6 @@
 // The développée's painting bar: tool, layer, class, brush size, wand tolerance, overlay opacity.
 #include "stylos/widgets/annotation/PaintToolBar.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
 #include "stylos/widgets/annotation/LegendText.h"
@@ -39,7 +40,7 @@ PaintToolBar::PaintToolBar(const SceneDocument& document, DeveloppeeAnnotator& a
                            QWidget* parent)
     : QWidget(parent), m_document(document), m_annotator(annotator), m_view(view), m_tools(new QButtonGroup(this)),
       m_layer(new QComboBox(this)), m_class(new QComboBox(this)), m_sizeLabel(new QLabel(this)),
-      m_size(new QDoubleSpinBox(this)), m_criterion(new QComboBox(this)), m_tolerance(new QDoubleSpinBox(this)),
+      m_size(new NumberSpinBox(this)), m_criterion(new QComboBox(this)), m_tolerance(new NumberSpinBox(this)),
       m_opacityLabel(new QLabel(this)), m_opacity(new QSlider(Qt::Horizontal, this))
 {
     setObjectName(QStringLiteral("PaintToolBar"));

@@ -1,4 +1,5 @@
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 
@@ -31,7 +32,7 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
     : QWidget(parent), m_view(new DeveloppeeView(this)), m_surfaceLabel(new QLabel(this)),
       m_surface(new QComboBox(this)), m_shadingLabel(new QLabel(this)), m_shading(new QComboBox(this)),
       m_directionsLabel(new QLabel(this)), m_directions(new QSpinBox(this)), m_pixelLabel(new QLabel(this)),
-      m_pixelSize(new QDoubleSpinBox(this)), m_smooth(new QCheckBox(this)), m_smoothing(new QDoubleSpinBox(this)),
+      m_pixelSize(new NumberSpinBox(this)), m_smooth(new QCheckBox(this)), m_smoothing(new NumberSpinBox(this)),
       m_useAxis(new QCheckBox(this)), m_fit(new QToolButton(this)),
       m_compute(new QPushButton(this)), m_status(new QLabel(this))
 {

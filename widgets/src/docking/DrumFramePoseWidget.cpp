@@ -1,7 +1,7 @@
 #include "stylos/widgets/docking/DrumFramePoseWidget.h"
 
 #include "docking/FragmentBounds.h"
-#include "document/NumberSpinBox.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 #include "stylos/core/dock/DrumFramePose.h"
 #include "stylos/core/scene/SceneEigen.h"
 

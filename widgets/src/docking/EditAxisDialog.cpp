@@ -1,6 +1,6 @@
 #include "stylos/widgets/docking/EditAxisDialog.h"
 
-#include "document/NumberSpinBox.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include <QDialogButtonBox>
 #include <QDoubleSpinBox>

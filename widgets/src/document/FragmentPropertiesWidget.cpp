@@ -6,7 +6,7 @@
 #include "stylos/widgets/document/SceneDocument.h"
 
 #include "docking/FragmentBounds.h"
-#include "document/NumberSpinBox.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include <QCheckBox>
 #include <QColorDialog>

@@ -1,6 +1,6 @@
 #include "stylos/widgets/document/ImportOptionsDialog.h"
 
-#include "document/NumberSpinBox.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include <QComboBox>
 #include <QDialogButtonBox>

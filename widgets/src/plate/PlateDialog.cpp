@@ -1,7 +1,7 @@
 // File › Export plate…: the plate's statement and a live preview of the page.
 #include "stylos/widgets/plate/PlateDialog.h"
 
-#include "document/NumberSpinBox.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/plate/PlateLayout.h"

@@ -1,4 +1,4 @@
-#include "document/NumberSpinBox.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 
 #include "stylos/widgets/util/WheelGuard.h"
 
