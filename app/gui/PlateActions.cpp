@@ -125,8 +125,9 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
             if (!plate) {
                 out.error = QString::fromStdString(plate.error().message);
                 out.cancelled = plate.error().code == core::ErrorCode::Cancelled;
-            } else if (auto s = plate::writePlate(*plate, file); !s) {
+            } else if (auto s = plate::writePlate(*plate, file, &progress); !s) {
                 out.error = QString::fromStdString(s.error().message);
+                out.cancelled = s.error().code == core::ErrorCode::Cancelled; // an existing file left as it was
             }
             promise.addResult(out);
         });
@@ -185,8 +186,9 @@ void PlateActions::exportViewImage(int widthPx, const QString& path)
             if (!image) {
                 out.error = QString::fromStdString(image.error().message);
                 out.cancelled = image.error().code == core::ErrorCode::Cancelled;
-            } else if (auto s = plate::writePanelImage(image->image, file, 8); !s) {
+            } else if (auto s = plate::writePanelImage(image->image, file, 8, &progress); !s) {
                 out.error = QString::fromStdString(s.error().message);
+                out.cancelled = s.error().code == core::ErrorCode::Cancelled;
             }
             promise.addResult(out);
         });

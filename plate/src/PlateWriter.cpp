@@ -37,9 +37,19 @@ fs::path partialPath(const fs::path& output)
     return output.parent_path() / ("." + output.filename().string() + ".partial");
 }
 
-Status finish(const fs::path& partial, const fs::path& output)
+/** Whether the writing was cancelled: then the partial file goes and the target is left as it was. */
+bool cancelled(const core::ProgressSink* progress)
+{
+    return progress != nullptr && progress->isCancelRequested();
+}
+
+Status finish(const fs::path& partial, const fs::path& output, const core::ProgressSink* progress = nullptr)
 {
     std::error_code error;
+    if (cancelled(progress)) { // the last moment: an existing file is not replaced
+        fs::remove(partial, error);
+        return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
+    }
     fs::rename(partial, output, error);
     if (error) {
         const std::string why = error.message();
@@ -103,7 +113,20 @@ bool makeReproducible(const fs::path& path)
     return file.write(bytes) == bytes.size() && file.flush();
 }
 
-Status writePdf(const PlateContent& plate, const fs::path& output)
+/** The document title: the caption, cut at a word within 200 characters with an ellipsis (never inside a
+ *  character: the caption is UTF-8). */
+QString documentTitle(const std::string& caption)
+{
+    constexpr qsizetype most = 200;
+    QString title = QString::fromStdString(caption).simplified();
+    if (title.size() <= most) return title;
+    qsizetype cut = title.lastIndexOf(QLatin1Char(' '), most - 1);
+    if (cut < most / 2) cut = most - 1; // one long word: cut inside it
+    if (cut > 0 && title.at(cut - 1).isHighSurrogate()) --cut;
+    return title.left(cut).trimmed() + QStringLiteral("…");
+}
+
+Status writePdf(const PlateContent& plate, const fs::path& output, const core::ProgressSink* progress)
 {
     const fs::path partial = partialPath(output);
     if (Status created = createPartial(partial, output); !created) return created;
@@ -118,7 +141,7 @@ Status writePdf(const PlateContent& plate, const fs::path& output)
                                          QPageLayout::Portrait, QMarginsF(0, 0, 0, 0), QPageLayout::Millimeter));
         writer.setResolution(kPdfDpi);
         writer.setCreator(QStringLiteral("Stylos"));
-        writer.setTitle(QString::fromStdString(plate.spec.caption.substr(0, 200)));
+        writer.setTitle(documentTitle(plate.spec.caption));
         QPainter painter;
         if (!painter.begin(&writer)) return failed(partial, output, "cannot start the PDF");
         painter.scale(kPdfDpi / 25.4, kPdfDpi / 25.4);
@@ -126,10 +149,10 @@ Status writePdf(const PlateContent& plate, const fs::path& output)
         if (!painter.end()) return failed(partial, output, "writing the PDF failed");
     }
     if (!makeReproducible(partial)) return failed(partial, output, "cannot rewrite the PDF's dates");
-    return finish(partial, output);
+    return finish(partial, output, progress);
 }
 
-Status writeSvg(const PlateContent& plate, const fs::path& output)
+Status writeSvg(const PlateContent& plate, const fs::path& output, const core::ProgressSink* progress)
 {
     const fs::path partial = partialPath(output);
     if (Status created = createPartial(partial, output); !created) return created;
@@ -141,7 +164,7 @@ Status writeSvg(const PlateContent& plate, const fs::path& output)
         svg.setSize(size);
         svg.setViewBox(QRect(QPoint(0, 0), size));
         svg.setResolution(int(std::lround(25.4 * kSvgPerMm))); // 254 dpi: width and height come out in mm
-        svg.setTitle(QString::fromStdString(plate.spec.caption.substr(0, 200)));
+        svg.setTitle(documentTitle(plate.spec.caption));
         svg.setDescription(QStringLiteral("Stylos plate"));
         QPainter painter;
         if (!painter.begin(&svg)) return failed(partial, output, "cannot start the SVG");
@@ -149,7 +172,7 @@ Status writeSvg(const PlateContent& plate, const fs::path& output)
         paintPlate(painter, plate);
         if (!painter.end()) return failed(partial, output, "writing the SVG failed");
     }
-    return finish(partial, output);
+    return finish(partial, output, progress);
 }
 
 /** The TIFF DateTime of every image written: the PDF's fixed date, so that the same plate gives the same bytes. */
@@ -157,12 +180,13 @@ constexpr const char* ReproducibleDateTime = "2000:01:01 00:00:00";
 
 /** Writes @p pixels (@p spec's size, channels and format) as TIFF or PNG by @p output's extension, through a
  *  partial file (the same extension, which chooses the format) renamed at the end. */
-Status writeImageFile(const core::image::ImageHeader& spec, const void* pixels, const fs::path& output)
+Status writeImageFile(const core::image::ImageHeader& spec, const void* pixels, const fs::path& output,
+                      const core::ProgressSink* progress = nullptr)
 {
     const fs::path partial = output.parent_path() / ("." + output.stem().string() + ".partial" + output.extension().string());
     if (auto written = core::image::writeWholeImage(partial.string(), spec, pixels, output.string()); !written)
         return discard(partial, written.error()); // names the output (and the partial file if it cannot be created)
-    return finish(partial, output);
+    return finish(partial, output, progress);
 }
 
 /** A raster's header: its size, channels and depth, "Software" and the fixed DateTime. */
@@ -188,7 +212,8 @@ bool inColour(const PlateContent& plate)
     return false;
 }
 
-Status writeRaster(const PlateContent& plate, const fs::path& output, PlateFormat format)
+Status writeRaster(const PlateContent& plate, const fs::path& output, PlateFormat format,
+                   const core::ProgressSink* progress)
 {
     const QSize size = rasterPageSize(plate);
     const double pixels = double(size.width()) * double(size.height());
@@ -231,7 +256,8 @@ Status writeRaster(const PlateContent& plate, const fs::path& output, PlateForma
             }
         }
     }
-    return writeImageFile(spec, buffer.data(), output);
+    if (cancelled(progress)) return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
+    return writeImageFile(spec, buffer.data(), output, progress);
 }
 
 } // namespace
@@ -253,7 +279,8 @@ QSize rasterPageSize(const PlateContent& plate)
     return {int(std::lround(plate.layout.page.widthMm / 25.4 * dpi)), int(std::lround(plate.layout.page.heightMm / 25.4 * dpi))};
 }
 
-Status writePanelImage(const core::plate::PanelImage& image, const fs::path& output, int bits)
+Status writePanelImage(const core::plate::PanelImage& image, const fs::path& output, int bits,
+                       const core::ProgressSink* progress)
 {
     const auto format = plateFormatOf(output);
     if (!format || (*format != PlateFormat::Png && *format != PlateFormat::Tiff))
@@ -267,19 +294,20 @@ Status writePanelImage(const core::plate::PanelImage& image, const fs::path& out
         bytes.resize(image.samples.size());
         for (std::size_t i = 0; i < bytes.size(); ++i) bytes[i] = std::uint8_t((image.samples[i] + 128) / 257);
     }
-    return writeImageFile(spec, sixteen ? static_cast<const void*>(image.samples.data()) : bytes.data(), output);
+    return writeImageFile(spec, sixteen ? static_cast<const void*>(image.samples.data()) : bytes.data(), output, progress);
 }
 
-Status writePlate(const PlateContent& plate, const fs::path& output)
+Status writePlate(const PlateContent& plate, const fs::path& output, const core::ProgressSink* progress)
 {
     const auto format = plateFormatOf(output);
     if (!format)
         return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "a plate is written as .pdf, .svg, .tif or .png");
+    if (cancelled(progress)) return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
     switch (*format) {
-    case PlateFormat::Pdf: return writePdf(plate, output);
-    case PlateFormat::Svg: return writeSvg(plate, output);
+    case PlateFormat::Pdf: return writePdf(plate, output, progress);
+    case PlateFormat::Svg: return writeSvg(plate, output, progress);
     case PlateFormat::Tiff:
-    case PlateFormat::Png: return writeRaster(plate, output, *format);
+    case PlateFormat::Png: return writeRaster(plate, output, *format, progress);
     }
     return {};
 }

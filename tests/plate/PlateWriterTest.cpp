@@ -267,6 +267,74 @@ TEST(PlateWriter, AFolderThatCannotTakeTheFileIsNamedWithTheReason)
     EXPECT_EQ(bytesOf(notAFolder), "x");
 }
 
+namespace {
+
+/** Asks to cancel from its (after + 1)-th question on: a user's Cancel at some point of the writing. */
+class CancelAfter final : public core::ProgressSink {
+public:
+    explicit CancelAfter(int after) : m_after(after) {}
+    void update(double) override {}
+    bool isCancelRequested() const override { return ++m_asked > m_after; }
+
+private:
+    int m_after;
+    mutable int m_asked = 0;
+};
+
+} // namespace
+
+TEST(PlateWriter, ACancelLeavesTheExistingFileAsItWas)
+{
+    auto plate = compose(developpeeSpec());
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path dir = *fixture().dir / "cancel";
+    fs::create_directories(dir);
+    for (const char* name : {"plate.pdf", "plate.svg", "plate.png", "plate.tif"}) {
+        const fs::path output = dir / name;
+        int cancelled = 0;
+        for (int after = 0; after < 4; ++after) {
+            { std::ofstream(output) << "the plate of last week"; }
+            CancelAfter progress(after);
+            const auto written = plate::writePlate(*plate, output, &progress);
+            if (!written.ok()) {
+                ++cancelled;
+                EXPECT_EQ(written.error().code, core::ErrorCode::Cancelled) << name << written.error().message;
+                EXPECT_EQ(bytesOf(output), "the plate of last week") << name << " cancelled after " << after;
+            } else {
+                EXPECT_NE(bytesOf(output), "the plate of last week") << name;
+            }
+            std::vector<std::string> left;
+            for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+            EXPECT_EQ(left, std::vector<std::string>{name}) << "no partial file left";
+            fs::remove(output);
+        }
+        // Cancelled at the start and after the drawing (the second question), written once nothing asks any more.
+        EXPECT_GE(cancelled, 2) << name;
+    }
+}
+
+TEST(PlateWriter, ALongCaptionIsTheTitleCutAtAWord)
+{
+    auto spec = developpeeSpec();
+    spec.caption.clear();
+    for (int i = 0; i < 40; ++i) spec.caption += "Tambour à cannelures, Δελφοί ";
+    auto plate = compose(spec);
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path pdf = *fixture().dir / "title.pdf";
+    ASSERT_TRUE(plate::writePlate(*plate, pdf).ok());
+    const std::string info = run("pdfinfo '" + pdf.string() + "'");
+    const auto at = info.find("Title:");
+    ASSERT_NE(at, std::string::npos) << info;
+    std::string title = info.substr(at + 6, info.find('\n', at) - at - 6);
+    title.erase(0, title.find_first_not_of(' '));
+    // 200 characters at most before the ellipsis, ending on a whole word ("cannelures," or "Δελφοί").
+    const QString t = QString::fromStdString(title);
+    ASSERT_TRUE(t.endsWith(QStringLiteral("…"))) << title;
+    EXPECT_LE(t.size(), 201) << title;
+    EXPECT_GT(t.size(), 150) << title;
+    EXPECT_TRUE(QString::fromStdString(spec.caption).startsWith(t.chopped(1) + QLatin1Char(' '))) << title;
+}
+
 int main(int argc, char** argv)
 {
     int qtArgc = 3;
