@@ -2447,7 +2447,7 @@
     </message>
     <message>
         <source>skydome</source>
-        <translation>voûte céleste</translation>
+        <translation>skydome</translation>
     </message>
     <message>
         <source>light</source>

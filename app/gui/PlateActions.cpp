@@ -120,8 +120,7 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
         [sources, spec, file = path.toStdString(), texts = widgets::PlateTexts::translated(sources->legend)](
             QPromise<Outcome>& promise, core::ProgressSink& progress) {
             Outcome out;
-            auto plate = plate::composePlate(*sources, spec, {}, &progress);
-            if (plate) plate->texts = texts;
+            auto plate = plate::composePlate(*sources, spec, {}, &progress, texts);
             if (!plate) {
                 out.error = QString::fromStdString(plate.error().message);
                 out.cancelled = plate.error().code == core::ErrorCode::Cancelled;

@@ -8,11 +8,13 @@ namespace stylos::plate {
 namespace cp = core::plate;
 
 core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const cp::PlateSpec& spec,
-                                        const cp::PanelRenderOptions& options, core::ProgressSink* progress)
+                                        const cp::PanelRenderOptions& options, core::ProgressSink* progress,
+                                        const PlateTexts& texts)
 {
     if (auto s = spec.validate(sources.source); !s) return s.error();
     PlateContent plate;
     plate.spec = spec;
+    plate.texts = texts;
     plate.legend = sources.legend;
     cp::PanelRenderOptions o = options;
     o.dpi = spec.dpi;
@@ -26,8 +28,10 @@ core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const c
         plate.panels.push_back(std::move(panel).value());
     }
     const double width = spec.orientedPage().widthMm - 2 * spec.marginMm;
+    std::vector<double> labels;
+    for (const cp::PanelSpec& panel : spec.panels) labels.push_back(panelLabelWidthMm(panel, spec.panels.size() > 1, texts));
     auto layout = cp::layoutPlate(spec, sizes, legendRows(spec, plate.panels, plate.legend),
-                                  captionHeightMm(QString::fromStdString(spec.caption), width));
+                                  captionHeightMm(QString::fromStdString(spec.caption), width), labels);
     if (!layout) return layout.error();
     plate.layout = std::move(layout).value();
     for (std::size_t i = 0; i < plate.panels.size(); ++i) plate.layout.panels[i].rulerDegrees = plate.panels[i].arcDegrees;

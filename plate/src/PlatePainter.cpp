@@ -54,6 +54,16 @@ double text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bo
     return (x + m.horizontalAdvance(s)) / scale;
 }
 
+/** The width on paper (mm) of @p s drawn @p pt points high by text(). */
+double textWidthMm(const QString& s, double pt)
+{
+    constexpr double unitsPerMm = 100.0;
+    QFont font(QStringLiteral("DejaVu Sans"));
+    font.setPixelSize(std::max(1, int(std::lround(pt * kPt * unitsPerMm))));
+    font.setHintingPreference(QFont::PreferNoHinting);
+    return QFontMetricsF(font).horizontalAdvance(s) / unitsPerMm;
+}
+
 QPen pen(double widthMm, const QColor& colour = Qt::black)
 {
     QPen p(colour, widthMm);
@@ -83,7 +93,15 @@ QString viewTitle(const cp::PanelSpec& panel, const PlateTexts& texts)
     return texts.views[std::size_t(panel.view)] + QStringLiteral(", ") + texts.shadings[std::size_t(panel.shading)];
 }
 
-void drawBar(QPainter& p, const cp::PanelBox& box)
+/** @p number ("0.5 m", "1:2.5") with the plate's decimal point. */
+QString localNumber(const std::string& number, const PlateTexts& texts)
+{
+    QString out = QString::fromStdString(number);
+    out.replace(QLatin1Char('.'), texts.decimalPoint);
+    return out;
+}
+
+void drawBar(QPainter& p, const cp::PanelBox& box, const PlateTexts& texts)
 {
     const cp::ScaleBar& bar = box.bar;
     if (bar.segments <= 0) return;
@@ -101,10 +119,10 @@ void drawBar(QPainter& p, const cp::PanelBox& box)
         const double x = r.x() + i * seg;
         p.drawLine(QPointF(x, r.y() - 0.8), QPointF(x, r.y()));
         if (every || i == 0 || i == bar.segments)
-            text(p, QPointF(x, r.y() - 1.3), QString::fromStdString(bar.tickLabel(i)), 6.5, false, false,
+            text(p, QPointF(x, r.y() - 1.3), localNumber(bar.tickLabel(i), texts), 6.5, false, false,
                  i == bar.segments && !every ? Qt::AlignLeft : Qt::AlignHCenter);
     }
-    text(p, QPointF(r.right() + 9.0, r.bottom()), QString::fromStdString(box.scaleText), 8);
+    text(p, QPointF(r.right() + 9.0, r.bottom()), localNumber(box.scaleText, texts), 8);
 }
 
 void drawRuler(QPainter& p, const cp::PanelBox& box, const QString& axis)
@@ -304,7 +322,7 @@ void paintPlate(QPainter& p, const PlateContent& plate)
         const double titleEnd = text(p, QPointF(titleX, box.image.y - 2.0), viewTitle(panel, plate.texts), 7.5);
         if (box.ruler) drawRuler(p, box, plate.texts.axis);
         else drawTriad(p, panel, box, titleEnd);
-        drawBar(p, box);
+        drawBar(p, box, plate.texts);
     }
     const auto entries = legendEntries(plate.spec, plate.panels, plate.legend, plate.texts);
     if (!entries.empty() && layout.legend.h > 0) {
@@ -339,6 +357,22 @@ void paintPlate(QPainter& p, const PlateContent& plate)
         p.drawText(r, int(Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop), QString::fromStdString(plate.spec.caption));
         p.restore();
     }
+}
+
+double panelLabelWidthMm(const cp::PanelSpec& panel, bool lettered, const PlateTexts& texts)
+{
+    // The title line: the letter, the view and shading, and for a 3D view the triad after them when the image is
+    // narrow (drawTriad: 3 mm on, arrows and letters within 7 mm).
+    const bool ruler = panel.view == cp::PanelView::Developpee;
+    const double title = (lettered ? 6.0 : 0.0) + textWidthMm(viewTitle(panel, texts), 7.5) + (ruler ? 0.0 : 10.0);
+    // The bar, its last label (centred on its end, or after it when the segments are short: drawBar) and "1:N".
+    const cp::ScaleBar bar = cp::chooseScaleBar(panel.scale);
+    if (bar.segments <= 0) return title;
+    const double last = textWidthMm(localNumber(bar.tickLabel(bar.segments), texts), 6.5);
+    const bool every = bar.lengthMm / bar.segments >= 8.0;
+    const double ticks = bar.lengthMm + (every ? 0.5 * last : last);
+    const double scale = bar.lengthMm + 9.0 + textWidthMm(localNumber(cp::scaleText(panel.scale), texts), 8);
+    return std::max({title, ticks, scale});
 }
 
 } // namespace stylos::plate

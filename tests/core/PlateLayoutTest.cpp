@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 using namespace stylos::core::plate;
 
@@ -214,6 +215,80 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     ASSERT_FALSE(tiny.ok());
     EXPECT_NE(tiny.error().message.find("no scale fits this page; use a larger page"), std::string::npos)
         << tiny.error().message;
+}
+
+TEST(PlateLayout, APanelTakesTheWidthOfItsLabels)
+{
+    // A 1:1000 panel whose image is 6 mm wide beside a 1:20 one: its title and bar (50 mm on paper) would run under
+    // the next panel if only the image counted.
+    PlateSpec s;
+    PanelSpec small;
+    small.view = PanelView::Developpee;
+    small.scale = 1000;
+    PanelSpec back;
+    back.view = PanelView::Back;
+    back.scale = 20;
+    s.panels = {small, back};
+    const std::array<std::array<double, 2>, 2> sizes{{{6, 2}, {60, 40}}};
+    const std::array<double, 2> labels{71.5, 55};
+    const auto layout = layoutPlate(s, sizes, 0, 0, labels);
+    ASSERT_TRUE(layout.ok()) << layout.error().message;
+    const auto& a = layout->panels[0];
+    const auto& b = layout->panels[1];
+    EXPECT_DOUBLE_EQ(a.image.y, b.image.y); // one row: 71.5 + 6 + 60 ≤ 180
+    EXPECT_DOUBLE_EQ(a.image.x, 15 + (180 - (71.5 + 6 + 60)) / 2.0);
+    EXPECT_DOUBLE_EQ(b.image.x, a.image.x + 71.5 + kPanelGapMm);
+    EXPECT_DOUBLE_EQ(a.image.w, 6); // the image keeps its exact size
+    // Without label widths, as before: the image alone.
+    const auto bare = layoutPlate(s, sizes, 0, 0);
+    ASSERT_TRUE(bare.ok());
+    EXPECT_DOUBLE_EQ(bare->panels[1].image.x, bare->panels[0].image.right() + kPanelGapMm);
+    // Labels wider than the row left: the next panel goes to a new row.
+    const std::array<double, 2> wide{130, 55};
+    const auto rows = layoutPlate(s, sizes, 0, 0, wide);
+    ASSERT_TRUE(rows.ok());
+    EXPECT_GT(rows->panels[1].image.y, rows->panels[0].barRect.bottom());
+    const std::array<double, 1> one{10};
+    EXPECT_FALSE(layoutPlate(s, sizes, 0, 0, one).ok()); // one width per panel
+}
+
+TEST(PlateLayout, PanelsTooTallTogetherAreGivenScalesThatFit)
+{
+    // Two panels of 100 × 120 mm at 1:5 and 1:10 on A4 landscape (267 × 180 mm print area): side by side they need
+    // 206.5 mm with a 60 mm caption (the message says so): too tall.
+    PlateSpec s;
+    s.landscape = true;
+    PanelSpec a;
+    a.scale = 5;
+    PanelSpec b = a;
+    b.view = PanelView::Front;
+    b.scale = 10;
+    s.panels = {a, b};
+    const std::array<std::array<double, 2>, 2> sizes{{{100, 120}, {100, 120}}};
+    const auto refused = layoutPlate(s, sizes, 0, 60);
+    ASSERT_FALSE(refused.ok());
+    const std::string& message = refused.error().message;
+    EXPECT_NE(message.find("of height"), std::string::npos) << message;
+    // "use a smaller scale (A 1:N, B 1:M)": both scales grown by one factor, rounded up; they fit, and no smaller does.
+    const auto at = message.find("(A 1:");
+    ASSERT_NE(at, std::string::npos) << message;
+    double scaleA = 0, scaleB = 0;
+    ASSERT_EQ(std::sscanf(message.c_str() + at, "(A 1:%lf, B 1:%lf)", &scaleA, &scaleB), 2) << message;
+    EXPECT_GT(scaleA, 5);
+    EXPECT_GT(scaleB, 10);
+    const auto layoutAt = [&](double sa, double sb) {
+        PlateSpec t = s;
+        t.panels[0].scale = sa;
+        t.panels[1].scale = sb;
+        const std::array<std::array<double, 2>, 2> shrunk{
+            {{100 * 5 / sa, 120 * 5 / sa}, {100 * 10 / sb, 120 * 10 / sb}}};
+        return layoutPlate(t, shrunk, 0, 60);
+    };
+    EXPECT_TRUE(layoutAt(scaleA, scaleB).ok());
+    EXPECT_FALSE(layoutAt(scaleA - 1, scaleB - 2).ok());
+    // The height left for the images is 180 − 60 − 2 − 25 = 93 mm: the factor is 120 / 93 → 1:7 and 1:13.
+    EXPECT_EQ(scaleA, 7);
+    EXPECT_EQ(scaleB, 13);
 }
 
 TEST(PlateSpec, TheProjectKeepsItsPlate)

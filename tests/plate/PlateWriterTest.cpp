@@ -313,6 +313,44 @@ TEST(PlateWriter, ACancelLeavesTheExistingFileAsItWas)
     }
 }
 
+TEST(PlateWriter, ASmallPanelsLabelsKeepClearOfTheNext)
+{
+    // The drum's développée at 1:1000 (1.3 × 0.25 mm) beside its back view at 1:20: the small panel's title and its
+    // bar with "1:1000" take more than its image; the back view starts after them, not over them.
+    auto spec = developpeeSpec();
+    spec.landscape = true;
+    spec.panels[0].scale = 1000;
+    cp::PanelSpec back;
+    back.view = cp::PanelView::Back;
+    back.shading = cp::PanelShading::Headlight;
+    back.scale = 20;
+    spec.panels.push_back(back);
+    auto sources = cp::readPlateSources(fixture().octree);
+    ASSERT_TRUE(sources.ok());
+    plate::PlateTexts french = plate::PlateTexts::english();
+    french.views[0] = QStringLiteral("développée d’un tambour très long à lire");
+    french.decimalPoint = QStringLiteral(",");
+    auto plate = plate::composePlate(*sources, spec, {}, nullptr, french);
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const auto& a = plate->layout.panels[0];
+    const auto& b = plate->layout.panels[1];
+    ASSERT_DOUBLE_EQ(a.image.y, b.image.y); // one row
+    const double labels = plate::panelLabelWidthMm(spec.panels[0], true, french);
+    EXPECT_GT(labels, a.barRect.w + 9.0);  // the bar (50 mm at 1:1000) and "1:1000" beyond its image
+    EXPECT_GT(labels, a.image.w + 40.0);
+    EXPECT_GE(b.image.x, a.image.x + labels + cp::kPanelGapMm - 1e-9);
+    EXPECT_GT(plate::panelLabelWidthMm(spec.panels[0], true, french),
+              plate::panelLabelWidthMm(spec.panels[0], true, plate::PlateTexts::english())); // the longer title
+    EXPECT_EQ(plate->texts.decimalPoint, QStringLiteral(","));
+    // The bar's labels with the plate's decimal point: 50 m at 1:1000 in 5 segments reads 0 … 50 m; at 1:20 the
+    // back view
+    const fs::path svg = *fixture().dir / "french.svg";
+    ASSERT_TRUE(plate::writePlate(*plate, svg).ok());
+    const std::string text = bytesOf(svg);
+    EXPECT_NE(text.find(">0,2<"), std::string::npos);
+    EXPECT_EQ(text.find(">0.2<"), std::string::npos);
+}
+
 TEST(PlateWriter, ALongCaptionIsTheTitleCutAtAWord)
 {
     auto spec = developpeeSpec();

@@ -25,6 +25,7 @@
 #include <QDoubleSpinBox>
 #include <QLabel>
 #include <QPushButton>
+#include <QScreen>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -101,6 +102,9 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
     widgets::SceneDocument document(tasks);
     QVERIFY(addDrum(document) != 0);
     widgets::PlateDialog dialog(app::PlateActions::sourcesOf(document), spec(20));
+    // Within the screen (1280 wide here, as a field laptop): its buttons never off it.
+    QVERIFY2(dialog.width() <= dialog.screen()->availableGeometry().width(), qPrintable(QString::number(dialog.width())));
+    QVERIFY(dialog.height() <= dialog.screen()->availableGeometry().height());
     QSignalSpy updated(&dialog, &widgets::PlateDialog::previewUpdated);
     QVERIFY(updated.wait(60000));
     QVERIFY2(dialog.messageLabel()->text().isEmpty(), qPrintable(dialog.messageLabel()->text()));

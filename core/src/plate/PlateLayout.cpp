@@ -49,8 +49,63 @@ std::string scaleText(double scale)
     return text;
 }
 
+namespace {
+
+Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
+                             double captionMm, std::span<const double> labelMm, bool suggest);
+
+/**
+ * The scales that would fit where the panels at @p spec's scales need too much height: the smallest factor f
+ * (bisection) for which every panel at scale · f fits, the scales then rounded up ("A 1:12, B 1:25"); empty when
+ * none fits below 1:1,000,000.
+ */
+std::string fittingScales(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
+                          double captionMm, std::span<const double> labelMm)
+{
+    const auto fitsAt = [&](double f, PlateSpec* scaled) {
+        PlateSpec s = spec;
+        std::vector<std::array<double, 2>> images(imageMm.begin(), imageMm.end());
+        for (std::size_t i = 0; i < s.panels.size(); ++i) {
+            if (spec.panels[i].atMm) continue; // placed panels keep their place and scale
+            s.panels[i].scale = f == 1.0 ? spec.panels[i].scale : std::ceil(spec.panels[i].scale * f);
+            const double shrink = spec.panels[i].scale / s.panels[i].scale;
+            images[i] = {imageMm[i][0] * shrink, imageMm[i][1] * shrink};
+        }
+        if (scaled) *scaled = s;
+        return layoutAt(s, images, legendRows, captionMm, labelMm, false).ok();
+    };
+    double largest = 0;
+    for (const PanelSpec& p : spec.panels) largest = std::max(largest, p.scale);
+    double low = 1.0, high = 1e6 / std::max(largest, 1e-9);
+    if (!(high > low) || !fitsAt(high, nullptr)) return {};
+    for (int i = 0; i < 60 && high / low > 1.0 + 1e-9; ++i) {
+        const double mid = std::sqrt(low * high);
+        (fitsAt(mid, nullptr) ? high : low) = mid;
+    }
+    PlateSpec scaled;
+    if (!fitsAt(high, &scaled)) return {};
+    std::string text;
+    for (std::size_t i = 0; i < scaled.panels.size(); ++i) {
+        if (spec.panels[i].atMm) continue; // placed panels keep their place and scale
+        if (!text.empty()) text += ", ";
+        if (spec.panels.size() > 1) text += std::string(1, char('A' + i)) + " ";
+        text += scaleText(scaled.panels[i].scale);
+    }
+    return text;
+}
+
+} // namespace
+
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                                double captionMm)
+                                double captionMm, std::span<const double> labelMm)
+{
+    return layoutAt(spec, imageMm, legendRows, captionMm, labelMm, true);
+}
+
+namespace {
+
+Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
+                             double captionMm, std::span<const double> labelMm, bool suggest)
 {
     PlateLayout out;
     out.page = spec.orientedPage();
@@ -62,8 +117,10 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
     const bool stated = spec.pageName.find_first_of("xX") != std::string::npos;
     const std::string pageText = "the " + spec.pageName + (spec.landscape ? (stated ? " turned" : " landscape") : "") +
                                  " print area is " + areaText;
-    if (imageMm.size() != spec.panels.size())
-        return Error{ErrorCode::InvalidArgument, "layoutPlate: one image size per panel is needed"};
+    if (imageMm.size() != spec.panels.size() || (!labelMm.empty() && labelMm.size() != spec.panels.size()))
+        return Error{ErrorCode::InvalidArgument, "layoutPlate: one image size (and label width) per panel is needed"};
+    // What a panel takes across its row: its image, or its title line and bar when they are wider.
+    const auto blockWidth = [&](std::size_t i) { return std::max(imageMm[i][0], labelMm.empty() ? 0.0 : labelMm[i]); };
     const bool letters = spec.panels.size() > 1;
 
     // Panels too large on their own.
@@ -96,7 +153,7 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
         for (const std::size_t i : row) {
             const std::string letter = letters ? std::string(1, char('A' + i)) : std::string();
             out.panels[i] = place(spec.panels[i], x, y + kLetterBandMm, imageMm[i], letter);
-            x += imageMm[i][0] + kPanelGapMm;
+            x += blockWidth(i) + kPanelGapMm;
         }
         if (!row.empty()) y += rowH + kPanelGapMm;
         row.clear();
@@ -118,7 +175,7 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
                                                              " × " + mm(out.page.heightMm) + " mm page"};
             continue;
         }
-        const double w = imageMm[i][0], h = blockHeight(p, imageMm[i][1]);
+        const double w = blockWidth(i), h = blockHeight(p, imageMm[i][1]);
         if (!row.empty() && rowW + kPanelGapMm + w > area.w + 1e-9) flush();
         rowW += (row.empty() ? 0.0 : kPanelGapMm) + w;
         rowH = std::max(rowH, h);
@@ -136,14 +193,20 @@ Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::arra
         out.caption = {area.x, bottom + 2.0, area.w, captionMm};
         bottom = out.caption.bottom();
     }
-    if (bottom > area.bottom() + 1e-9)
+    if (bottom > area.bottom() + 1e-9) {
+        const std::string scales = suggest ? fittingScales(spec, imageMm, legendRows, captionMm, labelMm) : std::string();
         return Error{ErrorCode::InvalidArgument, "the panels" + std::string(legendRows > 0 ? ", the legend" : "") +
                                                      (captionMm > 0 ? " and the caption" : "") + " need " +
                                                      mm(bottom - area.y) + " mm of height; " + pageText +
-                                                     ": use a smaller scale, a larger page or the page " +
+                                                     ": use a smaller scale" +
+                                                     (scales.empty() ? std::string() : " (" + scales + ")") +
+                                                     ", a larger page or the page " +
                                                      (stated ? (spec.landscape ? "as stated" : "turned")
                                                              : (spec.landscape ? "upright" : "in landscape"))};
+    }
     return out;
 }
+
+} // namespace
 
 } // namespace stylos::core::plate

@@ -23,6 +23,7 @@
 #include <QLabel>
 #include <QLocale>
 #include <QPainter>
+#include <QScreen>
 #include <QPlainTextEdit>
 #include <QPushButton>
 #include <QSpinBox>
@@ -90,14 +91,13 @@ Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, c
 {
     Preview out;
     spec.dpi = kPreviewDpi;
-    auto plate = plate::composePlate(*sources, spec, {});
+    auto plate = plate::composePlate(*sources, spec, {}, nullptr, texts);
     if (!plate) {
         out.error = QString::fromStdString(plate.error().message);
         return out;
     }
     const auto& page = plate->layout.page;
     const double pxPerMm = kPreviewHeight / std::max(page.widthMm, page.heightMm); // the longer side fits
-    plate->texts = texts;
     out.image = QImage(int(std::lround(page.widthMm * pxPerMm)), int(std::lround(page.heightMm * pxPerMm)), QImage::Format_RGB32);
     out.image.fill(Qt::white);
     QPainter painter(&out.image);
@@ -201,7 +201,12 @@ PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const 
 
     retranslateUi();
     setSpec(spec);
-    resize(1400, 720);
+    // Wide enough for the table and the preview, but never beyond the screen (a 1280-pixel laptop cut off the
+    // Export and Cancel buttons).
+    QSize size(1400, 720);
+    if (const QScreen* shown = parent ? parent->screen() : screen())
+        size = size.boundedTo(shown->availableGeometry().size() * 0.96).expandedTo(minimumSizeHint());
+    resize(size);
 }
 
 PlateDialog::~PlateDialog() = default;

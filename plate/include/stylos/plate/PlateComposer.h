@@ -11,8 +11,10 @@
 
 namespace stylos::plate {
 
+/** @p texts: the plate's words (translated by the workbench), kept in the plate and measured for the layout. */
 core::Result<PlateContent> composePlate(const core::plate::PlateSources& sources, const core::plate::PlateSpec& spec,
                                         const core::plate::PanelRenderOptions& options,
-                                        core::ProgressSink* progress = nullptr);
+                                        core::ProgressSink* progress = nullptr,
+                                        const PlateTexts& texts = PlateTexts::english());
 
 } // namespace stylos::plate

@@ -33,6 +33,7 @@ struct PlateTexts {
     std::array<QString, 4> shadings;       ///< per PanelShading: "skydome", "light", "height", "headlight"
     std::array<QString, 2> layerTitles;    ///< legend titles: "Material / condition", "Tool marks"
     QString axis = QStringLiteral("axis");
+    QString decimalPoint = QStringLiteral("."); ///< in the bars' labels and "1:N" (a comma in French)
     /** A class's name on the plate; default: the legend's name as stored. */
     std::function<QString(core::annotation::AnnotationLayer, const core::annotation::LegendClass&)> className;
     static PlateTexts english();
@@ -46,6 +47,13 @@ struct PlateContent {
     core::annotation::Legend legend;
     PlateTexts texts = PlateTexts::english();
 };
+
+/**
+ * @brief The width on paper (mm) of @p panel's title line (its letter when @p lettered, view and shading, a 3D
+ *        view's triad) and of its scale bar with its labels and "1:N", as paintPlate() draws them with @p texts:
+ *        what the layout keeps free beside a small image (core::plate::layoutPlate's label widths).
+ */
+double panelLabelWidthMm(const core::plate::PanelSpec& panel, bool lettered, const PlateTexts& texts);
 
 /** @brief Rows of the legend for @p panels (a title row per layer in use, one row per class present). */
 int legendRows(const core::plate::PlateSpec& spec, const std::vector<core::plate::RenderedPanel>& panels,

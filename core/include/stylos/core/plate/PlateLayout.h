@@ -58,10 +58,14 @@ struct PlateLayout {
 
 /**
  * @brief Places @p spec's panels, whose images are @p imageMm (width, height on paper, mm, one per panel), with
- *        a legend of @p legendRows rows (0: none) and a caption band of @p captionMm (0: none).
+ *        a legend of @p legendRows rows (0: none) and a caption band of @p captionMm (0: none). @p labelMm (one per
+ *        panel, or empty) is the width the panel's title line and its bar with "1:N" take on paper (the painter
+ *        measures them): a panel takes max(image, labels) in its row, so a small image's texts do not run into
+ *        the next panel. When the panels, legend and caption need more height than the print area, the message
+ *        gives scales that would fit (every panel's scale times one factor, rounded up).
  */
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                                double captionMm);
+                                double captionMm, std::span<const double> labelMm = {});
 
 /** @brief "1:10", "1:2.5". */
 std::string scaleText(double scale);
