@@ -136,6 +136,10 @@
         <comment>toolbar</comment>
         <translation>Σβήσιμο</translation>
     </message>
+    <message>
+        <source>Lasso: the selected fragment is hidden; show it to annotate it in 3D</source>
+        <translation>Λάσο: το επιλεγμένο θραύσμα είναι κρυμμένο· εμφανίστε το για να το σχολιάσετε σε 3Δ</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>

@@ -136,6 +136,10 @@
         <comment>toolbar</comment>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Lasso: the selected fragment is hidden; show it to annotate it in 3D</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>

@@ -136,6 +136,10 @@
         <comment>toolbar</comment>
         <translation>Effacer</translation>
     </message>
+    <message>
+        <source>Lasso: the selected fragment is hidden; show it to annotate it in 3D</source>
+        <translation>Lasso : le fragment sélectionné est masqué ; affichez-le pour l’annoter en 3D</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::AssemblyActions</name>

@@ -55,6 +55,11 @@ AnnotationActions::AnnotationActions(widgets::SceneDocument& document, widgets::
         });
     }
     connect(&document, &widgets::SceneDocument::legendChanged, this, &AnnotationActions::fillClasses);
+    connect(m_classBox, &QComboBox::activated, this, [this](int index) {
+        const Layer layer = m_sync ? m_sync->layer() : Layer::Material;
+        const int id = m_classBox->itemData(index).toInt();
+        if (id > 0) Q_EMIT classChosen(layer, std::uint8_t(id));
+    });
     fillClasses();
     retranslateUi();
 }
@@ -102,8 +107,18 @@ void AnnotationActions::fillClasses()
         swatch.fill(QColor(c.colour.r, c.colour.g, c.colour.b));
         m_classBox->addItem(QIcon(swatch), QString::fromStdString(c.name), int(c.id));
     }
-    const int index = m_classBox->findData(previous);
+    // The workbench's active class when it is of this layer, else the one shown before, else the first.
+    int index = layer == m_activeLayer && m_activeClass > 0 ? m_classBox->findData(int(m_activeClass)) : -1;
+    if (index < 0) index = m_classBox->findData(previous);
     m_classBox->setCurrentIndex(index >= 0 ? index : 0);
+}
+
+void AnnotationActions::showActive(Layer layer, std::uint8_t classId)
+{
+    m_activeLayer = layer;
+    m_activeClass = classId;
+    if (layer != (m_sync ? m_sync->layer() : Layer::Material)) return;
+    if (const int index = m_classBox->findData(int(classId)); index >= 0) m_classBox->setCurrentIndex(index);
 }
 
 void AnnotationActions::setLassoActive(bool active)
@@ -137,10 +152,17 @@ void AnnotationActions::applyLasso(const std::vector<core::view::LassoLeaves>& h
         if (m_document.setLabels(hit.fragment, layer, hit.leaves, classId, erase ? tr("Erase with the lasso") : tr("Lasso in 3D")))
             changed += hit.leaves.size();
     }
-    if (hits.empty() || changed == 0)
-        Q_EMIT reported(hits.empty() ? tr("Lasso: no fragment selected or under the lasso")
-                                     : tr("Lasso: no visible cell changed"),
+    if (hits.empty()) {
+        // A selected fragment that is hidden is not lassoed (its cells cannot be seen): say so rather than "none".
+        bool hiddenSelected = false;
+        if (m_viewport)
+            for (const core::view::ViewFragment& f : m_viewport->fragments()) hiddenSelected |= f.selected && !f.visible;
+        Q_EMIT reported(hiddenSelected ? tr("Lasso: the selected fragment is hidden; show it to annotate it in 3D")
+                                       : tr("Lasso: no fragment selected or under the lasso"),
                         false);
+    } else if (changed == 0) {
+        Q_EMIT reported(tr("Lasso: no visible cell changed"), false);
+    }
 }
 
 void AnnotationActions::retranslateUi()

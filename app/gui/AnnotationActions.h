@@ -4,8 +4,9 @@
  *        lasso labels the visible leaves of the selected fragment (else the one under the press) with the
  *        class chosen in the toolbar's class box (the legend's classes of the layer), or erases them with Ctrl
  *        or the Erase toggle: one undo step (SceneDocument::setLabels). View › Shading › Material / Tool marks
- *        choose the layer the Annotation shading shows and the lasso labels (AnnotationSync). The class box
- *        stands in for a Legend dock's active class while there is none. GUI thread only.
+ *        choose the layer the Annotation shading shows and the lasso labels (AnnotationSync). The class box shows
+ *        the workbench's active class (the Legend dock's) while the layers agree, and choosing in it makes that
+ *        class the active one (classChosen()). GUI thread only.
  */
 #include "stylos/core/annotation/Legend.h"
 #include "stylos/core/view/LassoVisibility.h"
@@ -54,9 +55,14 @@ public:
     std::uint8_t activeClass() const;
     /** @brief Labels @p hits as a lasso released now would (the lasso's handler): one undo step per fragment. */
     void applyLasso(const std::vector<core::view::LassoLeaves>& hits, bool erase);
+    /** @brief The workbench's active class (the Legend dock's, the développée's): the box shows it while its layer is
+     *         the lasso's, so the 3D lasso and the développée paint with the same class. */
+    void showActive(core::annotation::AnnotationLayer layer, std::uint8_t classId);
 
 Q_SIGNALS:
     void reported(const QString& message, bool failed);
+    /** @brief The user chose @p classId of @p layer in the class box (the Legend dock and the développée follow). */
+    void classChosen(core::annotation::AnnotationLayer layer, std::uint8_t classId);
 
 private:
     void setLassoActive(bool active);
@@ -65,6 +71,8 @@ private:
     widgets::SceneDocument& m_document;
     widgets::ViewportWidget* m_viewport;
     AnnotationSync* m_sync;
+    core::annotation::AnnotationLayer m_activeLayer = core::annotation::AnnotationLayer::Material; ///< showActive()'s
+    std::uint8_t m_activeClass = 0;
     QAction* m_lasso;
     QAction* m_erase;
     QActionGroup* m_layers;

@@ -216,6 +216,10 @@ void MainWindow::createMenus()
     m_toolBarRows = new ToolBarRows(*this, *m_toolBar, *m_viewToolBar);
     m_annotation->setExclusiveWith(m_docking->moveToolAction());
     connect(m_annotation, &AnnotationActions::reported, this, &MainWindow::report);
+    // One active class: the lasso's box, the Legend dock and the développée's paint bar show the same.
+    connect(m_annotator, &widgets::DeveloppeeAnnotator::activeChanged, m_annotation, &AnnotationActions::showActive);
+    connect(m_annotation, &AnnotationActions::classChosen, m_annotator, &widgets::DeveloppeeAnnotator::setActive);
+    m_annotation->showActive(m_annotator->layer(), m_annotator->activeClass());
     if (auto* display = m_propertiesDock->displaySettings(); display && m_annotationSync) {
         connect(display, &DisplaySettingsWidget::annotationLayerChanged, m_annotationSync,
                 [this](int layer) { m_annotationSync->setLayer(core::annotation::AnnotationLayer(layer)); });

@@ -193,6 +193,20 @@ void AnnotationViewTest::theLassoLabelsTheVisibleLeavesInOneStep()
     m_document->undoStack()->undo();
     QCOMPARE(labels(AnnotationLayer::Material), std::vector<std::uint8_t>(m_leaves, 0));
     settle();
+
+    // The selected fragment hidden: nothing is labelled, and the message says why.
+    QSignalSpy reported(m_actions, &stylos::app::AnnotationActions::reported);
+    m_document->setFragmentVisible(m_id, false);
+    settle();
+    const int hiddenSteps = m_document->undoStack()->index();
+    QTest::mousePress(m_view, Qt::LeftButton, {}, corners[0]);
+    for (std::size_t i = 1; i < corners.size(); ++i) QTest::mouseMove(m_view, corners[i]);
+    QTest::mouseRelease(m_view, Qt::LeftButton, {}, corners.back());
+    QCOMPARE(m_document->undoStack()->index(), hiddenSteps);
+    QCOMPARE(reported.count(), 1);
+    QVERIFY2(reported.at(0).at(0).toString().contains(QStringLiteral("hidden")), qPrintable(reported.at(0).at(0).toString()));
+    m_document->undoStack()->undo();
+    settle();
 }
 
 void AnnotationViewTest::escapeCancelsTheLasso()

@@ -2,6 +2,7 @@
 // file, undo/redo from the Edit menu, save and reopen a project, the développée linked to the 3D view,
 // the skydome task, the language menu, closing with a task running; a pose edit reaches the 3D view as a
 // pose only (no new cut), any other edit as new fragments.
+#include "AnnotationActions.h"
 #include "AssemblyActions.h"
 #include "DeveloppeeLink.h"
 #include "DrumOctreeFixture.h"
@@ -15,6 +16,7 @@
 #include "WidgetTestSupport.h"
 #include "stylos/core/scene/ProjectFile.h"
 #include "stylos/core/scene/SceneEigen.h"
+#include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/DemoScene.h"
@@ -26,6 +28,7 @@
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QAction>
+#include <QComboBox>
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
@@ -60,6 +63,7 @@ private Q_SLOTS:
     void switchesTheLanguageFromTheMenu();
     void statusReadoutFormats();
     void closingCancelsTasksAndSavesTheLayout();
+    void theLassoAndTheLegendShareTheActiveClass();
 
 private:
     /** A window with dialogs off, shown, the importer writing into the test folder. */
@@ -88,6 +92,29 @@ void MainWindowTest::init()
 void MainWindowTest::cleanup()
 {
     QSettings().clear();
+}
+
+void MainWindowTest::theLassoAndTheLegendShareTheActiveClass()
+{
+    using stylos::core::annotation::AnnotationLayer;
+    auto window = makeWindow();
+    QComboBox* box = window->annotation().classBox();
+    widgets::DeveloppeeAnnotator& annotator = window->annotator();
+    // Chosen in the Legend dock (the annotator's active class): the lasso's box follows.
+    annotator.setActive(AnnotationLayer::Material, 4);
+    QCOMPARE(box->currentData().toInt(), 4);
+    annotator.setActive(AnnotationLayer::Material, 2);
+    QCOMPARE(box->currentData().toInt(), 2);
+    // Chosen in the lasso's box: the Legend dock and the développée follow.
+    const int three = box->findData(3);
+    QVERIFY(three >= 0);
+    box->setCurrentIndex(three);
+    Q_EMIT box->activated(three);
+    QCOMPARE(int(annotator.activeClass()), 3);
+    QCOMPARE(annotator.layer(), AnnotationLayer::Material);
+    // A class of the other layer leaves the lasso's (material) box as it is.
+    annotator.setActive(AnnotationLayer::Toolmark, 1);
+    QCOMPARE(box->currentData().toInt(), 3);
 }
 
 std::unique_ptr<app::MainWindow> MainWindowTest::makeWindow()
