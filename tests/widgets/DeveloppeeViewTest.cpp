@@ -294,6 +294,36 @@ void DeveloppeeViewTest::guideLinesLandOnTheirAzimuth()
     QVERIFY2(seen, "the guide line is drawn");
     m_view->setGuideLines({});
     QVERIFY(m_view->guideColumns().empty());
+
+    // A fragment's développée (an arc: here the image's first 0.5 rad, 25 × 40 pixels, narrower than the view so
+    // the canvas shows on both sides): a line at 0.25 rad is drawn on it, the one at 1 rad, beyond it, is not.
+    const int arcColumns = int(std::lround(0.5 * 0.5 / PixelSize));
+    const QImage arc = m_fixture->image.copy(0, 0, arcColumns, m_fixture->image.height());
+    auto arcHeights = std::make_shared<HeightField>(HeightField::create(arcColumns, Height, PixelSize).value());
+    for (int r = 0; r < Height; ++r)
+        for (int c = 0; c < arcColumns; ++c) arcHeights->setMeasured(c, r, m_fixture->heights->heightAt(c, r));
+    m_view->setDeveloppee(FragmentId, arc, arcHeights, m_fixture->map);
+    std::vector<DeveloppeeView::GuideLine> arcLines;
+    for (double offset : {0.25, 1.0}) {
+        const double phi = 0.3 + offset;
+        arcLines.push_back({axis.point + 0.25 * axis.direction + 0.5 * (std::cos(phi) * e1 + std::sin(phi) * e2),
+                            axis.direction});
+    }
+    m_view->setGuideLines(arcLines);
+    m_view->fitToWindow();
+    const QImage arcShot = m_view->grab().toImage();
+    const auto guideNear = [&](const QPointF& p) {
+        for (int dx = -2; dx <= 2; ++dx)
+            for (int dy = -3; dy <= 3; ++dy) {
+                const QColor c = arcShot.pixelColor(int(p.x()) + dx, int(p.y()) + dy);
+                if (c.blue() - c.red() > 40) return true; // the guide's blue over the grey image or canvas
+            }
+        return false;
+    };
+    QVERIFY(guideNear(m_view->imageToWidget(QPointF(0.25 * 0.5 / PixelSize, Height / 2.0))));
+    const QPointF beyond = m_view->imageToWidget(QPointF(1.0 * 0.5 / PixelSize, Height / 2.0));
+    QVERIFY(beyond.x() > m_view->imageToWidget(QPointF(arcColumns, 0)).x() + 5 && beyond.x() < m_view->width() - 3);
+    QVERIFY2(!guideNear(beyond), "no line beyond the fragment's arc");
 }
 
 void DeveloppeeViewTest::wheelZoomsAboutTheCursor()

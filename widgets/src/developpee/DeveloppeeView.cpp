@@ -355,6 +355,10 @@ void DeveloppeeView::drawGuideLines(QPainter& painter) const
     for (const GuideLine& line : m_guideLines) {
         const auto ends = guideEnds(line);
         if (!ends) continue;
+        // A fragment's développée spans an arc: the drum's flutes beyond it are not drawn on the empty canvas.
+        const double width = double(m_image.width());
+        if (std::max(ends->first.x(), ends->second.x()) < 0.0 || std::min(ends->first.x(), ends->second.x()) > width)
+            continue;
         const QPointF top = imageToWidget(ends->first), bottom = imageToWidget(ends->second);
         painter.setPen(QPen(GuideColour, 1.0, Qt::DotLine));
         painter.drawLine(top, bottom);
