@@ -2601,8 +2601,8 @@
         <translation>Δεν ήταν δυνατή η αντιγραφή των οκταδικών δέντρων στον φάκελο του έργου: %1.</translation>
     </message>
     <message>
-        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
-        <translation>Η διάταξη πίνακα που φυλάσσεται στο %1 δεν διαβάστηκε: το έργο ανοίγει χωρίς αυτήν, και το κείμενό της μένει στο αρχείο έως ότου εξαχθεί νέος πίνακας.</translation>
+        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is set (File › Export plate…).</source>
+        <translation>Η διάταξη πίνακα που φυλάσσεται στο %1 δεν διαβάστηκε: το έργο ανοίγει χωρίς αυτήν, και το κείμενό της μένει στο αρχείο έως ότου οριστεί νέος πίνακας (Αρχείο › Εξαγωγή πίνακα…).</translation>
     </message>
     <message>
         <source>%1 holds keys this version of Stylos does not read; they are left out and will not be saved: %2</source>

@@ -2597,7 +2597,7 @@
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
+        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is set (File › Export plate…).</source>
         <translation type="unfinished"></translation>
     </message>
     <message>

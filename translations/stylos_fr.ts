@@ -2597,8 +2597,8 @@
         <translation>Impossible de copier les octrees dans le dossier du projet : %1.</translation>
     </message>
     <message>
-        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is exported.</source>
-        <translation>La mise en planche conservée dans %1 n’a pas pu être lue : le projet s’ouvre sans elle, et son texte reste dans le fichier jusqu’à l’export d’une nouvelle planche.</translation>
+        <source>The plate layout kept in %1 could not be read: the project opens without it, and its text stays in the file until a new plate is set (File › Export plate…).</source>
+        <translation>La mise en planche conservée dans %1 n’a pas pu être lue : le projet s’ouvre sans elle, et son texte reste dans le fichier jusqu’à ce qu’une nouvelle planche soit définie (Fichier › Exporter une planche…).</translation>
     </message>
     <message>
         <source>%1 holds keys this version of Stylos does not read; they are left out and will not be saved: %2</source>

@@ -584,7 +584,7 @@ bool SceneDocument::open(const QString& path, QString* error)
     noteProjectOctrees(absolute);
     if (loaded->plateProblem)
         m_loadErrors << tr("The plate layout kept in %1 could not be read: the project opens without it, and its "
-                           "text stays in the file until a new plate is exported.")
+                           "text stays in the file until a new plate is set (File › Export plate…).")
                                 .arg(QFileInfo(path).fileName()) +
                             QLatin1Char('\n') + QString::fromStdString(loaded->plateProblem->message);
     if (!loaded->unknownKeys.empty()) {
