@@ -181,14 +181,43 @@ void ScanImporterTest::anUndoneImportLeavesNoOctreeOnceTheProjectCloses()
                  (QStringList{"drum.poct", "fragment-2.poct", "fragment.poct", "site.stylos"}));
         doc.undoStack()->undo();
         QVERIFY(doc.save(&error));
+        // A new import drops the undone one's redo step: fragment-2 goes at once (no project file names it now).
         // Imported into the unsaved changes and undone: gone when the document goes, as at a close.
         QCOMPARE(importer.importFiles({m_drumScan}), 1);
         QVERIFY(tasks.waitForIdle(30000));
+        QCOMPARE(stylos::test::filesUnder(kept), (QStringList{"drum-2.poct", "drum.poct", "fragment.poct", "site.stylos"}));
         doc.undoStack()->undo();
-        QCOMPARE(stylos::test::filesUnder(kept),
-                 (QStringList{"drum-2.poct", "drum.poct", "fragment-2.poct", "fragment.poct", "site.stylos"}));
+        QCOMPARE(stylos::test::filesUnder(kept), (QStringList{"drum-2.poct", "drum.poct", "fragment.poct", "site.stylos"}));
     }
     QCOMPARE(stylos::test::filesUnder(kept), (QStringList{"drum.poct", "fragment.poct", "site.stylos"}));
+
+    // Imported, saved, then removed with Delete and saved again: the user removed the fragment, not its file (its
+    // labels may be in it); it stays. An import undone whose step a new edit discards goes at once.
+    const QString removed = freshFolder("removed");
+    {
+        SceneDocument doc(tasks);
+        ScanImporter importer(doc, tasks);
+        importer.setBuildOptions(m_options);
+        QVERIFY(doc.saveAs(removed + "/site.stylos", &error));
+        QCOMPARE(importer.importFiles({m_fragmentScan}), 1);
+        QVERIFY(tasks.waitForIdle(30000));
+        QVERIFY(doc.save(&error));
+        QVERIFY(doc.removeFragment(doc.scene().fragments()[0].id));
+        QVERIFY(doc.save(&error));
+        QCOMPARE(importer.importFiles({m_drumScan}), 1);
+        QVERIFY(tasks.waitForIdle(30000));
+        doc.undoStack()->undo();
+        QCOMPARE(stylos::test::filesUnder(removed), (QStringList{"drum.poct", "fragment.poct", "site.stylos"}));
+        doc.undoStack()->undo(); // the removal undone: the fragment is back
+        QCOMPARE(doc.scene().size(), 1u);
+        // A new edit drops the redo branch, the drum's import with it: its octree goes at once.
+        QVERIFY(doc.renameFragment(doc.scene().fragments()[0].id, QStringLiteral("piece")));
+        QCOMPARE(stylos::test::filesUnder(removed), (QStringList{"fragment.poct", "site.stylos"}));
+        QVERIFY(doc.removeFragment(doc.scene().fragments()[0].id));
+        QVERIFY(doc.save(&error));
+        doc.newProject();
+    }
+    QCOMPARE(stylos::test::filesUnder(removed), (QStringList{"fragment.poct", "site.stylos"}));
 }
 
 void ScanImporterTest::opensAPoctDirectly()

@@ -59,9 +59,8 @@ SceneDocument::~SceneDocument()
 {
     cancelLoads();
     // Commands refer to the document: delete them while it is whole.
-    delete m_undo;
+    delete m_undo; // an undone import's step going releases its octree (releaseOctree())
     m_undo = nullptr;
-    removeUnreferencedImports();
 }
 
 void SceneDocument::noteImportedOctree(const QString& path)
@@ -76,13 +75,16 @@ void SceneDocument::noteProjectOctrees(const QString& path)
     m_projectFiles[QFileInfo(path).absoluteFilePath()] = octrees;
 }
 
-void SceneDocument::removeUnreferencedImports()
+void SceneDocument::releaseOctree(const std::filesystem::path& path)
 {
-    for (const QString& file : std::exchange(m_importedOctrees, {})) {
-        const bool referenced = std::any_of(m_projectFiles.begin(), m_projectFiles.end(),
-                                            [&file](const auto& project) { return project.second.contains(file); });
-        if (!referenced) QFile::remove(file);
-    }
+    const QString file = QFileInfo(qtPath(path)).absoluteFilePath();
+    if (!m_importedOctrees.contains(file)) return; // not made by this session: never removed
+    for (const Fragment& f : m_scene.fragments())
+        if (QFileInfo(qtPath(f.octreePath)).absoluteFilePath() == file) return;
+    for (const auto& project : m_projectFiles)
+        if (project.second.contains(file)) return; // a project file on disk needs it
+    m_importedOctrees.removeAll(file);
+    QFile::remove(file);
 }
 
 SceneDocument::OctreePtr SceneDocument::octree(FragmentId id) const
@@ -652,8 +654,7 @@ void SceneDocument::resetScene(core::scene::Scene scene)
 {
     cancelLoads();
     Q_EMIT sceneAboutToBeReset();
-    m_undo->clear();
-    removeUnreferencedImports(); // the project closing: its imports no project file keeps
+    m_undo->clear(); // the undone imports' steps go: their octrees are released (releaseOctree())
     m_scene = std::move(scene);
     m_octrees.clear();
     m_developpees.clear();

@@ -15,11 +15,18 @@ AddFragmentCommand::AddFragmentCommand(SceneDocument& document, core::scene::Fra
         setText(text);
 }
 
+AddFragmentCommand::~AddFragmentCommand()
+{
+    // Undone (this step's own state: a fragment removed later by another step is not an undone import).
+    if (m_index >= 0 && !m_applied) m_document.releaseOctree(m_fragment.octreePath);
+}
+
 void AddFragmentCommand::redo()
 {
     if (m_index < 0) m_index = static_cast<int>(m_document.scene().size());
     m_document.insertFragment(m_index, m_fragment, m_octree);
     m_octree.reset(); // the document holds it now
+    m_applied = true;
 }
 
 void AddFragmentCommand::undo()
@@ -27,6 +34,7 @@ void AddFragmentCommand::undo()
     auto [fragment, octree] = m_document.takeFragment(m_fragment.id);
     m_fragment = std::move(fragment);
     m_octree = std::move(octree);
+    m_applied = false;
 }
 
 } // namespace stylos::widgets

@@ -21,6 +21,10 @@ public:
 
     core::scene::FragmentId fragmentId() const { return m_fragment.id; }
 
+    /** An import's step going while undone (the redo branch dropped, the history cleared) releases its octree
+     *  (SceneDocument::releaseOctree: removed if this session's import built it and nothing names it). */
+    ~AddFragmentCommand() override;
+
     void redo() override;
     void undo() override;
 
@@ -29,6 +33,7 @@ private:
     core::scene::Fragment m_fragment;  ///< as it was when last removed by undo()
     SceneDocument::OctreePtr m_octree;
     int m_index = -1;                  ///< position, fixed at the first redo()
+    bool m_applied = false;            ///< redone and not undone since
 };
 
 } // namespace stylos::widgets

@@ -211,13 +211,18 @@ public:
     /** @brief The user cache's "octrees" folder: the default octreeCacheFolder(). */
     static QString defaultOctreeCacheFolder();
     /**
-     * @brief Notes that an import built the octree @p path for this project (ScanImporter; saving notes the copies
-     *        it makes in the project's folder too). When the project is
-     *        closed (a new or another project opened, or the document destroyed), each such file that no project
-     *        file saved or opened since is left referencing is removed: an import undone, or discarded unsaved,
-     *        leaves no octree behind in the project's folder or the cache.
+     * @brief Notes that an import built the octree @p path in this session (ScanImporter; saving notes the copies it
+     *        makes in the project's folder too): such a file is removed when the import that made it can no longer
+     *        be redone — its undo step discarded, or the history cleared by closing the project — while it is undone,
+     *        unless a fragment of the scene or a project file saved or opened in this session names it
+     *        (releaseOctree()). A fragment removed with Delete keeps its file; so does an import never undone.
      */
     void noteImportedOctree(const QString& path);
+    /**
+     * @brief An undone import's undo step is going (AddFragmentCommand): removes @p path when noteImportedOctree()
+     *        noted it and neither the scene nor a project file saved or opened in this session names it.
+     */
+    void releaseOctree(const std::filesystem::path& path);
     /**
      * @brief Replaces the project by the one in @p path and opens each fragment's octree in the
      *        background; loadingFinished() follows with the problems met. On failure (unreadable or
@@ -297,8 +302,6 @@ private:
     void resetScene(core::scene::Scene scene);
     /** Records the octrees the project file @p path references now (after a save or an open). */
     void noteProjectOctrees(const QString& path);
-    /** Removes the imported octrees no project file noted references (noteImportedOctree()). */
-    void removeUnreferencedImports();
     void setProjectPath(const QString& path);
     void startLoad(FragmentId id);
     void loadEnded(FragmentId id, QFutureWatcherBase* watcher);
@@ -316,7 +319,7 @@ private:
     std::map<FragmentId, QPointer<QFutureWatcherBase>> m_loads;  ///< octrees being opened
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
     QString m_path;
-    QStringList m_importedOctrees;                 ///< built by imports since the project was opened or made
+    QStringList m_importedOctrees;                 ///< built by imports (or copied by saves) in this session
     std::map<QString, QStringList> m_projectFiles; ///< per project file saved or opened: the octrees it references
     FragmentId m_dockingDrum = core::scene::NoFragment;
     LabelStore* m_labels;
