@@ -28,8 +28,10 @@ core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const c
         plate.panels.push_back(std::move(panel).value());
     }
     const double width = spec.orientedPage().widthMm - 2 * spec.marginMm;
-    std::vector<double> labels;
-    for (const cp::PanelSpec& panel : spec.panels) labels.push_back(panelLabelWidthMm(panel, spec.panels.size() > 1, texts));
+    const bool lettered = spec.panels.size() > 1;
+    const cp::PanelLabelWidth labels = [&texts, lettered](std::size_t, const cp::PanelSpec& panel) {
+        return panelLabelWidthMm(panel, lettered, texts);
+    };
     auto layout = cp::layoutPlate(spec, sizes, legendRows(spec, plate.panels, plate.legend),
                                   captionHeightMm(QString::fromStdString(spec.caption), width), labels);
     if (!layout) return layout.error();

@@ -231,7 +231,10 @@ TEST(PlateLayout, APanelTakesTheWidthOfItsLabels)
     s.panels = {small, back};
     const std::array<std::array<double, 2>, 2> sizes{{{6, 2}, {60, 40}}};
     const std::array<double, 2> labels{71.5, 55};
-    const auto layout = layoutPlate(s, sizes, 0, 0, labels);
+    const auto widths = [](const std::array<double, 2>& w) {
+        return PanelLabelWidth([w](std::size_t i, const PanelSpec&) { return w[i]; });
+    };
+    const auto layout = layoutPlate(s, sizes, 0, 0, widths(labels));
     ASSERT_TRUE(layout.ok()) << layout.error().message;
     const auto& a = layout->panels[0];
     const auto& b = layout->panels[1];
@@ -245,11 +248,45 @@ TEST(PlateLayout, APanelTakesTheWidthOfItsLabels)
     EXPECT_DOUBLE_EQ(bare->panels[1].image.x, bare->panels[0].image.right() + kPanelGapMm);
     // Labels wider than the row left: the next panel goes to a new row.
     const std::array<double, 2> wide{130, 55};
-    const auto rows = layoutPlate(s, sizes, 0, 0, wide);
+    const auto rows = layoutPlate(s, sizes, 0, 0, widths(wide));
     ASSERT_TRUE(rows.ok());
     EXPECT_GT(rows->panels[1].image.y, rows->panels[0].barRect.bottom());
-    const std::array<double, 1> one{10};
-    EXPECT_FALSE(layoutPlate(s, sizes, 0, 0, one).ok()); // one width per panel
+    // Labels wider than the print area: the row starts at its left edge, never in the margin.
+    const std::array<double, 2> wider{200, 55};
+    const auto edge = layoutPlate(s, sizes, 0, 0, widths(wider));
+    ASSERT_TRUE(edge.ok());
+    EXPECT_DOUBLE_EQ(edge->panels[0].image.x, 15.0);
+}
+
+TEST(PlateLayout, TheScalesSuggestedFitWithTheirOwnLabels)
+{
+    // Ten 30 × 78 mm panels at 1:16 on A4 landscape, each with labels as wide as its bar + 9 mm + "1:N": at a
+    // smaller scale the bars grow and fewer panels share a row, so the suggestion must measure them again.
+    PlateSpec s;
+    s.landscape = true;
+    PanelSpec p;
+    p.view = PanelView::Front;
+    p.scale = 16;
+    s.panels.assign(10, p);
+    const std::vector<std::array<double, 2>> sizes(10, {30, 78});
+    const PanelLabelWidth labels = [](std::size_t, const PanelSpec& panel) {
+        return chooseScaleBar(panel.scale).lengthMm + 9.0 + 2.0 * double(scaleText(panel.scale).size());
+    };
+    const auto refused = layoutPlate(s, sizes, 0, 0, labels);
+    ASSERT_FALSE(refused.ok());
+    const std::string& message = refused.error().message;
+    const auto at = message.find("(A 1:");
+    ASSERT_NE(at, std::string::npos) << message;
+    double scale = 0;
+    ASSERT_EQ(std::sscanf(message.c_str() + at, "(A 1:%lf", &scale), 1) << message;
+    PlateSpec t = s;
+    std::vector<std::array<double, 2>> shrunk = sizes;
+    for (std::size_t i = 0; i < t.panels.size(); ++i) {
+        t.panels[i].scale = scale;
+        shrunk[i] = {30 * 16 / scale, 78 * 16 / scale};
+    }
+    const auto fits = layoutPlate(t, shrunk, 0, 0, labels);
+    EXPECT_TRUE(fits.ok()) << message << " → " << (fits.ok() ? "" : fits.error().message);
 }
 
 TEST(PlateLayout, PanelsTooTallTogetherAreGivenScalesThatFit)

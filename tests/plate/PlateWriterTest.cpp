@@ -342,8 +342,8 @@ TEST(PlateWriter, ASmallPanelsLabelsKeepClearOfTheNext)
     EXPECT_GT(plate::panelLabelWidthMm(spec.panels[0], true, french),
               plate::panelLabelWidthMm(spec.panels[0], true, plate::PlateTexts::english())); // the longer title
     EXPECT_EQ(plate->texts.decimalPoint, QStringLiteral(","));
-    // The bar's labels with the plate's decimal point: 50 m at 1:1000 in 5 segments reads 0 … 50 m; at 1:20 the
-    // back view
+    // The bar's labels with the plate's decimal point: at 1:20 the back view's 1 m bar reads 0 0,2 0,4 0,6 0,8 1 m
+    // (written as SVG text).
     const fs::path svg = *fixture().dir / "french.svg";
     ASSERT_TRUE(plate::writePlate(*plate, svg).ok());
     const std::string text = bytesOf(svg);

@@ -52,7 +52,7 @@ std::string scaleText(double scale)
 namespace {
 
 Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                             double captionMm, std::span<const double> labelMm, bool suggest);
+                             double captionMm, const PanelLabelWidth& labelWidth, bool suggest);
 
 /**
  * The scales that would fit where the panels at @p spec's scales need too much height: the smallest factor f
@@ -60,7 +60,7 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
  * none fits below 1:1,000,000.
  */
 std::string fittingScales(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                          double captionMm, std::span<const double> labelMm)
+                          double captionMm, const PanelLabelWidth& labelWidth)
 {
     const auto fitsAt = [&](double f, PlateSpec* scaled) {
         PlateSpec s = spec;
@@ -72,10 +72,12 @@ std::string fittingScales(const PlateSpec& spec, std::span<const std::array<doub
             images[i] = {imageMm[i][0] * shrink, imageMm[i][1] * shrink};
         }
         if (scaled) *scaled = s;
-        return layoutAt(s, images, legendRows, captionMm, labelMm, false).ok();
+        return layoutAt(s, images, legendRows, captionMm, labelWidth, false).ok();
     };
     double largest = 0;
-    for (const PanelSpec& p : spec.panels) largest = std::max(largest, p.scale);
+    for (const PanelSpec& p : spec.panels)
+        if (!p.atMm) largest = std::max(largest, p.scale);
+    if (largest <= 0) return {}; // only placed panels: their scales are the layout file's
     double low = 1.0, high = 1e6 / std::max(largest, 1e-9);
     if (!(high > low) || !fitsAt(high, nullptr)) return {};
     for (int i = 0; i < 60 && high / low > 1.0 + 1e-9; ++i) {
@@ -97,15 +99,15 @@ std::string fittingScales(const PlateSpec& spec, std::span<const std::array<doub
 } // namespace
 
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                                double captionMm, std::span<const double> labelMm)
+                                double captionMm, const PanelLabelWidth& labelWidth)
 {
-    return layoutAt(spec, imageMm, legendRows, captionMm, labelMm, true);
+    return layoutAt(spec, imageMm, legendRows, captionMm, labelWidth, true);
 }
 
 namespace {
 
 Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                             double captionMm, std::span<const double> labelMm, bool suggest)
+                             double captionMm, const PanelLabelWidth& labelWidth, bool suggest)
 {
     PlateLayout out;
     out.page = spec.orientedPage();
@@ -117,10 +119,13 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
     const bool stated = spec.pageName.find_first_of("xX") != std::string::npos;
     const std::string pageText = "the " + spec.pageName + (spec.landscape ? (stated ? " turned" : " landscape") : "") +
                                  " print area is " + areaText;
-    if (imageMm.size() != spec.panels.size() || (!labelMm.empty() && labelMm.size() != spec.panels.size()))
-        return Error{ErrorCode::InvalidArgument, "layoutPlate: one image size (and label width) per panel is needed"};
+    if (imageMm.size() != spec.panels.size())
+        return Error{ErrorCode::InvalidArgument, "layoutPlate: one image size per panel is needed"};
     // What a panel takes across its row: its image, or its title line and bar when they are wider.
-    const auto blockWidth = [&](std::size_t i) { return std::max(imageMm[i][0], labelMm.empty() ? 0.0 : labelMm[i]); };
+    std::vector<double> blocks(spec.panels.size());
+    for (std::size_t i = 0; i < blocks.size(); ++i)
+        blocks[i] = std::max(imageMm[i][0], labelWidth ? labelWidth(i, spec.panels[i]) : 0.0);
+    const auto blockWidth = [&](std::size_t i) { return blocks[i]; };
     const bool letters = spec.panels.size() > 1;
 
     // Panels too large on their own.
@@ -149,7 +154,7 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
     double rowW = 0, rowH = 0;
     out.panels.resize(spec.panels.size());
     auto flush = [&]() {
-        double x = area.x + 0.5 * (area.w - rowW);
+        double x = area.x + std::max(0.0, 0.5 * (area.w - rowW)); // a row wider than the area (labels) starts at its edge
         for (const std::size_t i : row) {
             const std::string letter = letters ? std::string(1, char('A' + i)) : std::string();
             out.panels[i] = place(spec.panels[i], x, y + kLetterBandMm, imageMm[i], letter);
@@ -194,7 +199,7 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
         bottom = out.caption.bottom();
     }
     if (bottom > area.bottom() + 1e-9) {
-        const std::string scales = suggest ? fittingScales(spec, imageMm, legendRows, captionMm, labelMm) : std::string();
+        const std::string scales = suggest ? fittingScales(spec, imageMm, legendRows, captionMm, labelWidth) : std::string();
         return Error{ErrorCode::InvalidArgument, "the panels" + std::string(legendRows > 0 ? ", the legend" : "") +
                                                      (captionMm > 0 ? " and the caption" : "") + " need " +
                                                      mm(bottom - area.y) + " mm of height; " + pageText +

@@ -3,6 +3,7 @@
 #include "stylos/core/scene/SceneEigen.h"
 
 #include <algorithm>
+#include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>

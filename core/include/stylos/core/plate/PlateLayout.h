@@ -18,6 +18,7 @@
 #include "stylos/core/plate/ScaleBar.h"
 
 #include <array>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -56,16 +57,20 @@ struct PlateLayout {
     RectMm caption;        ///< h = 0: no caption
 };
 
+/** @brief The width on paper (mm) that panel @p index's title line and its bar with "1:N" take at the panel's scale
+ *         (the painter measures them; the bar's length and "1:N" change with the scale). */
+using PanelLabelWidth = std::function<double(std::size_t index, const PanelSpec& panel)>;
+
 /**
  * @brief Places @p spec's panels, whose images are @p imageMm (width, height on paper, mm, one per panel), with
- *        a legend of @p legendRows rows (0: none) and a caption band of @p captionMm (0: none). @p labelMm (one per
- *        panel, or empty) is the width the panel's title line and its bar with "1:N" take on paper (the painter
- *        measures them): a panel takes max(image, labels) in its row, so a small image's texts do not run into
- *        the next panel. When the panels, legend and caption need more height than the print area, the message
- *        gives scales that would fit (every panel's scale times one factor, rounded up).
+ *        a legend of @p legendRows rows (0: none) and a caption band of @p captionMm (0: none). With @p labelWidth, a
+ *        panel takes max(image, labels) in its row, so a small image's texts do not run into the next panel (a row
+ *        wider than the print area starts at its left edge). When the panels, legend and caption need more height
+ *        than the print area, the message gives scales that would fit (the flowing panels' scales times one
+ *        factor, rounded up; their labels measured again at those scales).
  */
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                                double captionMm, std::span<const double> labelMm = {});
+                                double captionMm, const PanelLabelWidth& labelWidth = {});
 
 /** @brief "1:10", "1:2.5". */
 std::string scaleText(double scale);
