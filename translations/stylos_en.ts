@@ -2469,6 +2469,11 @@
         <source>axis</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>.</source>
+        <comment>the decimal point of the numbers on a plate</comment>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::RemoveFragmentCommand</name>

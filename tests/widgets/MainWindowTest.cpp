@@ -18,6 +18,7 @@
 #include "stylos/core/scene/SceneEigen.h"
 #include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/plate/PlateTexts.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/document/ScanImporter.h"
@@ -561,10 +562,14 @@ void MainWindowTest::switchesTheLanguageFromTheMenu()
     QCOMPARE(m_translations->loadedLanguage(), QStringLiteral("fr"));
     QTRY_COMPARE(file->title(), QStringLiteral("&Fichier")); // LanguageChange is posted, not sent
     QCOMPARE(app::Translations::savedLanguage(), QStringLiteral("fr"));
+    // A plate's numbers take the chosen language's decimal point, whatever the system's locale.
+    QCOMPARE(widgets::PlateTexts::translated({}).decimalPoint, QStringLiteral(","));
     pick(QStringLiteral("el"));
     QTRY_COMPARE(file->title(), QStringLiteral("&Αρχείο"));
+    QCOMPARE(widgets::PlateTexts::translated({}).decimalPoint, QStringLiteral(","));
     pick(QStringLiteral("en"));
     QTRY_COMPARE(file->title(), QStringLiteral("&File"));
+    QCOMPARE(widgets::PlateTexts::translated({}).decimalPoint, QStringLiteral("."));
 }
 
 void MainWindowTest::statusReadoutFormats()

@@ -3,7 +3,6 @@
 
 #include "stylos/widgets/annotation/LegendText.h"
 
-#include <QLocale>
 
 #include <map>
 #include <memory>
@@ -19,7 +18,8 @@ plate::PlateTexts PlateTexts::translated(const core::annotation::Legend& legend)
     t.shadings = {tr("skydome"), tr("light"), tr("height"), tr("headlight")};
     t.layerTitles = {LegendText::layerTitle(AnnotationLayer::Material), LegendText::layerTitle(AnnotationLayer::Toolmark)};
     t.axis = tr("axis");
-    t.decimalPoint = QLocale().decimalPoint(); // "0,5 m" and "1:2,5" in French
+    // The plate's language's, not the system's: "0,5 m" and "1:2,5" on a French plate whatever the machine.
+    t.decimalPoint = tr(".", "the decimal point of the numbers on a plate");
     auto names = std::make_shared<std::map<std::pair<int, int>, QString>>();
     for (const AnnotationLayer layer : core::annotation::AllAnnotationLayers)
         for (const core::annotation::LegendClass& c : legend.classes(layer))
