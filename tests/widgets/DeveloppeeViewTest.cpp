@@ -403,8 +403,15 @@ void DeveloppeeViewTest::dockComputeCarriesTheBarSettings()
     QCOMPARE(pixel->value(), 0.25);
     type(QStringLiteral("2e3")); // beyond 1000 mm: not applied
     QCOMPARE(pixel->value(), 0.25);
+    type(QStringLiteral("1e-3")); // rounds to 0.00 mm, which is "Automatic": not applied (it became Automatic)
+    QCOMPARE(pixel->value(), 0.25);
     pixel->setValue(0.0);
     QCOMPARE(pixel->text(), pixel->specialValueText());
+    // Typed and not entered (a shortcut pressed with the focus still in the field): the settings read what is shown.
+    pixel->setFocus();
+    pixel->selectAll();
+    QTest::keyClicks(pixel, QStringLiteral("3e-1"));
+    QCOMPARE(dock.settings().pixelSize, 0.0003);
     pixel->setValue(0.5);
     QVERIFY(s.axis && s.axis->point == m_fixture->axis.point && s.axis->direction == m_fixture->axis.direction);
     // Directions only apply to the skydome; busy disables Compute.

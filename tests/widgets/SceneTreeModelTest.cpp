@@ -278,6 +278,10 @@ void SceneTreeModelTest::poseFieldsReadScientificNotation()
     QCOMPARE(x->value(), 0.0025);
     type("2,5");
     QCOMPARE(x->value(), 2.5);
+    type("1.5"); // the point as a decimal point, never as Greek's group separator (it read 15)
+    QCOMPARE(x->value(), 1.5);
+    type("1.500");
+    QCOMPARE(x->value(), 1.5);
     x->setLocale(QLocale::c());
 
     // A plain number out of range is not applied either (the spin box refused the last key: 720° became 72°).

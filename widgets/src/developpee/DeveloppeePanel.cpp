@@ -102,6 +102,11 @@ DeveloppeePanel::DeveloppeePanel(QWidget* parent)
 
 DeveloppeeSettings DeveloppeePanel::settings() const
 {
+    // What the fields show, typed and not yet entered included: a compute started by a shortcut (Ctrl+D) while the
+    // focus is still in a field uses the value the user sees (the fields apply on Enter or on leaving only).
+    for (QAbstractSpinBox* field : {static_cast<QAbstractSpinBox*>(m_directions), static_cast<QAbstractSpinBox*>(m_pixelSize),
+                                    static_cast<QAbstractSpinBox*>(m_smoothing)})
+        field->interpretText();
     DeveloppeeSettings s = m_hidden;
     s.surface = static_cast<SurfaceKind>(m_surface->currentData().toInt());
     s.shading = static_cast<DeveloppeeShading>(m_shading->currentData().toInt());

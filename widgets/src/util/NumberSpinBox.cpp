@@ -26,11 +26,13 @@ QString NumberSpinBox::numberPart(const QString& text) const
 
 std::optional<double> NumberSpinBox::parse(const QString& number) const
 {
+    // Group separators are never read (the boxes never show them): in Greek, whose group separator is the point,
+    // "1.5" was read as 15. So a point is a decimal point in every language, as the locale's own is.
+    QLocale local = locale();
+    local.setNumberOptions(local.numberOptions() | QLocale::RejectGroupSeparator);
     bool ok = false;
-    double value = locale().toDouble(number, &ok);
-    // A point is the decimal point where the locale's is another and the point separates no groups (French), and
-    // in scientific notation always (2.5e-3 in Greek, whose group separator is the point).
-    if (!ok && (number.contains(QLatin1Char('e'), Qt::CaseInsensitive) || locale().groupSeparator() != QLatin1String("."))) {
+    double value = local.toDouble(number, &ok);
+    if (!ok) {
         QLocale c = QLocale::c();
         c.setNumberOptions(QLocale::RejectGroupSeparator);
         value = c.toDouble(number, &ok);
@@ -42,10 +44,17 @@ std::optional<double> NumberSpinBox::parse(const QString& number) const
 QValidator::State NumberSpinBox::validate(QString& text, int& pos) const
 {
     const QString number = numberPart(text);
-    if (const auto value = parse(number))
+    if (const auto value = parse(number)) {
         // Out of range: kept as typed, not applied (the plain spin box refused the key that took it out of range,
         // so 720 became 72 and was applied).
-        return *value >= minimum() && *value <= maximum() ? QValidator::Acceptable : QValidator::Intermediate;
+        if (*value < minimum() || *value > maximum()) return QValidator::Intermediate;
+        // A value that the box's decimals round to its special value ("Automatic" for 0): not that (1e-3 mm in a
+        // box of 0.01 mm became Automatic).
+        const double unit = std::pow(10.0, decimals());
+        if (!specialValueText().isEmpty() && *value != minimum() && std::round(*value * unit) / unit == minimum())
+            return QValidator::Intermediate;
+        return QValidator::Acceptable;
+    }
     // What may still become a number as it is typed: "-", "2.", ",5", "1e", "2,5E-".
     const QString point = QRegularExpression::escape(locale().decimalPoint());
     const QRegularExpression started(QStringLiteral("^[+-]?[0-9]*((%1|\\.)[0-9]*)?([eE][+-]?[0-9]*)?$").arg(point));

@@ -4,7 +4,9 @@
 // plain spin box dropped the "e" as it was typed, so "1e12" became 112 without a word. Values are applied on Enter
 // or on leaving the field only (no keyboard tracking). A number out of range stays
 // Intermediate: Enter does not apply it and the box goes back to its value (Qt's CorrectToPreviousValue);
-// so is a plain number out of range (the plain spin box refused the last key: 720° became 72°).
+// so is a plain number out of range (the plain spin box refused the last key: 720° became 72°), and one that the
+// decimals would round to the special value ("Automatic"). Group separators are never read: a point is a decimal
+// point in every language (in Greek, whose group separator is the point, "1.5" was read as 15).
 #include <QDoubleSpinBox>
 
 #include <optional>
