@@ -113,6 +113,24 @@ TEST(ProjectOctreesTest, OctreesElsewhereCanBeLeftWhereTheyAreButNotTheCaches)
     EXPECT_EQ(scene.find(big)->octreePath, d.elsewhere / "big.poct");
 }
 
+TEST(ProjectOctreesTest, ACopyNeverTakesTheNameOfAnImportStillBuilding)
+{
+    // An import is building site/scan.poct (not on disk yet) while the project is saved: the octree scan.poct from
+    // elsewhere is copied as scan-2.poct, not onto the name the import will rename its result to.
+    Folders d;
+    test::writeText(d.elsewhere / "scan.poct", "the drum");
+    Scene scene;
+    const FragmentId drum = addFragment(scene, "Drum", d.elsewhere / "scan.poct");
+    const fs::path building = d.project.parent_path() / "scan.poct";
+    const GatherPlan plan = planGather(scene, d.project, d.cache, {building});
+    ASSERT_EQ(plan.transfers.size(), 1u);
+    EXPECT_EQ(plan.transfers[0].to.filename(), "scan-2.poct");
+    EXPECT_EQ(planGather(scene, d.project, d.cache).transfers[0].to.filename(), "scan.poct"); // without it
+    ASSERT_TRUE(gather(scene, plan, true).ok());
+    EXPECT_EQ(contents(scene.find(drum)->octreePath), "the drum");
+    EXPECT_FALSE(fs::exists(building));
+}
+
 TEST(ProjectOctreesTest, AFailedCopyNamesBothFilesLeavesNoPartAndTheSceneTrue)
 {
     Folders d;

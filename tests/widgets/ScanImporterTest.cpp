@@ -12,6 +12,7 @@
 #include "stylos/widgets/document/SceneTreeModel.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 
+#include <QFile>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -31,6 +32,7 @@ private Q_SLOTS:
     void importsIntoTheProjectFolderOnceSaved();
     void anUndoneImportLeavesNoOctreeOnceTheProjectCloses();
     void opensAPoctDirectly();
+    void aSaveDuringAnImportCopiesNoOctreeOntoItsName();
     void aBrokenFileIsNamedAndNothingIsAdded();
     void skippedPointsAreSaid();
     void cancelLeavesNothing();
@@ -218,6 +220,42 @@ void ScanImporterTest::anUndoneImportLeavesNoOctreeOnceTheProjectCloses()
         doc.newProject();
     }
     QCOMPARE(stylos::test::filesUnder(removed), (QStringList{"fragment.poct", "site.stylos"}));
+}
+
+void ScanImporterTest::aSaveDuringAnImportCopiesNoOctreeOntoItsName()
+{
+    // An octree elsewhere named fragment.poct is in the scene; a scan named fragment.ply is being imported into the
+    // project's folder (as fragment.poct) when the project is saved: the save's copy takes fragment-2.poct, so the
+    // finished import does not replace it (the project named the wrong scan).
+    const QString elsewhere = freshFolder("race-elsewhere");
+    const QString poct = stylos::test::makeOctreeFile(elsewhere, "fragment.poct");
+    const QString project = freshFolder("race");
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    importer.setBuildOptions(m_options);
+    importer.setCacheDirectory(freshFolder("cache-race"));
+    QString error;
+    QVERIFY(doc.saveAs(project + "/site.stylos", &error));
+    QCOMPARE(importer.importFiles({poct}), 1);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCoreApplication::processEvents();
+    QCOMPARE(doc.scene().size(), 1u);
+    const auto direct = doc.scene().fragments()[0].id;
+    QCOMPARE(importer.importFiles({m_fragmentScan}), 1); // building fragment.poct in the project's folder
+    QVERIFY(doc.save(&error)); // before the import ends (its end is delivered by the event loop)
+    QCOMPARE(QString::fromStdString(doc.fragment(direct)->octreePath.string()), project + "/fragment-2.poct");
+    QVERIFY(tasks.waitForIdle(30000));
+    QCoreApplication::processEvents();
+    QCOMPARE(doc.scene().size(), 2u);
+    QCOMPARE(QString::fromStdString(doc.scene().fragments()[1].octreePath.string()), project + "/fragment.poct");
+    QCOMPARE(stylos::test::filesUnder(project), (QStringList{"fragment-2.poct", "fragment.poct", "site.stylos"}));
+    const auto bytes = [](const QString& path) {
+        QFile file(path);
+        return file.open(QIODevice::ReadOnly) ? file.readAll() : QByteArray();
+    };
+    QVERIFY(!bytes(poct).isEmpty());
+    QCOMPARE(bytes(project + "/fragment-2.poct"), bytes(poct));
 }
 
 void ScanImporterTest::opensAPoctDirectly()

@@ -60,12 +60,14 @@ Status copyWhole(const fs::path& from, const fs::path& to)
 
 } // namespace
 
-GatherPlan planGather(const Scene& scene, const fs::path& projectPath, const fs::path& cacheFolder)
+GatherPlan planGather(const Scene& scene, const fs::path& projectPath, const fs::path& cacheFolder,
+                      const std::set<fs::path>& reserved)
 {
     GatherPlan plan;
     const fs::path folder = normalised(fs::absolute(projectPath).parent_path());
     const fs::path cache = cacheFolder.empty() ? fs::path{} : normalised(cacheFolder);
     std::set<fs::path> taken;
+    for (const fs::path& path : reserved) taken.insert(normalised(path));
     for (const Fragment& f : scene.fragments()) {
         if (f.octreeMissing || f.octreePath.empty()) continue;
         const fs::path from = normalised(f.octreePath);

@@ -142,6 +142,7 @@ QString ScanImporter::reserveOutput(const QString& input)
     for (int n = 2; QFileInfo::exists(candidate) || m_reserved.contains(candidate); ++n)
         candidate = QDir(folder).absoluteFilePath(QStringLiteral("%1-%2.poct").arg(stem).arg(n));
     m_reserved.insert(candidate);
+    m_document.reserveOctreePath(candidate); // a save meanwhile copies no octree onto this name
     return candidate;
 }
 
@@ -150,6 +151,7 @@ void ScanImporter::importEnded(const QString& input, const QString& output, cons
 {
     m_pending.remove(watcher);
     m_reserved.remove(output);
+    if (!output.isEmpty()) m_document.releaseOctreePath(output);
     auto* typed = static_cast<QFutureWatcher<ImportResult>*>(watcher);
     const bool delivered = !typed->isCanceled() && typed->future().resultCount() > 0;
     const ImportResult result = delivered ? typed->result() : ImportResult{};

@@ -75,6 +75,16 @@ void SceneDocument::noteProjectOctrees(const QString& path)
     m_projectFiles[QFileInfo(path).absoluteFilePath()] = octrees;
 }
 
+void SceneDocument::reserveOctreePath(const QString& path)
+{
+    m_reservedOctrees << QFileInfo(path).absoluteFilePath();
+}
+
+void SceneDocument::releaseOctreePath(const QString& path)
+{
+    m_reservedOctrees.removeOne(QFileInfo(path).absoluteFilePath());
+}
+
 void SceneDocument::releaseOctree(const std::filesystem::path& path)
 {
     const QString file = QFileInfo(qtPath(path)).absoluteFilePath();
@@ -530,8 +540,10 @@ QString SceneDocument::defaultOctreeCacheFolder()
 
 core::scene::GatherPlan SceneDocument::octreeGatherPlan(const QString& path) const
 {
+    std::set<std::filesystem::path> reserved;
+    for (const QString& building : m_reservedOctrees) reserved.insert(building.toStdString());
     return core::scene::planGather(m_scene, QFileInfo(path).absoluteFilePath().toStdString(),
-                                   m_octreeCache.toStdString());
+                                   m_octreeCache.toStdString(), reserved);
 }
 
 bool SceneDocument::gatherOctrees(const QString& path, OctreeCopies copies, QString* error)

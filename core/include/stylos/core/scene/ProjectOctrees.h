@@ -24,6 +24,7 @@
 #include <chrono>
 #include <cstdint>
 #include <filesystem>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -47,10 +48,11 @@ struct GatherPlan {
 /**
  * @brief What bringing @p scene's octrees into the folder of @p projectPath involves. Octrees already in
  *        that folder (or below it), missing ones and fragments without an octree are left alone; an octree
- *        counts as in @p cacheFolder when it lies in it or below.
+ *        counts as in @p cacheFolder when it lies in it or below. A copy never takes a name of @p reserved (absolute
+ *        paths that something else is about to write: the octrees of imports still building).
  */
 GatherPlan planGather(const Scene& scene, const std::filesystem::path& projectPath,
-                      const std::filesystem::path& cacheFolder);
+                      const std::filesystem::path& cacheFolder, const std::set<std::filesystem::path>& reserved = {});
 
 /** @brief What gather() did. */
 struct GatherReport {

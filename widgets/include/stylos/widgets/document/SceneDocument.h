@@ -218,6 +218,10 @@ public:
      *        (releaseOctree()). A fragment removed with Delete keeps its file; so does an import never undone.
      */
     void noteImportedOctree(const QString& path);
+    /** @brief An import is building @p path (ScanImporter): a save copies no octree onto that name meanwhile (it
+     *         renamed the finished import over the copy: the project named the wrong scan). Until released. */
+    void reserveOctreePath(const QString& path);
+    void releaseOctreePath(const QString& path);
     /**
      * @brief An undone import's undo step is going (AddFragmentCommand): removes @p path when noteImportedOctree()
      *        noted it and neither the scene nor a project file saved or opened in this session names it.
@@ -320,6 +324,7 @@ private:
     QStringList m_loadErrors;                                    ///< for the next loadingFinished()
     QString m_path;
     QStringList m_importedOctrees;                 ///< built by imports (or copied by saves) in this session
+    QStringList m_reservedOctrees;                 ///< being built by imports (reserveOctreePath())
     std::map<QString, QStringList> m_projectFiles; ///< per project file saved or opened: the octrees it references
     FragmentId m_dockingDrum = core::scene::NoFragment;
     LabelStore* m_labels;
