@@ -127,9 +127,9 @@ QStringList ProjectActions::openableFiles(const QList<QUrl>& urls)
     return files;
 }
 
-bool ProjectActions::openProject(const QString& path)
+bool ProjectActions::openProject(const QString& path, bool askFirst)
 {
-    if (!maybeSave()) return false;
+    if (askFirst && !maybeSave()) return false;
     QString error;
     if (!m_document.open(path, &error)) {
         Q_EMIT reported(error, true);
@@ -265,12 +265,13 @@ void ProjectActions::chooseProject()
 {
     if (!maybeSave()) return;
     QSettings settings;
-    const QString path = QFileDialog::getOpenFileName(&m_window, tr("Open project"),
-                                                      settings.value(LastDirKey).toString(),
-                                                      tr("Stylos projects (*.stylos)"));
+    const QString folder = settings.value(LastDirKey).toString();
+    const QString path = m_chooseProject ? m_chooseProject(m_window, folder)
+                                         : QFileDialog::getOpenFileName(&m_window, tr("Open project"), folder,
+                                                                        tr("Stylos projects (*.stylos)"));
     if (path.isEmpty()) return;
     settings.setValue(LastDirKey, QFileInfo(path).absolutePath());
-    openProject(path);
+    openProject(path, false); // asked above: Discard there is not asked again (a Save then saved what was discarded)
 }
 
 void ProjectActions::importScans()

@@ -13,6 +13,8 @@
 #include <QStringList>
 #include <QUrl>
 
+#include <functional>
+
 class QAction;
 class QMenu;
 class QWidget;
@@ -48,8 +50,9 @@ public:
      *        on import with what to do).
      */
     static QStringList openableFiles(const QList<QUrl>& urls);
-    /** @brief Opens the project @p path (after asking to save changes); false when it failed or was declined. */
-    bool openProject(const QString& path);
+    /** @brief Opens the project @p path (after asking to save changes, unless @p askFirst is false: the caller has
+     *         asked); false when it failed or was declined. */
+    bool openProject(const QString& path, bool askFirst = true);
     /** @brief Saves (asking for a file when never saved); false when it failed or was cancelled. */
     bool save();
     bool saveAs();
@@ -62,6 +65,9 @@ public:
     bool maybeSave();
     /** @brief Whether dialogs may be shown (false for automation and tests). */
     void setPromptsEnabled(bool enabled) { m_prompts = enabled; }
+    /** @brief What File › Open asks for the project to open (default: a file dialog from @p folder; empty: none). */
+    using ProjectChooser = std::function<QString(QWidget& parent, const QString& folder)>;
+    void setProjectChooser(ProjectChooser chooser) { m_chooseProject = std::move(chooser); }
     /** The demo's project: its folder is rebuilt whenever the generator's output differs, so nothing is ever saved
      *  there. Save on the demo asks for a project of one's own (Save as); saving into that folder is refused. */
     void setRebuiltProject(const QString& path) { m_rebuiltProject = path; }
@@ -110,6 +116,7 @@ private:
     /** Whether @p path is in the rebuilt project's folder (symbolic links resolved; the file need not exist). */
     bool isRebuilt(const QString& path) const;
     bool m_prompts = true;
+    ProjectChooser m_chooseProject;
     QString m_rebuiltProject;
 };
 

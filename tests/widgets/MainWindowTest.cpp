@@ -29,6 +29,9 @@
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QAction>
+#include <QApplication>
+#include <QTimer>
+#include <QMessageBox>
 #include <QComboBox>
 #include <QMenu>
 #include <QMenuBar>
@@ -65,6 +68,7 @@ private Q_SLOTS:
     void statusReadoutFormats();
     void closingCancelsTasksAndSavesTheLayout();
     void theLassoAndTheLegendShareTheActiveClass();
+    void openAsksOnceAboutUnsavedChanges();
 
 private:
     /** A window with dialogs off, shown, the importer writing into the test folder. */
@@ -116,6 +120,37 @@ void MainWindowTest::theLassoAndTheLegendShareTheActiveClass()
     // A class of the other layer leaves the lasso's (material) box as it is.
     annotator.setActive(AnnotationLayer::Toolmark, 1);
     QCOMPARE(box->currentData().toInt(), 3);
+}
+
+void MainWindowTest::openAsksOnceAboutUnsavedChanges()
+{
+    // A project to open, then unsaved changes: File › Open asks once (Discard), shows the file dialog, opens. It
+    // asked a second time, and a Save there saved what had just been discarded.
+    auto window = makeWindow();
+    const QString project = m_dir.filePath("asked-once.stylos");
+    QString error;
+    QVERIFY(window->document().saveAs(project, &error));
+    window->document().newProject();
+    importAndWait(*window, {QString::fromStdString(m_drum.ply.string())});
+    QVERIFY(window->document().isModified());
+    window->projectActions().setPromptsEnabled(true);
+    int asked = 0;
+    QTimer answer;
+    QObject::connect(&answer, &QTimer::timeout, [&] {
+        QWidget* modal = QApplication::activeModalWidget();
+        if (auto* box = qobject_cast<QMessageBox*>(modal)) {
+            ++asked;
+            box->button(QMessageBox::Discard)->click();
+        }
+    });
+    answer.start(50);
+    window->projectActions().setProjectChooser([&](QWidget&, const QString&) { return project; });
+    menuAction(*window, QStringLiteral("actionOpen"))->trigger();
+    answer.stop();
+    window->projectActions().setPromptsEnabled(false);
+    QCOMPARE(asked, 1);
+    QCOMPARE(window->document().projectPath(), QFileInfo(project).absoluteFilePath());
+    QVERIFY(window->tasks().waitForIdle(30000));
 }
 
 std::unique_ptr<app::MainWindow> MainWindowTest::makeWindow()
