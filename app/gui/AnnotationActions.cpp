@@ -5,6 +5,7 @@
 #include "AnnotationSync.h"
 
 #include "stylos/widgets/annotation/LassoTool.h"
+#include "stylos/widgets/annotation/LegendText.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
@@ -105,7 +106,7 @@ void AnnotationActions::fillClasses()
     for (const core::annotation::LegendClass& c : m_document.legend().classes(layer)) {
         QPixmap swatch(12, 12);
         swatch.fill(QColor(c.colour.r, c.colour.g, c.colour.b));
-        m_classBox->addItem(QIcon(swatch), QString::fromStdString(c.name), int(c.id));
+        m_classBox->addItem(QIcon(swatch), widgets::LegendText::className(layer, c), int(c.id)); // as the Legend names it
     }
     // The workbench's active class when it is of this layer, else the one shown before, else the first.
     int index = layer == m_activeLayer && m_activeClass > 0 ? m_classBox->findData(int(m_activeClass)) : -1;
@@ -117,7 +118,12 @@ void AnnotationActions::showActive(Layer layer, std::uint8_t classId)
 {
     m_activeLayer = layer;
     m_activeClass = classId;
-    if (layer != (m_sync ? m_sync->layer() : Layer::Material)) return;
+    // A class of the other layer: the lasso (and the 3D view's annotation shading) take that layer, so a lasso
+    // gives the class the Legend highlights (it gave the other layer's class shown in its box).
+    if (m_sync && layer != m_sync->layer()) {
+        m_sync->setLayer(layer); // layerChanged refills the box with the active class
+        return;
+    }
     if (const int index = m_classBox->findData(int(classId)); index >= 0) m_classBox->setCurrentIndex(index);
 }
 
@@ -177,6 +183,7 @@ void AnnotationActions::retranslateUi()
     setToolBarText(*m_erase, tr("Erase", "toolbar"));
     const QStringList names = {tr("&Material / condition layer"), tr("&Tool mark layer")};
     for (QAction* action : m_layers->actions()) action->setText(names.value(action->data().toInt()));
+    fillClasses(); // the default classes' names in the new language
 }
 
 } // namespace stylos::app

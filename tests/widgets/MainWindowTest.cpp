@@ -17,6 +17,7 @@
 #include "stylos/core/scene/ProjectFile.h"
 #include "stylos/core/scene/SceneEigen.h"
 #include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
+#include "stylos/widgets/annotation/LegendText.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/plate/PlateTexts.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
@@ -117,8 +118,14 @@ void MainWindowTest::theLassoAndTheLegendShareTheActiveClass()
     Q_EMIT box->activated(three);
     QCOMPARE(int(annotator.activeClass()), 3);
     QCOMPARE(annotator.layer(), AnnotationLayer::Material);
-    // A class of the other layer leaves the lasso's (material) box as it is.
-    annotator.setActive(AnnotationLayer::Toolmark, 1);
+    // A class of the other layer: the lasso takes that layer (the 3D view's annotation shading with it) and the class.
+    annotator.setActive(AnnotationLayer::Toolmark, 2);
+    QCOMPARE(box->currentData().toInt(), 2);
+    QCOMPARE(box->count(), int(window->document().legend().classes(AnnotationLayer::Toolmark).size()));
+    // The box names the classes as the Legend does (translated defaults).
+    const auto& first = window->document().legend().classes(AnnotationLayer::Toolmark).front();
+    QCOMPARE(box->itemText(0), widgets::LegendText::className(AnnotationLayer::Toolmark, first));
+    annotator.setActive(AnnotationLayer::Material, 3);
     QCOMPARE(box->currentData().toInt(), 3);
 }
 
