@@ -1,6 +1,8 @@
 // File › Export plate… and Export développée image…
 #include "PlateActions.h"
 
+#include "stylos/core/util/SubProgress.h"
+
 #include "stylos/core/image/ImageWriter.h"
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/plate/PlateWriter.h"
@@ -120,13 +122,18 @@ void PlateActions::exportPlate(const cp::PlateSpec& spec, const QString& path)
         [sources, spec, file = path.toStdString(), texts = widgets::PlateTexts::translated(sources->legend)](
             QPromise<Outcome>& promise, core::ProgressSink& progress) {
             Outcome out;
-            auto plate = plate::composePlate(*sources, spec, {}, &progress, texts);
+            // Drawing the panels, then writing the page (a large PDF takes seconds): the bar stops short of 100 %
+            // until the file is in place.
+            core::SubProgress drawing(&progress, 0.0, 0.9);
+            auto plate = plate::composePlate(*sources, spec, {}, &drawing, texts);
             if (!plate) {
                 out.error = QString::fromStdString(plate.error().message);
                 out.cancelled = plate.error().code == core::ErrorCode::Cancelled;
             } else if (auto s = plate::writePlate(*plate, file, &progress); !s) {
                 out.error = QString::fromStdString(s.error().message);
                 out.cancelled = s.error().code == core::ErrorCode::Cancelled; // an existing file left as it was
+            } else {
+                progress.update(1.0);
             }
             promise.addResult(out);
         });

@@ -78,6 +78,7 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
     m_imported->setObjectName(QStringLiteral("fragmentImported"));
     m_size->setObjectName(QStringLiteral("fragmentSize"));
     m_size->setTextInteractionFlags(Qt::TextSelectableByMouse);
+    m_size->setWordWrap(true); // "460.5 × 482.7 × 387.7 mm" breaks at a space in a narrow dock rather than being cut
     m_imported->setWordWrap(true);
     m_file->setWordWrap(true);
     m_file->setTextInteractionFlags(Qt::TextSelectableByMouse);
