@@ -160,10 +160,14 @@ void AnnotationActions::applyLasso(const std::vector<core::view::LassoLeaves>& h
     }
     if (hits.empty()) {
         // A selected fragment that is hidden is not lassoed (its cells cannot be seen): say so rather than "none".
-        bool hiddenSelected = false;
+        bool hiddenSelected = false, shownSelected = false;
         if (m_viewport)
-            for (const core::view::ViewFragment& f : m_viewport->fragments()) hiddenSelected |= f.selected && !f.visible;
-        Q_EMIT reported(hiddenSelected ? tr("Lasso: the selected fragment is hidden; show it to annotate it in 3D")
+            for (const core::view::ViewFragment& f : m_viewport->fragments()) {
+                hiddenSelected |= f.selected && !f.visible;
+                shownSelected |= f.selected && f.visible;
+            }
+        Q_EMIT reported(hiddenSelected && !shownSelected
+                            ? tr("Lasso: the selected fragment is hidden; show it to annotate it in 3D")
                                        : tr("Lasso: no fragment selected or under the lasso"),
                         false);
     } else if (changed == 0) {
