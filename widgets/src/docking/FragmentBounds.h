@@ -19,6 +19,9 @@ public:
 
     /** @brief The bounds of @p id's octree in its own frame; empty while it has none. */
     Eigen::AlignedBox3d of(const SceneDocument& document, SceneDocument::FragmentId id);
+    /** @brief Drops what is kept for @p id (its octree too: a removed fragment's file is not held open). */
+    void forget(SceneDocument::FragmentId id) { m_cache.erase(id); }
+    void clear() { m_cache.clear(); }
 
 private:
     struct Entry {

@@ -112,9 +112,15 @@ FragmentPropertiesWidget::FragmentPropertiesWidget(SceneDocument& document, QWid
         if (id == m_id) refresh();
     });
     connect(&m_document, &SceneDocument::fragmentRemoved, this, [this](quint64 id) {
+        m_centres->forget(id); // its octree is not held open here
+        m_leaves->forget(id);
         if (id == m_id) setFragment(core::scene::NoFragment);
     });
-    connect(&m_document, &SceneDocument::sceneReset, this, [this] { setFragment(core::scene::NoFragment); });
+    connect(&m_document, &SceneDocument::sceneReset, this, [this] {
+        m_centres->clear();
+        m_leaves->clear();
+        setFragment(core::scene::NoFragment);
+    });
     retranslateUi();
     refresh();
 }
