@@ -98,6 +98,16 @@ void DeveloppeeLink::setFragment(core::scene::FragmentId id)
     m_dock.setBusy(m_jobs.isRunning(id));
 }
 
+void DeveloppeeLink::showAssembly(core::scene::AssemblyId id)
+{
+    const core::scene::Assembly* assembly = m_document.assembly(id);
+    const auto stored = assembly ? m_document.developpee(assembly->drum) : nullptr;
+    setFragment(core::scene::NoFragment);
+    if (!stored || !stored->pieceAt) return; // the drum's own développée, or none: not the assembly's
+    m_dock.showResult(*stored);
+    m_dock.setBusy(m_jobs.isRunning(assembly->drum));
+}
+
 void DeveloppeeLink::refreshFragment()
 {
     const core::scene::Fragment* f = m_document.fragment(m_fragment);

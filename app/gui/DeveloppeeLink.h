@@ -50,6 +50,9 @@ public:
 
     /** @brief The fragment Compute works on (the Scene dock's current one); NoFragment for none. */
     void setFragment(core::scene::FragmentId id);
+    /** @brief The Scene dock's current row is assembly @p id: its développée (kept as its drum's by computeAssembly())
+     *         is shown again, with no fragment for Compute (as right after it was computed); none: as setFragment(NoFragment). */
+    void showAssembly(core::scene::AssemblyId id);
 
     /** @brief Marks @p scenePoint in the développée when it shows fragment @p id (else clears its marker). */
     void markInDeveloppee(const Eigen::Vector3d& scenePoint, core::scene::FragmentId id);

@@ -311,7 +311,11 @@ void MainWindow::selectionChanged()
     if (m_sync) m_sync->setSelection(ids);
     const auto current = m_sceneDock->currentFragment();
     m_propertiesDock->setFragment(current);
-    m_developpeeLink->setFragment(ids.size() == 1 ? ids.first() : current);
+    // An assembly's row: its développée again (it said "No développée yet" once another row had been selected).
+    if (const auto assembly = m_sceneDock->currentAssembly(); assembly != core::scene::NoAssembly && current == core::scene::NoFragment)
+        m_developpeeLink->showAssembly(assembly);
+    else
+        m_developpeeLink->setFragment(ids.size() == 1 ? ids.first() : current);
     m_docking->setFragment(ids.size() == 1 ? ids.first() : current);
     m_actions->setSelectionCount(static_cast<int>(ids.size()));
     if (m_sceneDock->model()->isDeveloppee(m_sceneDock->view()->currentIndex())) {

@@ -9,6 +9,8 @@
 // refused with a message and nothing is labelled.
 #include "WidgetTestSupport.h"
 
+#include "DeveloppeeLink.h"
+
 #include "stylos/core/annotation/LabelRaster.h"
 #include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/annotation/PaintRegion.h"
@@ -20,6 +22,7 @@
 #include "stylos/widgets/annotation/DeveloppeeAnnotator.h"
 #include "stylos/widgets/annotation/LabelStore.h"
 #include "stylos/widgets/developpee/AssemblyDeveloppeeJob.h"
+#include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/tasks/TaskManager.h"
@@ -101,6 +104,7 @@ private Q_SLOTS:
     void aStrokeAcrossTheFragmentAndTheDrumIsOneUndoStep();
     void theOverlayFollowsLabelsChangedElsewhere();
     void aStaleDeveloppeeRefusesToPaint();
+    void theAssemblysRowShowsItsDeveloppeeAgain();
 
 private:
     /** Drags the brush along row @p row from column @p from to column @p to; the pixels its dabs take. */
@@ -371,6 +375,30 @@ void AssemblyPaintingTest::aStaleDeveloppeeRefusesToPaint()
     QCOMPARE(refused.size(), 2);
     QCOMPARE(labels(m_drum), drumBefore);
     QCOMPARE(labels(m_fragment), fragmentBefore);
+}
+
+void AssemblyPaintingTest::theAssemblysRowShowsItsDeveloppeeAgain()
+{
+    // The assembly's développée, kept as its drum's (as DeveloppeeLink::computeAssembly keeps it): a fragment's row
+    // shows the fragment (none computed), the assembly's row the assembly's développée again, its pieces outlined.
+    m_document->setDeveloppee(m_drum, std::make_shared<const DeveloppeeResult>(m_result));
+    stylos::widgets::DeveloppeePanel panel;
+    stylos::app::DeveloppeeLink link(*m_document, panel, nullptr);
+    link.setFragment(m_fragment);
+    QVERIFY(!panel.view()->hasDeveloppee());
+    link.showAssembly(m_assembly);
+    QVERIFY(panel.view()->hasDeveloppee());
+    QCOMPARE(panel.view()->image().size(), QSize(m_result.map->width(), m_result.map->height()));
+    QVERIFY(panel.view()->canPaint()); // its pieces' index came with it
+    link.setFragment(m_fragment);
+    QVERIFY(!panel.view()->hasDeveloppee());
+    // Only an assembly's développée: the drum's own, kept instead, is not shown for the assembly's row.
+    DeveloppeeResult own = m_result;
+    own.pieceAt.reset();
+    own.assemblyIndex.reset();
+    m_document->setDeveloppee(m_drum, std::make_shared<const DeveloppeeResult>(own));
+    link.showAssembly(m_assembly);
+    QVERIFY(!panel.view()->hasDeveloppee());
 }
 
 STYLOS_WIDGET_TEST_MAIN(AssemblyPaintingTest)
