@@ -270,13 +270,17 @@ void DeveloppeeViewTest::guideLinesLandOnTheirAzimuth()
     // R·(φ − cut) / s by the map's definition (u = R·((φ − cut) mod 2π), column = u / s).
     const Axis& axis = m_fixture->axis;
     const Eigen::Vector3d e1 = m_fixture->map.referenceDir(), e2 = axis.direction.cross(e1);
-    std::vector<DeveloppeeView::GuideLine> lines;
-    for (double offset : {1.0, 2.0}) {
-        const double phi = 0.3 + offset;
-        lines.push_back({axis.point + 0.25 * axis.direction + 0.5 * (std::cos(phi) * e1 + std::sin(phi) * e2),
-                         axis.direction});
-    }
-    m_view->setGuideLines(lines);
+    // Lines on the surface, parallel to the axis, at these angles past the cut.
+    const auto linesAt = [&](std::initializer_list<double> offsets) {
+        std::vector<DeveloppeeView::GuideLine> lines;
+        for (double offset : offsets) {
+            const double phi = 0.3 + offset;
+            lines.push_back({axis.point + 0.25 * axis.direction + 0.5 * (std::cos(phi) * e1 + std::sin(phi) * e2),
+                             axis.direction});
+        }
+        return lines;
+    };
+    m_view->setGuideLines(linesAt({1.0, 2.0}));
     const auto columns = m_view->guideColumns();
     QCOMPARE(columns.size(), 2u);
     QVERIFY(std::abs(columns[0] - 1.0 * 0.5 / PixelSize) < 1e-6);
@@ -303,13 +307,7 @@ void DeveloppeeViewTest::guideLinesLandOnTheirAzimuth()
     for (int r = 0; r < Height; ++r)
         for (int c = 0; c < arcColumns; ++c) arcHeights->setMeasured(c, r, m_fixture->heights->heightAt(c, r));
     m_view->setDeveloppee(FragmentId, arc, arcHeights, m_fixture->map);
-    std::vector<DeveloppeeView::GuideLine> arcLines;
-    for (double offset : {0.25, 1.0}) {
-        const double phi = 0.3 + offset;
-        arcLines.push_back({axis.point + 0.25 * axis.direction + 0.5 * (std::cos(phi) * e1 + std::sin(phi) * e2),
-                            axis.direction});
-    }
-    m_view->setGuideLines(arcLines);
+    m_view->setGuideLines(linesAt({0.25, 1.0}));
     m_view->fitToWindow();
     const QImage arcShot = m_view->grab().toImage();
     const auto guideNear = [&](const QPointF& p) {
