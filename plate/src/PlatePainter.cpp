@@ -27,6 +27,17 @@ constexpr double kHatchSpacingMm = 1.6;
 constexpr double kHatchPenMm = 0.18;
 constexpr double kLegendColumnMm = 60.0;
 
+/** The plate's font @p pt points high at @p unitsPerMm device units per millimetre: what text() draws with and
+ *  textWidthMm() measures. */
+QFont plateFont(double pt, double unitsPerMm, bool bold = false, bool serif = false)
+{
+    QFont font(serif ? QStringLiteral("DejaVu Serif") : QStringLiteral("DejaVu Sans"));
+    font.setPixelSize(std::max(1, int(std::lround(pt * kPt * unitsPerMm))));
+    font.setBold(bold);
+    font.setHintingPreference(QFont::PreferNoHinting);
+    return font;
+}
+
 /** Draws @p text with its baseline-left (or aligned box) at @p at (mm), @p pt points high, in device pixels so
  *  glyphs are laid out at the device's resolution. */
 /** @return the x (mm) where the text ends. */
@@ -37,10 +48,7 @@ double text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bo
     // device pixels: glyphs are laid out at the device's resolution whatever the page's scale.
     const QTransform t = p.transform();
     const double scale = std::sqrt(std::abs(t.determinant()));
-    QFont font(serif ? QStringLiteral("DejaVu Serif") : QStringLiteral("DejaVu Sans"));
-    font.setPixelSize(std::max(1, int(std::lround(pt * kPt * scale))));
-    font.setBold(bold);
-    font.setHintingPreference(QFont::PreferNoHinting);
+    const QFont font = plateFont(pt, scale, bold, serif);
     p.save();
     p.setTransform(QTransform::fromScale(1.0 / scale, 1.0 / scale) * t);
     p.setFont(font);
@@ -58,10 +66,7 @@ double text(QPainter& p, const QPointF& at, const QString& s, double pt, bool bo
 double textWidthMm(const QString& s, double pt)
 {
     constexpr double unitsPerMm = 100.0;
-    QFont font(QStringLiteral("DejaVu Sans"));
-    font.setPixelSize(std::max(1, int(std::lround(pt * kPt * unitsPerMm))));
-    font.setHintingPreference(QFont::PreferNoHinting);
-    return QFontMetricsF(font).horizontalAdvance(s) / unitsPerMm;
+    return QFontMetricsF(plateFont(pt, unitsPerMm)).horizontalAdvance(s) / unitsPerMm;
 }
 
 QPen pen(double widthMm, const QColor& colour = Qt::black)

@@ -43,12 +43,17 @@ bool cancelled(const core::ProgressSink* progress)
     return progress != nullptr && progress->isCancelRequested();
 }
 
+Error cancelledError(const fs::path& output)
+{
+    return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
+}
+
 Status finish(const fs::path& partial, const fs::path& output, const core::ProgressSink* progress = nullptr)
 {
     std::error_code error;
     if (cancelled(progress)) { // the last moment: an existing file is not replaced
         fs::remove(partial, error);
-        return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
+        return cancelledError(output);
     }
     fs::rename(partial, output, error);
     if (error) {
@@ -256,7 +261,7 @@ Status writeRaster(const PlateContent& plate, const fs::path& output, PlateForma
             }
         }
     }
-    if (cancelled(progress)) return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
+    if (cancelled(progress)) return cancelledError(output);
     return writeImageFile(spec, buffer.data(), output, progress);
 }
 
@@ -302,7 +307,7 @@ Status writePlate(const PlateContent& plate, const fs::path& output, const core:
     const auto format = plateFormatOf(output);
     if (!format)
         return Error::at(ErrorCode::InvalidArgument, output.string(), {}, "a plate is written as .pdf, .svg, .tif or .png");
-    if (cancelled(progress)) return Error::at(ErrorCode::Cancelled, output.string(), {}, "cancelled; the file was not written");
+    if (cancelled(progress)) return cancelledError(output);
     switch (*format) {
     case PlateFormat::Pdf: return writePdf(plate, output, progress);
     case PlateFormat::Svg: return writeSvg(plate, output, progress);

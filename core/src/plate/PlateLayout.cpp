@@ -125,7 +125,6 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
     std::vector<double> blocks(spec.panels.size());
     for (std::size_t i = 0; i < blocks.size(); ++i)
         blocks[i] = std::max(imageMm[i][0], labelWidth ? labelWidth(i, spec.panels[i]) : 0.0);
-    const auto blockWidth = [&](std::size_t i) { return blocks[i]; };
     const bool letters = spec.panels.size() > 1;
 
     // Panels too large on their own.
@@ -158,7 +157,7 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
         for (const std::size_t i : row) {
             const std::string letter = letters ? std::string(1, char('A' + i)) : std::string();
             out.panels[i] = place(spec.panels[i], x, y + kLetterBandMm, imageMm[i], letter);
-            x += blockWidth(i) + kPanelGapMm;
+            x += blocks[i] + kPanelGapMm;
         }
         if (!row.empty()) y += rowH + kPanelGapMm;
         row.clear();
@@ -180,7 +179,7 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
                                                              " × " + mm(out.page.heightMm) + " mm page"};
             continue;
         }
-        const double w = blockWidth(i), h = blockHeight(p, imageMm[i][1]);
+        const double w = blocks[i], h = blockHeight(p, imageMm[i][1]);
         if (!row.empty() && rowW + kPanelGapMm + w > area.w + 1e-9) flush();
         rowW += (row.empty() ? 0.0 : kPanelGapMm) + w;
         rowH = std::max(rowH, h);

@@ -139,10 +139,9 @@ QString ScanImporter::reserveOutput(const QString& input)
     if (!QDir().mkpath(folder)) return {};
     const QString stem = QFileInfo(input).completeBaseName();
     QString candidate = QDir(folder).absoluteFilePath(stem + QStringLiteral(".poct"));
-    for (int n = 2; QFileInfo::exists(candidate) || m_reserved.contains(candidate); ++n)
+    for (int n = 2; QFileInfo::exists(candidate) || m_document.isOctreePathReserved(candidate); ++n)
         candidate = QDir(folder).absoluteFilePath(QStringLiteral("%1-%2.poct").arg(stem).arg(n));
-    m_reserved.insert(candidate);
-    m_document.reserveOctreePath(candidate); // a save meanwhile copies no octree onto this name
+    m_document.reserveOctreePath(candidate); // neither another import nor a save meanwhile takes this name
     return candidate;
 }
 
@@ -150,7 +149,6 @@ void ScanImporter::importEnded(const QString& input, const QString& output, cons
                                QFutureWatcherBase* watcher)
 {
     m_pending.remove(watcher);
-    m_reserved.remove(output);
     if (!output.isEmpty()) m_document.releaseOctreePath(output);
     auto* typed = static_cast<QFutureWatcher<ImportResult>*>(watcher);
     const bool delivered = !typed->isCanceled() && typed->future().resultCount() > 0;
@@ -173,7 +171,7 @@ void ScanImporter::importEnded(const QString& input, const QString& output, cons
         fragment.pose = placement(*result.octree);
         const auto id = m_document.addFragment(std::move(fragment), result.octree,
                                                [file = QFileInfo(input).fileName()] { return tr("Import %1").arg(file); });
-        if (!output.isEmpty()) m_document.noteImportedOctree(output); // removed with the project if no save keeps it
+        if (!output.isEmpty()) m_document.noteImportedOctree(output); // removed if this import is undone for good
         Q_EMIT fragmentImported(id);
         if (result.skippedPoints > 0) // said, as stylos-cli says it: no point dropped silently
             Q_EMIT importNote(id, tr("%1: %Ln point(s) with NaN or infinite coordinates skipped", nullptr,

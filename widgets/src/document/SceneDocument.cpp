@@ -85,6 +85,11 @@ void SceneDocument::releaseOctreePath(const QString& path)
     m_reservedOctrees.removeOne(QFileInfo(path).absoluteFilePath());
 }
 
+bool SceneDocument::isOctreePathReserved(const QString& path) const
+{
+    return m_reservedOctrees.contains(QFileInfo(path).absoluteFilePath());
+}
+
 void SceneDocument::releaseOctree(const std::filesystem::path& path)
 {
     const QString file = QFileInfo(qtPath(path)).absoluteFilePath();

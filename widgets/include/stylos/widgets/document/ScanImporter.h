@@ -93,7 +93,6 @@ private:
     TaskManager& m_tasks;
     core::octree::BuildOptions m_options;
     core::io::ImportFrame m_frame;
-    QSet<QString> m_reserved;            ///< output files of running imports (not yet on disk)
     QSet<QFutureWatcherBase*> m_pending;
     QStringList m_errors;
 };

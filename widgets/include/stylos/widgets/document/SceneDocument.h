@@ -222,6 +222,8 @@ public:
      *         renamed the finished import over the copy: the project named the wrong scan). Until released. */
     void reserveOctreePath(const QString& path);
     void releaseOctreePath(const QString& path);
+    /** @brief Whether an import is building @p path (reserveOctreePath()). */
+    bool isOctreePathReserved(const QString& path) const;
     /**
      * @brief An undone import's undo step is going (AddFragmentCommand): removes @p path when noteImportedOctree()
      *        noted it and neither the scene nor a project file saved or opened in this session names it.
