@@ -604,6 +604,8 @@ void MainWindowTest::switchesTheLanguageFromTheMenu()
     QCOMPARE(m_translations->loadedLanguage(), QStringLiteral("fr"));
     QTRY_COMPARE(file->title(), QStringLiteral("&Fichier")); // LanguageChange is posted, not sent
     QCOMPARE(app::Translations::savedLanguage(), QStringLiteral("fr"));
+    // Qt's own dialogs (the file chooser) speak French too: qtbase's catalogue (qt6-translations-l10n).
+    QCOMPARE(QCoreApplication::translate("QFileDialog", "File &name:"), QStringLiteral("&Nom de fichier :"));
     // A plate's numbers take the chosen language's decimal point, whatever the system's locale.
     QCOMPARE(widgets::PlateTexts::translated({}).decimalPoint, QStringLiteral(","));
     pick(QStringLiteral("el"));

@@ -35,6 +35,7 @@
 #include <QAction>
 #include <QComboBox>
 #include <QDialogButtonBox>
+#include <QFileDialog>
 #include <QPushButton>
 #include <QDockWidget>
 #include <QDoubleSpinBox>
@@ -99,6 +100,7 @@ private Q_SLOTS:
     void statusBarCutsWithAnEllipsisAndKeepsTheWhole();
     void legendShowsEveryColumnInEveryLanguage();
     void standardButtonsFollowTheLanguage();
+    void fileChooserFollowsTheLanguage();
     void importsGoSideBySideAndFitFillsTheView();
 
 private:
@@ -565,6 +567,34 @@ void WindowUsabilityTest::standardButtonsFollowTheLanguage()
     setLanguage(QStringLiteral("en"));
     QDialogButtonBox box(QDialogButtonBox::Cancel);
     QCOMPARE(box.button(QDialogButtonBox::Cancel)->text(), QStringLiteral("Cancel"));
+}
+
+// Qt's own file chooser (where the desktop offers no native one): French from Qt's catalogue or ours, Greek from
+// ours (app/gui/QtStandardTexts.cpp). Its labels are read as the user sees them.
+void WindowUsabilityTest::fileChooserFollowsTheLanguage()
+{
+    const QList<QPair<QString, QStringList>> expected{
+        {QStringLiteral("fr"), {QStringLiteral("Voir dans :"), QStringLiteral("&Nom de fichier :"), QStringLiteral("Fichiers de type :")}},
+        {QStringLiteral("el"), {QStringLiteral("Αναζήτηση σε:"), QStringLiteral("Όνομα &αρχείου:"), QStringLiteral("Αρχεία τύπου:")}},
+        {QStringLiteral("en"), {QStringLiteral("Look in:"), QStringLiteral("File &name:"), QStringLiteral("Files of type:")}}};
+    for (const auto& [code, texts] : expected) {
+        setLanguage(code);
+        QFileDialog chooser;
+        chooser.setOption(QFileDialog::DontUseNativeDialog);
+        chooser.setAcceptMode(QFileDialog::AcceptSave);
+        const QStringList names{QStringLiteral("lookInLabel"), QStringLiteral("fileNameLabel"), QStringLiteral("fileTypeLabel")};
+        for (int i = 0; i < names.size(); ++i) {
+            auto* label = chooser.findChild<QLabel*>(names[i]);
+            QVERIFY2(label, qPrintable(names[i]));
+            QCOMPARE(label->text(), texts[i]);
+        }
+        auto* buttons = chooser.findChild<QDialogButtonBox*>(QStringLiteral("buttonBox"));
+        QVERIFY(buttons);
+        QCOMPARE(buttons->button(QDialogButtonBox::Save)->text(),
+                 code == QStringLiteral("fr")   ? QStringLiteral("&Enregistrer")
+                 : code == QStringLiteral("el") ? QStringLiteral("&Αποθήκευση")
+                                                : QStringLiteral("&Save"));
+    }
 }
 
 void WindowUsabilityTest::importsGoSideBySideAndFitFillsTheView()
