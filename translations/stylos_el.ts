@@ -2738,10 +2738,6 @@ Do you want to delete it anyway?</source>
         <translation>Όλα τα αρχεία (*)</translation>
     </message>
     <message>
-        <source>Could not import %1: the folder %2 cannot be created.</source>
-        <translation>Δεν ήταν δυνατή η εισαγωγή του %1: ο φάκελος %2 δεν μπορεί να δημιουργηθεί.</translation>
-    </message>
-    <message>
         <source>Importing %1</source>
         <translation>Εισαγωγή του %1</translation>
     </message>
@@ -2759,6 +2755,10 @@ Do you want to delete it anyway?</source>
             <numerusform>%1: παραλείφθηκε %Ln σημείο με συντεταγμένες NaN ή άπειρες</numerusform>
             <numerusform>%1: παραλείφθηκαν %Ln σημεία με συντεταγμένες NaN ή άπειρες</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not import %1: the folder %2 cannot be created or written to.</source>
+        <translation>Δεν ήταν δυνατή η εισαγωγή του %1: ο φάκελος %2 δεν μπορεί να δημιουργηθεί ή να δεχτεί εγγραφή.</translation>
     </message>
 </context>
 <context>

@@ -2732,10 +2732,6 @@ Do you want to delete it anyway?</source>
         <translation type="unfinished"></translation>
     </message>
     <message>
-        <source>Could not import %1: the folder %2 cannot be created.</source>
-        <translation type="unfinished"></translation>
-    </message>
-    <message>
         <source>Importing %1</source>
         <translation type="unfinished"></translation>
     </message>
@@ -2753,6 +2749,10 @@ Do you want to delete it anyway?</source>
             <numerusform>%1: %Ln point with NaN or infinite coordinates skipped</numerusform>
             <numerusform>%1: %Ln points with NaN or infinite coordinates skipped</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not import %1: the folder %2 cannot be created or written to.</source>
+        <translation type="unfinished"></translation>
     </message>
 </context>
 <context>

@@ -2738,10 +2738,6 @@ Voulez-vous quand même le supprimer ?</translation>
         <translation>Tous les fichiers (*)</translation>
     </message>
     <message>
-        <source>Could not import %1: the folder %2 cannot be created.</source>
-        <translation>Impossible d’importer %1 : le dossier %2 ne peut pas être créé.</translation>
-    </message>
-    <message>
         <source>Importing %1</source>
         <translation>Importation de %1</translation>
     </message>
@@ -2759,6 +2755,10 @@ Voulez-vous quand même le supprimer ?</translation>
             <numerusform>%1 : %Ln point aux coordonnées NaN ou infinies ignoré</numerusform>
             <numerusform>%1 : %Ln points aux coordonnées NaN ou infinies ignorés</numerusform>
         </translation>
+    </message>
+    <message>
+        <source>Could not import %1: the folder %2 cannot be created or written to.</source>
+        <translation>Impossible d’importer %1 : le dossier %2 ne peut pas être créé ou n’accepte pas d’écriture.</translation>
     </message>
 </context>
 <context>

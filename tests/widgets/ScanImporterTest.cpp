@@ -13,6 +13,9 @@
 #include "stylos/widgets/tasks/TaskManager.h"
 
 #include <QFile>
+#include <atomic>
+#include <memory>
+#include <QThread>
 #include <QSignalSpy>
 #include <QTemporaryDir>
 #include <QUndoStack>
@@ -33,6 +36,7 @@ private Q_SLOTS:
     void anUndoneImportLeavesNoOctreeOnceTheProjectCloses();
     void opensAPoctDirectly();
     void aSaveDuringAnImportCopiesNoOctreeOntoItsName();
+    void twoWorkbenchesImportingOneNameTakeTwoFiles();
     void aBrokenFileIsNamedAndNothingIsAdded();
     void skippedPointsAreSaid();
     void cancelLeavesNothing();
@@ -256,6 +260,54 @@ void ScanImporterTest::aSaveDuringAnImportCopiesNoOctreeOntoItsName()
     };
     QVERIFY(!bytes(poct).isEmpty());
     QCOMPARE(bytes(project + "/fragment-2.poct"), bytes(poct));
+}
+
+void ScanImporterTest::twoWorkbenchesImportingOneNameTakeTwoFiles()
+{
+    // Two Stylos windows (two documents, nothing shared but the cache folder) import a scan named fragment.ply
+    // each: the first's import waits behind another task, so nothing of its octree is written yet when the second
+    // starts. The name is taken on disk at once (an empty file), so the second builds fragment-2.poct; before, both
+    // built fragment.poct and the second's rename replaced the first's octree under its project.
+    const QString cache = freshFolder("cache-two-windows");
+    const QString otherScans = freshFolder("other-scans");
+    const QString other =
+        stylos::test::generateScanFile(otherScans, "fragment.ply", SyntheticKind::Drum, 0.02, false); // not the same scan
+    std::atomic<bool> release{false}; // outlives the task managers, which wait for their tasks
+    TaskManager firstTasks, secondTasks;
+    firstTasks.setMaxConcurrent(1);
+    const std::shared_ptr<void> releaseOnExit(nullptr, [&release](void*) { release = true; }); // a failed check too
+    firstTasks.start<int>(QStringLiteral("busy"), [&release](QPromise<int>& promise, stylos::core::ProgressSink&) {
+        while (!release.load()) QThread::msleep(5);
+        promise.addResult(0);
+    });
+    SceneDocument firstDoc(firstTasks), secondDoc(secondTasks);
+    ScanImporter first(firstDoc, firstTasks), second(secondDoc, secondTasks);
+    for (ScanImporter* importer : {&first, &second}) {
+        importer->setBuildOptions(m_options);
+        importer->setCacheDirectory(cache);
+    }
+    QCOMPARE(first.importFiles({m_fragmentScan}), 1);
+    QCOMPARE(stylos::test::filesUnder(cache), QStringList{"fragment.poct"}); // the name, taken before the build
+    QCOMPARE(QFileInfo(cache + "/fragment.poct").size(), 0);
+    QCOMPARE(second.importFiles({other}), 1);
+    QVERIFY(secondTasks.waitForIdle(30000));
+    release = true;
+    QVERIFY(firstTasks.waitForIdle(30000));
+    QCoreApplication::processEvents();
+    QCOMPARE(firstDoc.scene().size(), 1u);
+    QCOMPARE(secondDoc.scene().size(), 1u);
+    const auto& a = firstDoc.scene().fragments()[0];
+    const auto& b = secondDoc.scene().fragments()[0];
+    QCOMPARE(QString::fromStdString(a.octreePath.string()), cache + "/fragment.poct");
+    QCOMPARE(QString::fromStdString(b.octreePath.string()), cache + "/fragment-2.poct");
+    QCOMPARE(stylos::test::filesUnder(cache), (QStringList{"fragment-2.poct", "fragment.poct"}));
+    // Each file holds its own scan (the two octrees' cell counts differ), the one its document opened.
+    const auto opened = [](const std::filesystem::path& path) { return stylos::core::octree::PackedOctree::open(path); };
+    auto fragmentOctree = opened(a.octreePath), drumOctree = opened(b.octreePath);
+    QVERIFY(fragmentOctree.ok() && drumOctree.ok());
+    QCOMPARE(fragmentOctree->totalCells(), firstDoc.octree(a.id)->totalCells());
+    QCOMPARE(drumOctree->totalCells(), secondDoc.octree(b.id)->totalCells());
+    QVERIFY(fragmentOctree->totalCells() != drumOctree->totalCells());
 }
 
 void ScanImporterTest::opensAPoctDirectly()

@@ -88,7 +88,7 @@ int ScanImporter::importFiles(const QStringList& paths)
         if (!direct) {
             output = reserveOutput(input);
             if (output.isEmpty()) {
-                fail(input, tr("Could not import %1: the folder %2 cannot be created.")
+                fail(input, tr("Could not import %1: the folder %2 cannot be created or written to.")
                                 .arg(QFileInfo(input).fileName(), QDir::toNativeSeparators(outputDirectory())));
                 continue;
             }
@@ -138,11 +138,20 @@ QString ScanImporter::reserveOutput(const QString& input)
     const QString folder = outputDirectory();
     if (!QDir().mkpath(folder)) return {};
     const QString stem = QFileInfo(input).completeBaseName();
-    QString candidate = QDir(folder).absoluteFilePath(stem + QStringLiteral(".poct"));
-    for (int n = 2; QFileInfo::exists(candidate) || m_document.isOctreePathReserved(candidate); ++n)
-        candidate = QDir(folder).absoluteFilePath(QStringLiteral("%1-%2.poct").arg(stem).arg(n));
-    m_document.reserveOctreePath(candidate); // neither another import nor a save meanwhile takes this name
-    return candidate;
+    for (int n = 1;; ++n) {
+        const QString candidate = QDir(folder).absoluteFilePath(
+            n == 1 ? stem + QStringLiteral(".poct") : QStringLiteral("%1-%2.poct").arg(stem).arg(n));
+        if (QFileInfo::exists(candidate) || m_document.isOctreePathReserved(candidate)) continue;
+        // Created only if absent, in one step: no other process can take the name between the test and here.
+        QFile placeholder(candidate);
+        if (!placeholder.open(QIODevice::WriteOnly | QIODevice::NewOnly)) {
+            if (QFileInfo::exists(candidate)) continue; // another Stylos took it just now
+            return {};                                  // the folder cannot be written
+        }
+        placeholder.close();
+        m_document.reserveOctreePath(candidate); // neither another import nor a save meanwhile takes this name
+        return candidate;
+    }
 }
 
 void ScanImporter::importEnded(const QString& input, const QString& output, const core::io::ImportFrame& frame,

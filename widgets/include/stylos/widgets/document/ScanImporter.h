@@ -82,6 +82,11 @@ Q_SIGNALS:
     void importsFinished(const QStringList& errors);
 
 private:
+    /**
+     * The octree's name in the output folder, taken on disk at once: an empty file is created there (exclusively,
+     * so that another Stylos importing a scan of the same name into the same cache takes the next name) and the
+     * finished octree is renamed over it. Empty when the folder cannot be created or written.
+     */
     QString reserveOutput(const QString& input);
     void importEnded(const QString& input, const QString& output, const core::io::ImportFrame& frame,
                      QFutureWatcherBase* watcher);
