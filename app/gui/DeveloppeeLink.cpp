@@ -24,16 +24,9 @@ namespace {
  *  fragment unrolls about its drum's axis, at the drum's scale, not about a cylinder fitted to itself. */
 std::optional<core::unroll::Axis> axisGuide(const widgets::SceneDocument& document, const core::scene::Fragment& fragment)
 {
-    if (const auto line = core::scene::firstGuide(fragment, core::scene::GuideKind::Axis))
-        return core::unroll::Axis{line->origin, line->direction};
-    const core::scene::FragmentId drumId = document.drumFor(fragment.id);
-    const core::scene::Fragment* drum = drumId != fragment.id ? document.fragment(drumId) : nullptr;
-    const auto line = drum ? core::scene::firstGuide(*drum, core::scene::GuideKind::Axis) : std::nullopt;
+    const auto line = core::scene::unrollAxis(document.scene(), fragment.id, document.drumFor(fragment.id));
     if (!line) return std::nullopt;
-    const core::scene::Pose toFragment = document.worldPose(fragment.id).rigidInverse() * document.worldPose(drumId);
-    const Eigen::Matrix4d m = core::scene::toEigen(toFragment);
-    return core::unroll::Axis{m.topLeftCorner<3, 3>() * line->origin + m.topRightCorner<3, 1>(),
-                              (m.topLeftCorner<3, 3>() * line->direction).normalized()};
+    return core::unroll::Axis{line->origin, line->direction};
 }
 
 /** The flute lines drawn over a fragment's développée, in its own frame: its own groove guides; without any,

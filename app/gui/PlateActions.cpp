@@ -1,12 +1,14 @@
 // File › Export plate… and Export développée image…
 #include "PlateActions.h"
 
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include "stylos/core/image/ImageWriter.h"
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/plate/PlateWriter.h"
 #include "stylos/widgets/annotation/LabelStore.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/plate/PlateDialog.h"
@@ -81,6 +83,15 @@ std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::S
         p.visible = f.visible;
         p.labels[0] = document.labels().labels(f.id, core::annotation::AnnotationLayer::Material);
         p.labels[1] = document.labels().labels(f.id, core::annotation::AnnotationLayer::Toolmark);
+        // Its développée as the Développée dock last showed it (the axis guide, the drum guides' radius, the dock's
+        // settings): the plate's angles and cut are the dock's. Without one, about its axis guide or its drum's.
+        const auto shown = document.developpee(f.id);
+        if (shown && shown->ok() && !shown->pieceAt && shown->octreePath == QString::fromStdString(f.octreePath.string())) {
+            p.unrolling = shown->settings.options();
+        } else if (const auto axis = core::scene::unrollAxis(scene, f.id, document.drumFor(f.id))) {
+            p.unrolling.emplace();
+            p.unrolling->axis = core::unroll::Axis{axis->origin, axis->direction};
+        }
         sources->fragments.push_back(std::move(p));
     }
     return sources;

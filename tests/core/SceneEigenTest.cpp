@@ -1,6 +1,7 @@
 // SceneEigen: the one conversion between the scene's arrays and Eigen — exact round trips, the same
 // transform either way, the first guide of a kind.
 #include "stylos/core/scene/SceneEigen.h"
+#include "stylos/core/scene/Scene.h"
 
 #include <gtest/gtest.h>
 
@@ -35,4 +36,52 @@ TEST(SceneEigen, FirstGuideOfAKind)
     ASSERT_TRUE(line);
     EXPECT_EQ(line->origin, Eigen::Vector3d(1, 2, 3));
     EXPECT_EQ(line->direction, Eigen::Vector3d(0, 0, 1));
+}
+
+// The axis a fragment unrolls about (its développée in the workbench and on a plate): its own axis guide, else its
+// drum's carried into its frame through both scene poses — checked against the transform worked by hand.
+TEST(SceneEigen, UnrollAxisIsTheOwnGuideElseTheDrumsInTheFragmentsFrame)
+{
+    Scene scene;
+    Fragment drum;
+    drum.name = "drum";
+    drum.pose = Pose({1, 0, 0, 1, 0, 1, 0, 2, 0, 0, 1, 3, 0, 0, 0, 1}); // a translation (1, 2, 3)
+    drum.guides.push_back({"axis", GuideKind::Axis, {0.1, 0, 0}, {0, 0, 1}});
+    const FragmentId drumId = scene.add(drum);
+    Fragment piece;
+    piece.name = "piece";
+    // 90° about x (y → z, z → −y), then (0, 0.5, 0).
+    piece.pose = Pose({1, 0, 0, 0, 0, 0, -1, 0.5, 0, 1, 0, 0, 0, 0, 0, 1});
+    const FragmentId pieceId = scene.add(piece);
+    Fragment alone;
+    alone.name = "alone";
+    const FragmentId aloneId = scene.add(alone);
+    Fragment plain;
+    plain.name = "plain";
+    plain.guides.push_back({"a flute", GuideKind::Groove, {0, 0, 0}, {0, 0, 1}});
+    const FragmentId plainId = scene.add(plain);
+
+    // The drum's origin (0.1, 0, 0) is (1.1, 2, 3) in the scene, (1.1, 1.5, 3) less the piece's translation, and
+    // (1.1, 3, −1.5) once turned back by −90° about x; its direction z becomes y.
+    const auto carried = unrollAxis(scene, pieceId, drumId);
+    ASSERT_TRUE(carried);
+    EXPECT_NEAR((carried->origin - Eigen::Vector3d(1.1, 3, -1.5)).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((carried->direction - Eigen::Vector3d(0, 1, 0)).norm(), 0.0, 1e-12);
+    // The drum's own, and a piece's own guide first.
+    const auto own = unrollAxis(scene, drumId, pieceId);
+    ASSERT_TRUE(own);
+    EXPECT_EQ(own->origin, Eigen::Vector3d(0.1, 0, 0));
+    Fragment guided = *scene.find(pieceId);
+    guided.guides.push_back({"its own", GuideKind::Axis, {0, 0, 0}, {1, 0, 0}});
+    scene.take(pieceId);
+    const FragmentId guidedId = scene.add(guided);
+    const auto first = unrollAxis(scene, guidedId, drumId);
+    ASSERT_TRUE(first);
+    EXPECT_EQ(first->direction, Eigen::Vector3d(1, 0, 0));
+    // None: no guide and no drum, the drum itself, an unknown fragment or drum, a drum without an axis guide.
+    EXPECT_FALSE(unrollAxis(scene, aloneId, NoFragment));
+    EXPECT_FALSE(unrollAxis(scene, aloneId, aloneId));
+    EXPECT_FALSE(unrollAxis(scene, 999, drumId));
+    EXPECT_FALSE(unrollAxis(scene, aloneId, 999));
+    EXPECT_FALSE(unrollAxis(scene, aloneId, plainId));
 }

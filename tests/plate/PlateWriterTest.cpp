@@ -7,7 +7,10 @@
 #include "SyntheticTestSupport.h"
 #include "TestSupport.h"
 
+#include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/octree/OctreeBuild.h"
+#include "stylos/core/scene/ProjectFile.h"
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/plate/PlateSources.h"
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/plate/PlateWriter.h"
@@ -381,4 +384,70 @@ int main(int argc, char** argv)
     QGuiApplication app(qtArgc, qtArgv);
     ::testing::InitGoogleTest(&argc, argv);
     return RUN_ALL_TESTS();
+}
+
+// A project's fragment is unrolled on a plate about its axis guide, as the workbench's Développée dock unrolls it
+// (before, the plate fitted its own axis: its angles and cut differed from the dock's by ~115° on a docked drum).
+// The guide here is the fitted axis turned end for end: the plate's développée is then the default one turned
+// half a turn; and the options a fragment carries (here a pixel size) reach the computation.
+TEST(PlateSources, AProjectsFragmentUnrollsAboutItsAxisGuide)
+{
+    core::developpee::DeveloppeeOptions fitted;
+    fitted.threads = 2;
+    const auto reference = core::developpee::computeDeveloppee(fixture().octree, fitted);
+    ASSERT_TRUE(reference.ok()) << reference.error().message;
+    const core::unroll::Axis axis = reference->map.surface().axis();
+
+    core::scene::Scene scene;
+    core::scene::Fragment drum;
+    drum.name = "drum";
+    drum.octreePath = fixture().octree;
+    drum.guides.push_back({"axis", core::scene::GuideKind::Axis, core::scene::toArray(axis.point),
+                           core::scene::toArray(-axis.direction)});
+    scene.add(drum);
+    const fs::path project = *fixture().dir / "guided.stylos";
+    ASSERT_TRUE(core::scene::ProjectFile::save(scene, project).ok());
+    auto sources = cp::readPlateSources(project);
+    ASSERT_TRUE(sources.ok()) << sources.error().message;
+    ASSERT_EQ(sources->fragments.size(), 1u);
+    const auto& unrolling = sources->fragments[0].unrolling;
+    ASSERT_TRUE(unrolling && unrolling->axis);
+    EXPECT_NEAR((unrolling->axis->point - axis.point).norm(), 0.0, 1e-12);
+    EXPECT_NEAR((unrolling->axis->direction + axis.direction).norm(), 0.0, 1e-12);
+
+    cp::PanelSpec panel;
+    panel.scale = 10;
+    cp::PanelRenderOptions render;
+    render.dpi = 100;
+    render.threads = 2;
+    auto unguided = *sources;
+    unguided.fragments[0].unrolling.reset();
+    const auto plain = cp::renderPanel(unguided, panel, render);
+    const auto guided = cp::renderPanel(*sources, panel, render);
+    ASSERT_TRUE(plain.ok() && guided.ok());
+    ASSERT_EQ(guided->image.width, plain->image.width);
+    ASSERT_EQ(guided->image.height, plain->image.height);
+    // Turned end for end, the développée is upside down and reads right to left: the guided image turned half a
+    // turn is the plain one (up to where the cut falls: rows compared as periodic sequences, at the best shift).
+    const int w = plain->image.width, h = plain->image.height;
+    double turned = 0, same = 0;
+    for (int shift = 0; shift < w; ++shift) {
+        double m = 0, s = 0;
+        for (int y = 0; y < h; ++y)
+            for (int x = 0; x < w; ++x) {
+                const double p = plain->image.sample(x, y);
+                m += std::abs(p - guided->image.sample((w - 1 - x + shift) % w, h - 1 - y));
+                s += std::abs(p - guided->image.sample((x + shift) % w, y));
+            }
+        turned = shift == 0 ? m : std::min(turned, m);
+        same = shift == 0 ? s : std::min(same, s);
+    }
+    EXPECT_LT(turned, 0.5 * same) << "turned " << turned << ", same way " << same;
+
+    auto sized = *sources;
+    sized.fragments[0].unrolling->pixelSize = 0.004;
+    const auto coarse = cp::renderPanel(sized, panel, render);
+    ASSERT_TRUE(coarse.ok()) << coarse.error().message;
+    EXPECT_EQ(coarse->naturalPixelM, 0.004);
+    EXPECT_NE(plain->naturalPixelM, 0.004);
 }

@@ -8,10 +8,13 @@
 
 #include "PlateActions.h"
 #include "stylos/core/annotation/LeafLabels.h"
+#include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/scene/ProjectFile.h"
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/view/Camera.h"
 #include "stylos/plate/PlateComposer.h"
 #include "stylos/widgets/annotation/LabelStore.h"
+#include "stylos/widgets/developpee/DeveloppeeJob.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/plate/PlateDialog.h"
@@ -55,6 +58,7 @@ private Q_SLOTS:
     void viewImageIsTheChosenWidthAlongTheCamera();
     void aCancelledExportIsNoError();
     void theDefaultPlateFitsItsPage();
+    void aPlateUnrollsAsTheDockDoes();
 
 private:
     core::scene::FragmentId addDrum(widgets::SceneDocument& document) const;
@@ -280,6 +284,54 @@ void PlateExportTest::theDefaultPlateFitsItsPage()
     QCOMPARE(spec.panels[0].scale, 20.0);
     auto fits = plate::composePlate(*sources, spec, {});
     QVERIFY2(fits.ok(), fits.ok() ? "" : fits.error().message.c_str());
+}
+
+// The plate's développée of a fragment is the one the Développée dock shows: the dock's last result's settings
+// (its axis guide, pixel size, directions…) go to the plate; without one (or one of another octree), the fragment's
+// axis guide. Before, the plate fitted an axis of its own: the same painted patch stood ~115° apart on the two.
+void PlateExportTest::aPlateUnrollsAsTheDockDoes()
+{
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    const auto id = addDrum(document);
+    QVERIFY(id != 0);
+    QVERIFY(app::PlateActions::sourcesOf(document)->fragments[0].unrolling == std::nullopt); // no guide, no result
+
+    const auto fitted = core::developpee::computeDeveloppee(m_octree.toStdString(), {});
+    QVERIFY2(fitted.ok(), fitted.ok() ? "" : fitted.error().message.c_str());
+    const core::unroll::Axis axis = fitted->map.surface().axis(); // the drum's (tilted by the generator)
+    QVERIFY(document.setFragmentGuides(id, {{"axis", core::scene::GuideKind::Axis, core::scene::toArray(axis.point),
+                                             core::scene::toArray(axis.direction)}}));
+    auto unrolling = app::PlateActions::sourcesOf(document)->fragments[0].unrolling;
+    QVERIFY(unrolling && unrolling->axis);
+    QCOMPARE(unrolling->axis->point, axis.point);
+    QCOMPARE(unrolling->axis->direction, axis.direction);
+    QVERIFY(!unrolling->pixelSize);
+
+    // The dock's result, about the axis turned end for end, at 2 cm pixels and 8 directions.
+    widgets::DeveloppeeResult shown;
+    shown.fragmentId = id;
+    shown.octreePath = m_octree;
+    shown.settings.axis = core::unroll::Axis{axis.point, -axis.direction};
+    shown.settings.pixelSize = 0.02;
+    shown.settings.directions = 8;
+    auto computed = core::developpee::computeDeveloppee(m_octree.toStdString(), shown.settings.options());
+    QVERIFY2(computed.ok(), computed.ok() ? "" : computed.error().message.c_str());
+    shown.map = computed->map;
+    QVERIFY(document.setDeveloppee(id, std::make_shared<const widgets::DeveloppeeResult>(shown)));
+    unrolling = app::PlateActions::sourcesOf(document)->fragments[0].unrolling;
+    QVERIFY(unrolling && unrolling->axis);
+    QCOMPARE(unrolling->axis->direction, Eigen::Vector3d(-axis.direction));
+    QCOMPARE(unrolling->pixelSize, std::optional<double>(0.02));
+    QCOMPARE(unrolling->directions, 8);
+
+    // A result of another octree (the fragment's file was replaced since) is not the fragment's: its guide again.
+    shown.octreePath = m_octree + QStringLiteral(".old");
+    QVERIFY(document.setDeveloppee(id, std::make_shared<const widgets::DeveloppeeResult>(shown)));
+    unrolling = app::PlateActions::sourcesOf(document)->fragments[0].unrolling;
+    QVERIFY(unrolling && unrolling->axis);
+    QCOMPARE(unrolling->axis->direction, axis.direction);
+    QVERIFY(!unrolling->pixelSize);
 }
 
 STYLOS_WIDGET_TEST_MAIN(PlateExportTest)

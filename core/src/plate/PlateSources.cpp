@@ -10,6 +10,7 @@
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/plate/OrthoRender.h"
 #include "stylos/core/scene/ProjectFile.h"
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/util/SubProgress.h"
 
 #include <algorithm>
@@ -82,7 +83,7 @@ Result<std::vector<std::uint8_t>> labelsOf(const PlateFragment& f, const oct::Pa
 Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateFragment& f, const PanelSpec& panel,
                                        const PanelRenderOptions& options, ProgressSink* progress)
 {
-    developpee::DeveloppeeOptions d;
+    developpee::DeveloppeeOptions d = f.unrolling.value_or(developpee::DeveloppeeOptions{});
     d.shading = panel.shading == PanelShading::Light    ? developpee::Shading::Light
                 : panel.shading == PanelShading::Height ? developpee::Shading::Height
                                                         : developpee::Shading::Skydome;
@@ -203,13 +204,21 @@ Result<PlateSources> readPlateSources(const fs::path& path)
         const scene::Scene& s = loaded->scene;
         out.isProject = true;
         out.legend = s.legend();
-        for (const scene::Fragment& f : s.fragments())
-            out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}});
+        for (const scene::Fragment& f : s.fragments()) {
+            out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}, {}});
+            // Unrolled about its axis guide, or its assembly drum's, as the workbench unrolls it.
+            const scene::Assembly* assembly = s.findAssembly(f.assembly);
+            if (const auto axis = scene::unrollAxis(s, f.id, assembly ? assembly->drum : scene::NoFragment)) {
+                developpee::DeveloppeeOptions unrolling;
+                unrolling.axis = unroll::Axis{axis->origin, axis->direction};
+                out.fragments.back().unrolling = unrolling;
+            }
+        }
         if (out.fragments.empty()) return Error::at(ErrorCode::InvalidArgument, path.string(), {}, "the project has no fragment");
         return out;
     }
     const bool octree = cloud::isPoctPath(path);
-    out.fragments.push_back({path.stem().string(), path, octree, false, scene::Pose(), true, {}});
+    out.fragments.push_back({path.stem().string(), path, octree, false, scene::Pose(), true, {}, {}});
     return out;
 }
 

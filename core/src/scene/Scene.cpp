@@ -1,4 +1,5 @@
 #include "stylos/core/scene/Scene.h"
+#include "stylos/core/scene/SceneEigen.h"
 
 #include <algorithm>
 
@@ -155,6 +156,19 @@ Pose Scene::localPose(FragmentId id, const Pose& world) const
     const Fragment* f = find(id);
     const Assembly* a = f ? findAssembly(f->assembly) : nullptr;
     return a ? a->pose.rigidInverse() * world : world;
+}
+
+std::optional<GuideLine> unrollAxis(const Scene& scene, FragmentId fragment, FragmentId drum)
+{
+    const Fragment* f = scene.find(fragment);
+    if (!f) return std::nullopt;
+    if (auto own = firstGuide(*f, GuideKind::Axis)) return own;
+    const Fragment* d = drum != fragment ? scene.find(drum) : nullptr;
+    const auto line = d ? firstGuide(*d, GuideKind::Axis) : std::nullopt;
+    if (!line) return std::nullopt;
+    const Eigen::Matrix4d m = toEigen(scene.worldPose(fragment).rigidInverse() * scene.worldPose(drum));
+    return GuideLine{m.topLeftCorner<3, 3>() * line->origin + m.topRightCorner<3, 1>(),
+                     (m.topLeftCorner<3, 3>() * line->direction).normalized()};
 }
 
 } // namespace stylos::core::scene

@@ -7,7 +7,9 @@
  * @p scratch on demand, for 3D panels only — a développée reads the points directly).
  *
  * renderPanel: a panel at 1:N and D dpi has pixels of P = N · 25.4 / D mm on the object.
- * - Développée (of the named fragment, or the first): computed at its own pixel size (the sampling spacing),
+ * - Développée (of the named fragment, or the first): computed as the fragment's `unrolling` says (the axis,
+ *   radius and settings the workbench unrolled it with; from a project, its axis guide or its assembly drum's),
+ *   in the panel's shading, at its own pixel size (the sampling spacing unless `unrolling` gives one),
  *   then resampled to round(aR / P) × round(height / P) plate pixels, a the développée's arc (2π for a drum,
  *   periodic across the seam; a fragment's own arc, UnrollOptions::cropToPoints); it is placed exactly
  *   aR · 1000 / N mm wide on paper. The classes of the layer, when asked, come from the octree's
@@ -20,6 +22,7 @@
  * Thread-safety: reentrant.
  */
 #include "stylos/core/annotation/Legend.h"
+#include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/plate/PanelImage.h"
 #include "stylos/core/plate/PlateSpec.h"
 #include "stylos/core/scene/Pose.h"
@@ -29,6 +32,7 @@
 #include <array>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -44,6 +48,10 @@ struct PlateFragment {
     /** Labels held in memory (the workbench's unsaved edits), per layer (material, toolmark), used instead of
      *  the octree's layers when set; one id per leaf. */
     std::array<std::shared_ptr<const std::vector<std::uint8_t>>, 2> labels;
+    /** How its développée is unrolled (axis, radius, taper, pixel size, skydome directions and smoothing, light),
+     *  so that a plate shows the développée the workbench shows — the same axis, hence the same cut and angles;
+     *  the panel's shading replaces this one's. Unset: an axis fitted to the points, every default. */
+    std::optional<developpee::DeveloppeeOptions> unrolling;
 };
 
 struct PlateSources {

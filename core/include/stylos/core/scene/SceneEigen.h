@@ -15,6 +15,8 @@
 
 namespace stylos::core::scene {
 
+class Scene;
+
 inline Eigen::Vector3d toEigen(const std::array<double, 3>& p) { return {p[0], p[1], p[2]}; }
 inline std::array<double, 3> toArray(const Eigen::Vector3d& p) { return {p.x(), p.y(), p.z()}; }
 
@@ -53,5 +55,12 @@ inline std::optional<GuideLine> firstGuide(const Fragment& fragment, GuideKind k
         if (guide.kind == kind) return guideLine(guide);
     return std::nullopt;
 }
+
+/**
+ * @brief The axis @p fragment unrolls about (its développée in the workbench and on a plate): its own first
+ *        Axis guide, else that of @p drum (another fragment of @p scene, e.g. its assembly's drum) carried into
+ *        the fragment's frame through their scene poses; nullopt when neither has one.
+ */
+std::optional<GuideLine> unrollAxis(const Scene& scene, FragmentId fragment, FragmentId drum);
 
 } // namespace stylos::core::scene
