@@ -2648,6 +2648,38 @@ Do you want to delete it anyway?</source>
         <source>Journal print area, 205 × 135 mm</source>
         <translation>Επιφάνεια εκτύπωσης περιοδικού, 205 × 135 mm</translation>
     </message>
+    <message>
+        <source>%1 × %2 mm</source>
+        <translation>%1 × %2 mm</translation>
+    </message>
+    <message>
+        <source>Panel %1 (%2)</source>
+        <translation>Το πλαίσιο %1 (%2)</translation>
+    </message>
+    <message>
+        <source>The panel (%1)</source>
+        <translation>Το πλαίσιο (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is %2; the print area is %3: use %4 or smaller, or a larger page.</source>
+        <translation>%1 έχει διαστάσεις %2· η επιφάνεια εκτύπωσης είναι %3: επιλέξτε %4 ή μικρότερη κλίμακα, ή μεγαλύτερη σελίδα.</translation>
+    </message>
+    <message>
+        <source>%1 is %2; the print area is %3: no scale fits this page, use a larger page.</source>
+        <translation>%1 έχει διαστάσεις %2· η επιφάνεια εκτύπωσης είναι %3: καμία κλίμακα δεν χωρά σε αυτή τη σελίδα, επιλέξτε μεγαλύτερη σελίδα.</translation>
+    </message>
+    <message>
+        <source>%1, placed at (%2, %3) mm, is %4 with its texts and leaves the %5 page.</source>
+        <translation>%1, στη θέση x %2 mm, y %3 mm, έχει διαστάσεις %4 με τα κείμενά του και βγαίνει από τη σελίδα των %5.</translation>
+    </message>
+    <message>
+        <source>The plate needs %1 mm of height; the print area is %2: use smaller scales, a larger page or the other orientation.</source>
+        <translation>Ο πίνακας χρειάζεται ύψος %1 mm· η επιφάνεια εκτύπωσης είναι %2: επιλέξτε μικρότερες κλίμακες, μεγαλύτερη σελίδα ή τον άλλο προσανατολισμό.</translation>
+    </message>
+    <message>
+        <source>The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the other orientation.</source>
+        <translation>Ο πίνακας χρειάζεται ύψος %1 mm· η επιφάνεια εκτύπωσης είναι %2: επιλέξτε μικρότερες κλίμακες (%3), μεγαλύτερη σελίδα ή τον άλλο προσανατολισμό.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::PlateTexts</name>

@@ -2642,6 +2642,38 @@ Do you want to delete it anyway?</source>
         <source>Journal print area, 205 × 135 mm</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 × %2 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Panel %1 (%2)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The panel (%1)</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is %2; the print area is %3: use %4 or smaller, or a larger page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 is %2; the print area is %3: no scale fits this page, use a larger page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1, placed at (%2, %3) mm, is %4 with its texts and leaves the %5 page.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plate needs %1 mm of height; the print area is %2: use smaller scales, a larger page or the other orientation.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the other orientation.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::PlateTexts</name>

@@ -2648,6 +2648,38 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>Journal print area, 205 × 135 mm</source>
         <translation>Zone d’impression de revue, 205 × 135 mm</translation>
     </message>
+    <message>
+        <source>%1 × %2 mm</source>
+        <translation>%1 × %2 mm</translation>
+    </message>
+    <message>
+        <source>Panel %1 (%2)</source>
+        <translation>Le panneau %1 (%2)</translation>
+    </message>
+    <message>
+        <source>The panel (%1)</source>
+        <translation>Le panneau (%1)</translation>
+    </message>
+    <message>
+        <source>%1 is %2; the print area is %3: use %4 or smaller, or a larger page.</source>
+        <translation>%1 mesure %2 ; la zone d’impression mesure %3 : choisissez %4 ou plus petit, ou une page plus grande.</translation>
+    </message>
+    <message>
+        <source>%1 is %2; the print area is %3: no scale fits this page, use a larger page.</source>
+        <translation>%1 mesure %2 ; la zone d’impression mesure %3 : aucune échelle ne tient sur cette page, choisissez une page plus grande.</translation>
+    </message>
+    <message>
+        <source>%1, placed at (%2, %3) mm, is %4 with its texts and leaves the %5 page.</source>
+        <translation>%1, placé en (%2 ; %3) mm, mesure %4 avec ses textes et sort de la page de %5.</translation>
+    </message>
+    <message>
+        <source>The plate needs %1 mm of height; the print area is %2: use smaller scales, a larger page or the other orientation.</source>
+        <translation>La planche demande %1 mm de hauteur ; la zone d’impression mesure %2 : choisissez des échelles plus petites, une page plus grande ou l’autre orientation.</translation>
+    </message>
+    <message>
+        <source>The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the other orientation.</source>
+        <translation>La planche demande %1 mm de hauteur ; la zone d’impression mesure %2 : choisissez des échelles plus petites (%3), une page plus grande ou l’autre orientation.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::PlateTexts</name>

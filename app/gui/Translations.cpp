@@ -63,6 +63,9 @@ bool Translations::setLanguage(const QString& code)
     m_qt = qt;
     QCoreApplication::installTranslator(m_stylos);
     if (m_qt) QCoreApplication::installTranslator(m_qt);
+    // Numbers follow the chosen language too (decimal comma and grouping in French and Greek), the system's when
+    // none is chosen; widgets read QLocale() when they retranslate.
+    QLocale::setDefault(code.isEmpty() ? QLocale::system() : QLocale(code));
     m_language = code;
     m_loaded = loaded;
     QSettings().setValue(LanguageKey, code);

@@ -9,7 +9,7 @@ namespace cp = core::plate;
 
 core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const cp::PlateSpec& spec,
                                         const cp::PanelRenderOptions& options, core::ProgressSink* progress,
-                                        const PlateTexts& texts)
+                                        const PlateTexts& texts, cp::LayoutFailure* failure)
 {
     if (auto s = spec.validate(sources.source); !s) return s.error();
     PlateContent plate;
@@ -33,7 +33,7 @@ core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const c
         return panelLabelWidthMm(panel, lettered, texts);
     };
     auto layout = cp::layoutPlate(spec, sizes, legendRows(spec, plate.panels, plate.legend),
-                                  captionHeightMm(QString::fromStdString(spec.caption), width), labels);
+                                  captionHeightMm(QString::fromStdString(spec.caption), width), labels, failure);
     if (!layout) return layout.error();
     plate.layout = std::move(layout).value();
     for (std::size_t i = 0; i < plate.panels.size(); ++i) plate.layout.panels[i].rulerDegrees = plate.panels[i].arcDegrees;

@@ -191,9 +191,18 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     s.panels = {p};
     const double width = 2 * 3.14159265 * 0.5 * 1000 / 10; // a 0.5 m drum at 1:10: 314.2 mm
     const std::array<double, 2> size{width, 50};
-    const auto layout = layoutPlate(s, std::span(&size, 1), 0, 0);
+    LayoutFailure failure;
+    const auto layout = layoutPlate(s, std::span(&size, 1), 0, 0, {}, &failure);
     ASSERT_FALSE(layout.ok());
     EXPECT_EQ(layout.error().code, stylos::core::ErrorCode::InvalidArgument);
+    // The same as values (for the workbench's own words).
+    EXPECT_EQ(failure.kind, LayoutFailure::Kind::PanelTooLarge);
+    EXPECT_EQ(failure.panel, 0u);
+    EXPECT_EQ(failure.sizeMm[0], width);
+    EXPECT_EQ(failure.sizeMm[1], 50);
+    EXPECT_DOUBLE_EQ(failure.printArea.w, 180);
+    EXPECT_DOUBLE_EQ(failure.printArea.h, 267);
+    EXPECT_EQ(failure.smallerScale, std::optional<double>(18));
     EXPECT_NE(layout.error().message.find("314.2 × 50.0 mm"), std::string::npos) << layout.error().message;
     EXPECT_NE(layout.error().message.find("180.0 × 267.0 mm"), std::string::npos) << layout.error().message;
     EXPECT_NE(layout.error().message.find("use 1:18"), std::string::npos) << layout.error().message;
@@ -203,16 +212,20 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     EXPECT_TRUE(layoutPlate(s, std::span(&smaller, 1), 0, 0).ok());
     // Too much height with the caption.
     const std::array<double, 2> tall{100, 230};
-    const auto crowded = layoutPlate(s, std::span(&tall, 1), 0, 40);
+    const auto crowded = layoutPlate(s, std::span(&tall, 1), 0, 40, {}, &failure);
     ASSERT_FALSE(crowded.ok());
+    EXPECT_EQ(failure.kind, LayoutFailure::Kind::TooTall);
+    EXPECT_GT(failure.sizeMm[1], 267);
     EXPECT_NE(crowded.error().message.find("of height"), std::string::npos) << crowded.error().message;
     // A page too small for the panel's labels alone: no scale to name, only a larger page.
     s.page = {10, 10};
     s.pageName = "10x10";
     s.marginMm = 0;
     const std::array<double, 2> any{110, 112};
-    const auto tiny = layoutPlate(s, std::span(&any, 1), 0, 0);
+    const auto tiny = layoutPlate(s, std::span(&any, 1), 0, 0, {}, &failure);
     ASSERT_FALSE(tiny.ok());
+    EXPECT_EQ(failure.kind, LayoutFailure::Kind::PanelTooLarge);
+    EXPECT_EQ(failure.smallerScale, std::nullopt);
     EXPECT_NE(tiny.error().message.find("no scale fits this page; use a larger page"), std::string::npos)
         << tiny.error().message;
 }
@@ -302,8 +315,12 @@ TEST(PlateLayout, PanelsTooTallTogetherAreGivenScalesThatFit)
     b.scale = 10;
     s.panels = {a, b};
     const std::array<std::array<double, 2>, 2> sizes{{{100, 120}, {100, 120}}};
-    const auto refused = layoutPlate(s, sizes, 0, 60);
+    LayoutFailure failure;
+    const auto refused = layoutPlate(s, sizes, 0, 60, {}, &failure);
     ASSERT_FALSE(refused.ok());
+    EXPECT_EQ(failure.kind, LayoutFailure::Kind::TooTall);
+    EXPECT_DOUBLE_EQ(failure.sizeMm[1], 206.5);
+    EXPECT_EQ(failure.fittingScales, (std::vector<double>{7, 13})); // as the message says, below
     const std::string& message = refused.error().message;
     EXPECT_NE(message.find("of height"), std::string::npos) << message;
     // "use a smaller scale (A 1:N, B 1:M)": both scales grown by one factor, rounded up; they fit, and no smaller does.

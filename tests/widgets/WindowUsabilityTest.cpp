@@ -28,6 +28,7 @@
 #include "stylos/widgets/document/ScanImporter.h"
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/document/SceneTreeModel.h"
+#include "stylos/widgets/plate/PlateDialog.h"
 #include "stylos/widgets/tasks/TaskManager.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
@@ -101,6 +102,7 @@ private Q_SLOTS:
     void legendShowsEveryColumnInEveryLanguage();
     void standardButtonsFollowTheLanguage();
     void fileChooserFollowsTheLanguage();
+    void aPlateThatDoesNotFitIsSaidInTheLanguage();
     void importsGoSideBySideAndFitFillsTheView();
 
 private:
@@ -594,6 +596,56 @@ void WindowUsabilityTest::fileChooserFollowsTheLanguage()
                  code == QStringLiteral("fr")   ? QStringLiteral("&Enregistrer")
                  : code == QStringLiteral("el") ? QStringLiteral("&Αποθήκευση")
                                                 : QStringLiteral("&Save"));
+    }
+}
+
+// The Export plate dialog's "does not fit" message in the user's words and numbers (it was the layout's English,
+// "panel (developpee, 1:10) is 342.5 × 50.8 mm", in every language).
+void WindowUsabilityTest::aPlateThatDoesNotFitIsSaidInTheLanguage()
+{
+    namespace cp = core::plate;
+    cp::PlateSpec one;
+    one.panels.resize(1);
+    one.panels[0].scale = 10;
+    cp::LayoutFailure large;
+    large.kind = cp::LayoutFailure::Kind::PanelTooLarge;
+    large.sizeMm = {342.5, 50.8};
+    large.printArea = {15, 15, 267, 180};
+    large.page = {297, 210};
+    large.smallerScale = 13;
+    cp::PlateSpec two = one;
+    two.panels.resize(2);
+    two.panels[1].view = cp::PanelView::Front;
+    two.panels[1].scale = 2.5;
+    cp::LayoutFailure tall;
+    tall.kind = cp::LayoutFailure::Kind::TooTall;
+    tall.sizeMm = {267, 206.5};
+    tall.printArea = large.printArea;
+    tall.page = large.page;
+    tall.fittingScales = {13, 3.5};
+    const struct {
+        QString code, large, tall;
+    } expected[] = {
+        {QStringLiteral("fr"),
+         QStringLiteral("Le panneau (Développée, 1:10) mesure 342,5 × 50,8 mm ; la zone d’impression mesure 267,0 × 180,0 mm : "
+                        "choisissez 1:13 ou plus petit, ou une page plus grande."),
+         QStringLiteral("La planche demande 206,5 mm de hauteur ; la zone d’impression mesure 267,0 × 180,0 mm : choisissez "
+                        "des échelles plus petites (A 1:13, B 1:3,5), une page plus grande ou l’autre orientation.")},
+        {QStringLiteral("el"),
+         QStringLiteral("Το πλαίσιο (Ανάπτυγμα, 1:10) έχει διαστάσεις 342,5 × 50,8 mm· η επιφάνεια εκτύπωσης είναι 267,0 × 180,0 mm: "
+                        "επιλέξτε 1:13 ή μικρότερη κλίμακα, ή μεγαλύτερη σελίδα."),
+         QStringLiteral("Ο πίνακας χρειάζεται ύψος 206,5 mm· η επιφάνεια εκτύπωσης είναι 267,0 × 180,0 mm: επιλέξτε μικρότερες "
+                        "κλίμακες (A 1:13, B 1:3,5), μεγαλύτερη σελίδα ή τον άλλο προσανατολισμό.")},
+        {QStringLiteral("en"),
+         QStringLiteral("The panel (Développée, 1:10) is 342.5 × 50.8 mm; the print area is 267.0 × 180.0 mm: use 1:13 or smaller, "
+                        "or a larger page."),
+         QStringLiteral("The plate needs 206.5 mm of height; the print area is 267.0 × 180.0 mm: use smaller scales (A 1:13, "
+                        "B 1:3.5), a larger page or the other orientation.")},
+    };
+    for (const auto& e : expected) {
+        setLanguage(e.code);
+        QCOMPARE(widgets::PlateDialog::layoutFailureText(large, one), e.large);
+        QCOMPARE(widgets::PlateDialog::layoutFailureText(tall, two), e.tall);
     }
 }
 

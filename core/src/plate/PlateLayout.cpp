@@ -52,15 +52,15 @@ std::string scaleText(double scale)
 namespace {
 
 Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                             double captionMm, const PanelLabelWidth& labelWidth, bool suggest);
+                             double captionMm, const PanelLabelWidth& labelWidth, bool suggest, LayoutFailure* failure);
 
 /**
  * The scales that would fit where the panels at @p spec's scales need too much height: the smallest factor f
- * (bisection) for which every panel at scale · f fits, the scales then rounded up ("A 1:12, B 1:25"); empty when
- * none fits below 1:1,000,000.
+ * (bisection) for which every panel at scale · f fits, the scales then rounded up (one per panel, placed panels
+ * keeping theirs); empty when none fits below 1:1,000,000.
  */
-std::string fittingScales(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                          double captionMm, const PanelLabelWidth& labelWidth)
+std::vector<double> fittingScales(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
+                                  double captionMm, const PanelLabelWidth& labelWidth)
 {
     const auto fitsAt = [&](double f, PlateSpec* scaled) {
         PlateSpec s = spec;
@@ -72,7 +72,7 @@ std::string fittingScales(const PlateSpec& spec, std::span<const std::array<doub
             images[i] = {imageMm[i][0] * shrink, imageMm[i][1] * shrink};
         }
         if (scaled) *scaled = s;
-        return layoutAt(s, images, legendRows, captionMm, labelWidth, false).ok();
+        return layoutAt(s, images, legendRows, captionMm, labelWidth, false, nullptr).ok();
     };
     double largest = 0;
     for (const PanelSpec& p : spec.panels)
@@ -86,12 +86,20 @@ std::string fittingScales(const PlateSpec& spec, std::span<const std::array<doub
     }
     PlateSpec scaled;
     if (!fitsAt(high, &scaled)) return {};
+    std::vector<double> scales;
+    for (const PanelSpec& p : scaled.panels) scales.push_back(p.scale);
+    return scales;
+}
+
+/** "A 1:7, B 1:13" (letters only for several panels; placed panels left out). */
+std::string scalesText(const PlateSpec& spec, const std::vector<double>& scales)
+{
     std::string text;
-    for (std::size_t i = 0; i < scaled.panels.size(); ++i) {
-        if (spec.panels[i].atMm) continue; // placed panels keep their place and scale
+    for (std::size_t i = 0; i < scales.size() && i < spec.panels.size(); ++i) {
+        if (spec.panels[i].atMm) continue;
         if (!text.empty()) text += ", ";
         if (spec.panels.size() > 1) text += std::string(1, char('A' + i)) + " ";
-        text += scaleText(scaled.panels[i].scale);
+        text += scaleText(scales[i]);
     }
     return text;
 }
@@ -99,15 +107,15 @@ std::string fittingScales(const PlateSpec& spec, std::span<const std::array<doub
 } // namespace
 
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                                double captionMm, const PanelLabelWidth& labelWidth)
+                                double captionMm, const PanelLabelWidth& labelWidth, LayoutFailure* failure)
 {
-    return layoutAt(spec, imageMm, legendRows, captionMm, labelWidth, true);
+    return layoutAt(spec, imageMm, legendRows, captionMm, labelWidth, true, failure);
 }
 
 namespace {
 
 Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                             double captionMm, const PanelLabelWidth& labelWidth, bool suggest)
+                             double captionMm, const PanelLabelWidth& labelWidth, bool suggest, LayoutFailure* failure)
 {
     PlateLayout out;
     out.page = spec.orientedPage();
@@ -139,7 +147,11 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
         const double smaller = std::ceil(p.scale * factor);
         // Past 1:1,000,000 (the largest scale a panel takes), or with no height left beside the panel's labels,
         // no scale fits: only a larger page does.
-        const std::string remedy = area.h - fixedH > 1e-9 && smaller <= 1e6
+        const bool fits = area.h - fixedH > 1e-9 && smaller <= 1e6;
+        if (failure)
+            *failure = {LayoutFailure::Kind::PanelTooLarge, i, s, {}, area, out.page,
+                        fits ? std::optional<double>(smaller) : std::nullopt, {}};
+        const std::string remedy = fits
                                        ? "use " + scaleText(smaller) + " or smaller, or a larger page"
                                        : "no scale fits this page; use a larger page";
         return Error{ErrorCode::InvalidArgument, "panel " + name + "(" + panelViewName(p.view) + ", " +
@@ -172,11 +184,15 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
             const PanelBox& b = out.panels[i];
             const double bottom = b.barRect.bottom() + 4.0;
             if (x < 0 || top - kLetterBandMm < 0 || std::max(b.image.right(), b.barRect.right()) > out.page.widthMm + 1e-9 ||
-                bottom > out.page.heightMm + 1e-9)
+                bottom > out.page.heightMm + 1e-9) {
+                if (failure)
+                    *failure = {LayoutFailure::Kind::PanelOutside, i, {b.image.w, bottom - top}, {x, top}, area, out.page,
+                                std::nullopt, {}};
                 return Error{ErrorCode::InvalidArgument, "panel " + letter + " at (" + mm(x) + ", " + mm(top) + ") mm is " +
                                                              mm(b.image.w) + " × " + mm(bottom - top) +
                                                              " mm with its bands and leaves the " + mm(out.page.widthMm) +
                                                              " × " + mm(out.page.heightMm) + " mm page"};
+            }
             continue;
         }
         const double w = blocks[i], h = blockHeight(p, imageMm[i][1]);
@@ -198,7 +214,11 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
         bottom = out.caption.bottom();
     }
     if (bottom > area.bottom() + 1e-9) {
-        const std::string scales = suggest ? fittingScales(spec, imageMm, legendRows, captionMm, labelWidth) : std::string();
+        const std::vector<double> fitting =
+            suggest ? fittingScales(spec, imageMm, legendRows, captionMm, labelWidth) : std::vector<double>{};
+        const std::string scales = scalesText(spec, fitting);
+        if (failure)
+            *failure = {LayoutFailure::Kind::TooTall, 0, {area.w, bottom - area.y}, {}, area, out.page, std::nullopt, fitting};
         return Error{ErrorCode::InvalidArgument, "the panels" + std::string(legendRows > 0 ? ", the legend" : "") +
                                                      (captionMm > 0 ? " and the caption" : "") + " need " +
                                                      mm(bottom - area.y) + " mm of height; " + pageText +

@@ -22,6 +22,8 @@
 #include <QHeaderView>
 #include <QLabel>
 #include <QLocale>
+
+#include <optional>
 #include <QPainter>
 #include <QScreen>
 #include <QPlainTextEdit>
@@ -86,14 +88,28 @@ QString shadingText(cp::PanelShading s)
     return {};
 }
 
+/** "1:10", "1:2,5" in the user's number format. */
+QString scaleLabel(double scale)
+{
+    return QStringLiteral("1:") + QLocale().toString(scale, 'g', 10);
+}
+
+QString millimetres(double mm)
+{
+    return QLocale().toString(mm, 'f', 1);
+}
+
 Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, cp::PlateSpec spec,
                        const plate::PlateTexts& texts)
 {
     Preview out;
     spec.dpi = kPreviewDpi;
-    auto plate = plate::composePlate(*sources, spec, {}, nullptr, texts);
+    std::optional<cp::LayoutFailure> failure{std::in_place};
+    auto plate = plate::composePlate(*sources, spec, {}, nullptr, texts, &*failure);
     if (!plate) {
-        out.error = QString::fromStdString(plate.error().message);
+        // A layout that does not fit is said in the user's language; other errors (a missing octree) name their file.
+        const bool layout = plate.error().code == core::ErrorCode::InvalidArgument && failure->page.widthMm > 0;
+        out.error = layout ? PlateDialog::layoutFailureText(*failure, spec) : QString::fromStdString(plate.error().message);
         return out;
     }
     const auto& page = plate->layout.page;
@@ -465,6 +481,49 @@ void PlateDialog::startPreview()
     watcher->setFuture(QtConcurrent::run([sources = m_sources, spec = spec(), texts = PlateTexts::translated(m_sources->legend)] {
         return computePreview(sources, spec, texts);
     }));
+}
+
+QString PlateDialog::layoutFailureText(const cp::LayoutFailure& failure, const cp::PlateSpec& spec)
+{
+    const QString area = tr("%1 × %2 mm").arg(millimetres(failure.printArea.w), millimetres(failure.printArea.h));
+    const bool letters = spec.panels.size() > 1;
+    const auto panelName = [&](std::size_t i) {
+        const cp::PanelSpec& p = spec.panels[i];
+        const QString what = QStringLiteral("%1, %2").arg(viewText(p.view), scaleLabel(p.scale));
+        return letters ? tr("Panel %1 (%2)").arg(QChar(QLatin1Char(char('A' + i))), what) : tr("The panel (%1)").arg(what);
+    };
+    switch (failure.kind) {
+    case cp::LayoutFailure::Kind::PanelTooLarge: {
+        if (failure.panel >= spec.panels.size()) break;
+        const QString size = tr("%1 × %2 mm").arg(millimetres(failure.sizeMm[0]), millimetres(failure.sizeMm[1]));
+        if (failure.smallerScale)
+            return tr("%1 is %2; the print area is %3: use %4 or smaller, or a larger page.")
+                .arg(panelName(failure.panel), size, area, scaleLabel(*failure.smallerScale));
+        return tr("%1 is %2; the print area is %3: no scale fits this page, use a larger page.")
+            .arg(panelName(failure.panel), size, area);
+    }
+    case cp::LayoutFailure::Kind::PanelOutside:
+        if (failure.panel >= spec.panels.size()) break;
+        return tr("%1, placed at (%2, %3) mm, is %4 with its texts and leaves the %5 page.")
+            .arg(panelName(failure.panel), millimetres(failure.atMm[0]), millimetres(failure.atMm[1]),
+                 tr("%1 × %2 mm").arg(millimetres(failure.sizeMm[0]), millimetres(failure.sizeMm[1])),
+                 tr("%1 × %2 mm").arg(millimetres(failure.page.widthMm), millimetres(failure.page.heightMm)));
+    case cp::LayoutFailure::Kind::TooTall: {
+        QStringList scales;
+        for (std::size_t i = 0; i < failure.fittingScales.size() && i < spec.panels.size(); ++i) {
+            if (spec.panels[i].atMm) continue;
+            scales << (letters ? QStringLiteral("%1 %2").arg(QChar(QLatin1Char(char('A' + i))), scaleLabel(failure.fittingScales[i]))
+                               : scaleLabel(failure.fittingScales[i]));
+        }
+        const QString height = millimetres(failure.sizeMm[1]);
+        if (scales.isEmpty())
+            return tr("The plate needs %1 mm of height; the print area is %2: use smaller scales, a larger page or the "
+                      "other orientation.").arg(height, area);
+        return tr("The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the "
+                  "other orientation.").arg(height, area, scales.join(QStringLiteral(", ")));
+    }
+    }
+    return {};
 }
 
 } // namespace stylos::widgets

@@ -11,10 +11,12 @@
 
 namespace stylos::plate {
 
-/** @p texts: the plate's words (translated by the workbench), kept in the plate and measured for the layout. */
+/** @p texts: the plate's words (translated by the workbench), kept in the plate and measured for the layout.
+ *  @p failure, when given, receives why the plate does not fit its page (core::plate::layoutPlate). */
 core::Result<PlateContent> composePlate(const core::plate::PlateSources& sources, const core::plate::PlateSpec& spec,
                                         const core::plate::PanelRenderOptions& options,
                                         core::ProgressSink* progress = nullptr,
-                                        const PlateTexts& texts = PlateTexts::english());
+                                        const PlateTexts& texts = PlateTexts::english(),
+                                        core::plate::LayoutFailure* failure = nullptr);
 
 } // namespace stylos::plate

@@ -19,6 +19,7 @@
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -57,6 +58,26 @@ struct PlateLayout {
     RectMm caption;        ///< h = 0: no caption
 };
 
+/** @brief Why a plate does not fit its page, as values, so that the workbench can say it in the user's language. */
+struct LayoutFailure {
+    enum class Kind {
+        PanelTooLarge,  ///< panel `panel`'s image (`sizeMm`) is larger than the print area on its own
+        PanelOutside,   ///< placed panel `panel` at `atMm` with its bands (`sizeMm`) leaves the page
+        TooTall,        ///< the panels, legend and caption need `sizeMm[1]` mm of height
+    };
+    Kind kind = Kind::PanelTooLarge;
+    std::size_t panel = 0;
+    std::array<double, 2> sizeMm{};
+    std::array<double, 2> atMm{};
+    RectMm printArea;
+    PageSize page;                   ///< the page as laid out (oriented)
+    /** PanelTooLarge: the scale that would fit (nullopt: none does, only a larger page). */
+    std::optional<double> smallerScale;
+    /** TooTall: a scale for each panel that would make them fit together (placed panels keep theirs); empty when
+     *  none was found. */
+    std::vector<double> fittingScales;
+};
+
 /** @brief The width on paper (mm) that panel @p index's title line and its bar with "1:N" take at the panel's scale
  *         (the painter measures them; the bar's length and "1:N" change with the scale). */
 using PanelLabelWidth = std::function<double(std::size_t index, const PanelSpec& panel)>;
@@ -67,10 +88,12 @@ using PanelLabelWidth = std::function<double(std::size_t index, const PanelSpec&
  *        panel takes max(image, labels) in its row, so a small image's texts do not run into the next panel (a row
  *        wider than the print area starts at its left edge). When the panels, legend and caption need more height
  *        than the print area, the message gives scales that would fit (the flowing panels' scales times one
- *        factor, rounded up; their labels measured again at those scales).
+ *        factor, rounded up; their labels measured again at those scales). @p failure, when given, receives
+ *        the same as values when the plate does not fit (the message stays English).
  */
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
-                                double captionMm, const PanelLabelWidth& labelWidth = {});
+                                double captionMm, const PanelLabelWidth& labelWidth = {},
+                                LayoutFailure* failure = nullptr);
 
 /** @brief "1:10", "1:2.5". */
 std::string scaleText(double scale);

@@ -7,6 +7,7 @@
  *        does not fit says so ("use 1:18 or smaller") and the Export button waits until it fits.
  *        GUI thread only; the preview's work runs on Qt's global thread pool.
  */
+#include "stylos/core/plate/PlateLayout.h"
 #include "stylos/core/plate/PlateSources.h"
 #include "stylos/core/plate/PlateSpec.h"
 
@@ -57,6 +58,10 @@ public:
     static core::plate::PlateSpec defaultSpec(
         const core::plate::PlateSources& sources,
         const std::function<std::shared_ptr<const core::octree::PackedOctree>(const core::plate::PlateFragment&)>& opened = {});
+
+    /** @brief Why @p spec's plate does not fit its page, in the workbench's language and number format (the layout's
+     *         own message is English): the panel and its size, the print area, the scale or scales that would fit. */
+    static QString layoutFailureText(const core::plate::LayoutFailure& failure, const core::plate::PlateSpec& spec);
 
     // For tests.
     QLabel* previewLabel() const { return m_preview; }
