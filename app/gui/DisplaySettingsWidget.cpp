@@ -81,7 +81,7 @@ DisplaySettingsWidget::DisplaySettingsWidget(widgets::ViewportWidget& viewport, 
     const QSettings settings;
     m_updating = true;
     m_shading->setCurrentIndex(std::clamp(settings.value(ShadingKey, 1).toInt(), 0, 4));
-    m_splat->setValue(settings.value(SplatKey, 1.0).toDouble());
+    m_splat->setValue(settings.value(SplatKey, m_viewport.splatFactor()).toDouble()); // the renderer's default
     m_budget->setValue(settings.value(BudgetKey, 1.0).toDouble());
     const int level = settings.value(DetailKey, -1).toInt();
     m_detail->setCurrentIndex(level < 0 ? 0 : 1);

@@ -11,6 +11,7 @@
 #include "stylos/widgets/document/SceneDocument.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
+#include <QLocale>
 #include <QAction>
 #include <QActionGroup>
 #include <QMenu>
@@ -73,10 +74,10 @@ DockingActions::DockingActions(widgets::SceneDocument& document, widgets::Viewpo
         Q_EMIT reported(tr("Guides of %1: %2 flutes, leading radius %3 mm, flute depth %4 mm, RMS %5 mm, %6 s")
                             .arg(f ? QString::fromStdString(f->name) : r.octreePath)
                             .arg(r.flutes)
-                            .arg(r.radius * 1e3, 0, 'f', 2)
-                            .arg(r.fluteDepth * 1e3, 0, 'f', 2)
-                            .arg(r.rms * 1e3, 0, 'f', 2)
-                            .arg(r.seconds, 0, 'f', 1),
+                            .arg(QLocale().toString(r.radius * 1e3, 'f', 2))
+                            .arg(QLocale().toString(r.fluteDepth * 1e3, 'f', 2))
+                            .arg(QLocale().toString(r.rms * 1e3, 'f', 2))
+                            .arg(QLocale().toString(r.seconds, 'f', 1)),
                         false);
     });
     connect(m_fits, &widgets::GuideFitRunner::failed, this,

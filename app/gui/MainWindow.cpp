@@ -38,6 +38,7 @@
 
 #include <algorithm>
 
+#include <QLocale>
 #include <QCloseEvent>
 #include <QDir>
 #include <QLabel>
@@ -294,10 +295,10 @@ void MainWindow::connectDocument()
         const auto* f = m_document->fragment(r.fragmentId);
         report(tr("Skydome of %1: %2 cells at level %3, %4 sky directions, %5 s")
                    .arg(f ? QString::fromStdString(f->name) : r.octreePath)
-                   .arg(r.cells)
+                   .arg(QLocale().toString(qlonglong(r.cells)))
                    .arg(r.level)
                    .arg(r.directions)
-                   .arg(r.seconds, 0, 'f', 1),
+                   .arg(QLocale().toString(r.seconds, 'f', 1)),
                false);
     });
     connect(m_skydome, &widgets::SkydomeRunner::failed, this,

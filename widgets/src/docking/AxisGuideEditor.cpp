@@ -5,6 +5,7 @@
 #include "stylos/widgets/docking/EditAxisDialog.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
+#include <QLocale>
 #include <QTimer>
 
 #include <algorithm>
@@ -92,7 +93,7 @@ void AxisGuideEditor::picked(FragmentId id, const Eigen::Vector3d& a, const Eige
         return;
     }
     if (setAxis(id, p, q - p, tr("Set the axis of %1 from two points").arg(name)))
-        Q_EMIT reported(tr("Axis of %1 set through the two points picked, %2 mm apart").arg(name).arg((q - p).norm() * 1e3, 0, 'f', 1),
+        Q_EMIT reported(tr("Axis of %1 set through the two points picked, %2 mm apart").arg(name).arg(QLocale().toString((q - p).norm() * 1e3, 'f', 1)),
                         false);
 }
 

@@ -5,6 +5,7 @@
 #include "tasks/ErrorText.h"
 #include "tasks/JobResult.h"
 
+#include <QLocale>
 #include <QFileInfo>
 #include <QStringList>
 
@@ -52,17 +53,17 @@ QString DockJob::summary(const QString& name, const DockJobResult& r)
     for (const dock::DockUncertainty& u : r.dock.uncertainty) {
         const bool angular = u.unknown == dock::DockUnknown::Theta || u.unknown == dock::DockUnknown::TiltLean ||
                              u.unknown == dock::DockUnknown::TiltRoll;
-        sigmas << (angular ? tr("%1 ±%2°").arg(unknownText(u.unknown)).arg(u.sigma * 180.0 / std::numbers::pi, 0, 'g', 2)
-                           : tr("%1 ±%2 mm").arg(unknownText(u.unknown)).arg(u.sigma * 1e3, 0, 'g', 2));
+        sigmas << (angular ? tr("%1 ±%2°").arg(unknownText(u.unknown)).arg(QLocale().toString(u.sigma * 180.0 / std::numbers::pi, 'g', 2))
+                           : tr("%1 ±%2 mm").arg(unknownText(u.unknown)).arg(QLocale().toString(u.sigma * 1e3, 'g', 2)));
     }
     QStringList unobservable;
     for (dock::DockUnknown u : r.dock.unobservable) unobservable << unknownText(u);
     QString text = tr("Docked %1: RMS %2 mm over %3 points, moved %4 flutes about the axis, %5 s")
                        .arg(name)
-                       .arg(r.dock.rms * 1e3, 0, 'f', 3)
-                       .arg(r.dock.inliers)
-                       .arg(r.dock.fluteShift, 0, 'f', 2)
-                       .arg(r.seconds, 0, 'f', 1);
+                       .arg(QLocale().toString(r.dock.rms * 1e3, 'f', 3))
+                       .arg(QLocale().toString(qlonglong(r.dock.inliers)))
+                       .arg(QLocale().toString(r.dock.fluteShift, 'f', 2))
+                       .arg(QLocale().toString(r.seconds, 'f', 1));
     if (!sigmas.isEmpty()) text += tr("; ", "between the parts of a status line") + tr("uncertainty %1").arg(sigmas.join(QStringLiteral(", ")));
     if (!unobservable.isEmpty())
         text += tr("; ", "between the parts of a status line") + tr("not fixed by the flutes, left as it was: %1").arg(unobservable.join(QStringLiteral(", ")));
