@@ -394,7 +394,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Group the selected fragments into an assembly that moves as one; a drum among them (a fragment with an axis guide) becomes what they dock against</source>
-        <translation>Ομαδοποίηση των επιλεγμένων θραυσμάτων σε συναρμολόγηση που κινείται ενιαία· ένα τύμπανο ανάμεσά τους (θραύσμα με οδηγό άξονα) γίνεται αυτό στο οποίο προσαρμόζονται</translation>
+        <translation>Ομαδοποίηση των επιλεγμένων θραυσμάτων σε συναρμολόγηση που κινείται ενιαία· ένας σπόνδυλος ανάμεσά τους (θραύσμα με οδηγό άξονα) γίνεται αυτό στο οποίο προσαρμόζονται</translation>
     </message>
     <message>
         <source>&amp;Take out of assembly</source>
@@ -414,7 +414,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>&amp;Use as the assembly&apos;s drum</source>
-        <translation>&amp;Χρήση ως τύμπανο της συναρμολόγησης</translation>
+        <translation>&amp;Χρήση ως σπονδύλου της συναρμολόγησης</translation>
     </message>
     <message>
         <source>Dock the assembly&apos;s fragments against the guides of the selected fragment</source>
@@ -426,7 +426,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Unroll the assembly&apos;s drum with every fragment of the assembly at its place, on the drum&apos;s axis: the reconstruction in 2D, the free places; click a fragment to select it</source>
-        <translation>Ξετύλιγμα του τυμπάνου της συναρμολόγησης με κάθε θραύσμα της στη θέση του, στον άξονα του τυμπάνου: η αναστήλωση σε 2D, οι ελεύθερες θέσεις· κλικ σε ένα θραύσμα το επιλέγει</translation>
+        <translation>Ξετύλιγμα του σπονδύλου της συναρμολόγησης με κάθε θραύσμα της στη θέση του, στον άξονα του σπονδύλου: η αναστήλωση σε 2D, οι ελεύθερες θέσεις· κλικ σε ένα θραύσμα το επιλέγει</translation>
     </message>
 </context>
 <context>
@@ -492,7 +492,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>With --grab: first fit the first fragment&apos;s drum guides, dock against it and show the Move tool on the second fragment, in the drum&apos;s frame.</source>
-        <translation>Με --grab: πρώτα προσαρμογή των οδηγών τυμπάνου του πρώτου θραύσματος, πρόσδεση σε αυτό και εμφάνιση του εργαλείου Μετακίνησης στο δεύτερο θραύσμα, στο σύστημα του τυμπάνου.</translation>
+        <translation>Με --grab: πρώτα προσαρμογή των οδηγών σπονδύλου του πρώτου θραύσματος, πρόσδεση σε αυτό και εμφάνιση του εργαλείου Μετακίνησης στο δεύτερο θραύσμα, στο σύστημα του σπονδύλου.</translation>
     </message>
     <message>
         <source>--gizmo goes with --grab</source>
@@ -500,7 +500,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>With --grab: first fit the first fragment&apos;s drum guides, dock the second fragment to its flutes from where it stands and show its contact readout.</source>
-        <translation>Με --grab: πρώτα προσαρμογή των οδηγών τυμπάνου του πρώτου θραύσματος, πρόσδεση του δεύτερου θραύσματος στις ραβδώσεις του από τη θέση του και εμφάνιση της ένδειξης επαφής του.</translation>
+        <translation>Με --grab: πρώτα προσαρμογή των οδηγών σπονδύλου του πρώτου θραύσματος, πρόσδεση του δεύτερου θραύσματος στις ραβδώσεις του από τη θέση του και εμφάνιση της ένδειξης επαφής του.</translation>
     </message>
     <message>
         <source>--dock goes with --grab</source>
@@ -554,11 +554,11 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>The développée of %1 needs a drum with an axis guide (Use as the assembly&apos;s drum)</source>
-        <translation>Το ανάπτυγμα του %1 χρειάζεται τύμπανο με οδηγό άξονα (Χρήση ως τύμπανο της συναρμολόγησης)</translation>
+        <translation>Το ανάπτυγμα του %1 χρειάζεται σπόνδυλο με οδηγό άξονα (Χρήση ως σπονδύλου της συναρμολόγησης)</translation>
     </message>
     <message>
         <source>The développée of %1 cannot start: its drum is still opening or busy</source>
-        <translation>Το ανάπτυγμα του %1 δεν μπορεί να ξεκινήσει: το τύμπανό του ανοίγει ακόμη ή είναι απασχολημένο</translation>
+        <translation>Το ανάπτυγμα του %1 δεν μπορεί να ξεκινήσει: ο σπόνδυλός του ανοίγει ακόμη ή είναι απασχολημένος</translation>
     </message>
     <message>
         <source>Développée of %1: %2</source>
@@ -708,23 +708,23 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>&amp;Drum</source>
-        <translation>&amp;Τύμπανο</translation>
+        <translation>&amp;Σπόνδυλος</translation>
     </message>
     <message>
         <source>Dock against this &amp;drum</source>
-        <translation>Πρόσδεση σε αυτό το &amp;τύμπανο</translation>
+        <translation>Πρόσδεση σε αυτόν τον &amp;σπόνδυλο</translation>
     </message>
     <message>
         <source>Use the axis and flutes of the selected fragment for the gizmo&apos;s Drum frame</source>
-        <translation>Χρήση του άξονα και των ραβδώσεων του επιλεγμένου θραύσματος για το σύστημα Τυμπάνου του χειριστηρίου</translation>
+        <translation>Χρήση του άξονα και των ραβδώσεων του επιλεγμένου θραύσματος για το σύστημα Σπονδύλου του χειριστηρίου</translation>
     </message>
     <message>
         <source>Fit drum &amp;guides</source>
-        <translation>Προσαρμογή &amp;οδηγών τυμπάνου</translation>
+        <translation>Προσαρμογή &amp;οδηγών σπονδύλου</translation>
     </message>
     <message>
         <source>Fit the axis and the flute lines of the selected drum in the background</source>
-        <translation>Προσαρμογή στο παρασκήνιο του άξονα και των γραμμών ραβδώσεων του επιλεγμένου τυμπάνου</translation>
+        <translation>Προσαρμογή στο παρασκήνιο του άξονα και των γραμμών ραβδώσεων του επιλεγμένου σπονδύλου</translation>
     </message>
     <message>
         <source>De&amp;lete guides</source>
@@ -740,7 +740,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>This fragment is being docked already, or its octree or the drum&apos;s is not open yet</source>
-        <translation>Το θραύσμα αυτό προσδένεται ήδη, ή το οκταδικό δέντρο του ή του τυμπάνου δεν έχει ανοίξει ακόμη</translation>
+        <translation>Το θραύσμα αυτό προσδένεται ήδη, ή το οκταδικό δέντρο του ή του σπονδύλου δεν έχει ανοίξει ακόμη</translation>
     </message>
     <message>
         <source>Dock to &amp;flutes</source>
@@ -748,7 +748,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Snap the selected fragment onto the nearest flutes of the docking drum and refine its pose against them (one undo step)</source>
-        <translation>Ευθυγράμμιση του επιλεγμένου θραύσματος στις πλησιέστερες ραβδώσεις του τυμπάνου πρόσδεσης και βελτίωση της θέσης του πάνω τους (ένα βήμα αναίρεσης)</translation>
+        <translation>Ευθυγράμμιση του επιλεγμένου θραύσματος στις πλησιέστερες ραβδώσεις του σπονδύλου πρόσδεσης και βελτίωση της θέσης του πάνω τους (ένα βήμα αναίρεσης)</translation>
     </message>
     <message>
         <source>Docking &amp;locks</source>
@@ -1309,11 +1309,11 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Contact with the drum</source>
-        <translation>Επαφή με το τύμπανο</translation>
+        <translation>Επαφή με τον σπόνδυλο</translation>
     </message>
     <message>
         <source>Placement in the drum frame</source>
-        <translation>Θέση στο σύστημα του τυμπάνου</translation>
+        <translation>Θέση στο σύστημα του σπονδύλου</translation>
     </message>
 </context>
 <context>
@@ -1393,7 +1393,7 @@ Do you want to delete it anyway?</source>
     <name>stylos::widgets::ContactJob</name>
     <message>
         <source>Contact of %1 with the drum</source>
-        <translation>Επαφή του %1 με το τύμπανο</translation>
+        <translation>Επαφή του %1 με τον σπόνδυλο</translation>
     </message>
     <message>
         <source>Could not measure the contact of %1: %2.</source>
@@ -1428,11 +1428,11 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Signed distance of the fragment&apos;s outer face to the drum&apos;s flute profile, along its normal; negative: inside the drum</source>
-        <translation>Προσημασμένη απόσταση της εξωτερικής όψης του θραύσματος από το προφίλ των ραβδώσεων του τυμπάνου, κατά την κάθετό του· αρνητική: μέσα στο τύμπανο</translation>
+        <translation>Προσημασμένη απόσταση της εξωτερικής όψης του θραύσματος από το προφίλ των ραβδώσεων του σπονδύλου, κατά την κάθετό του· αρνητική: μέσα στον σπόνδυλο</translation>
     </message>
     <message>
         <source>Set a docking drum with guides (Tools › Dock against this drum) and select another fragment.</source>
-        <translation>Ορίστε ένα τύμπανο πρόσδεσης με οδηγούς (Εργαλεία › Πρόσδεση σε αυτό το τύμπανο) και επιλέξτε άλλο θραύσμα.</translation>
+        <translation>Ορίστε έναν σπόνδυλο πρόσδεσης με οδηγούς (Εργαλεία › Πρόσδεση σε αυτόν τον σπόνδυλο) και επιλέξτε άλλο θραύσμα.</translation>
     </message>
     <message>
         <source>Measuring…</source>
@@ -1440,11 +1440,11 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Against the docking drum&apos;s flute profile:</source>
-        <translation>Έναντι του προφίλ ραβδώσεων του τυμπάνου πρόσδεσης:</translation>
+        <translation>Έναντι του προφίλ ραβδώσεων του σπονδύλου πρόσδεσης:</translation>
     </message>
     <message>
         <source>The fragment does not touch the drum (no point of it within 5 mm of the profile).</source>
-        <translation>Το θραύσμα δεν αγγίζει το τύμπανο (κανένα σημείο του εντός 5 mm από το προφίλ).</translation>
+        <translation>Το θραύσμα δεν αγγίζει τον σπόνδυλο (κανένα σημείο του εντός 5 mm από το προφίλ).</translation>
     </message>
     <message>
         <source>%1 mm</source>
@@ -1507,7 +1507,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Drum 1 reconstruction</source>
-        <translation>Αναστήλωση τυμπάνου 1</translation>
+        <translation>Αναστήλωση σπονδύλου 1</translation>
     </message>
     <message>
         <source>Flute %1</source>
@@ -1810,11 +1810,11 @@ Do you want to delete it anyway?</source>
     <name>stylos::widgets::DockRunner</name>
     <message>
         <source>The docking drum changed while its guides were fitted</source>
-        <translation>Το τύμπανο πρόσδεσης άλλαξε κατά την προσαρμογή των οδηγών του</translation>
+        <translation>Ο σπόνδυλος πρόσδεσης άλλαξε κατά την προσαρμογή των οδηγών του</translation>
     </message>
     <message>
         <source>%1 or the drum moved while it was docked: the dock was not applied</source>
-        <translation>Το %1 ή το τύμπανο μετακινήθηκε κατά την πρόσδεση: η πρόσδεση δεν εφαρμόστηκε</translation>
+        <translation>Το %1 ή ο σπόνδυλος μετακινήθηκε κατά την πρόσδεση: η πρόσδεση δεν εφαρμόστηκε</translation>
     </message>
     <message>
         <source>Dock %1</source>
@@ -1849,15 +1849,15 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Azimuth of the fragment&apos;s centre about the drum axis, from the drum&apos;s reference direction (as in its développée); typing turns the fragment about the axis</source>
-        <translation>Αζιμούθιο του κέντρου του θραύσματος γύρω από τον άξονα του τυμπάνου, από τη διεύθυνση αναφοράς του τυμπάνου (όπως στο ανάπτυγμά του)· η πληκτρολόγηση περιστρέφει το θραύσμα γύρω από τον άξονα</translation>
+        <translation>Αζιμούθιο του κέντρου του θραύσματος γύρω από τον άξονα του σπονδύλου, από τη διεύθυνση αναφοράς του σπονδύλου (όπως στο ανάπτυγμά του)· η πληκτρολόγηση περιστρέφει το θραύσμα γύρω από τον άξονα</translation>
     </message>
     <message>
         <source>Height of the fragment&apos;s centre along the drum axis, from the axis guide&apos;s point</source>
-        <translation>Ύψος του κέντρου του θραύσματος κατά μήκος του άξονα του τυμπάνου, από το σημείο του οδηγού άξονα</translation>
+        <translation>Ύψος του κέντρου του θραύσματος κατά μήκος του άξονα του σπονδύλου, από το σημείο του οδηγού άξονα</translation>
     </message>
     <message>
         <source>Distance of the fragment&apos;s centre from the drum axis</source>
-        <translation>Απόσταση του κέντρου του θραύσματος από τον άξονα του τυμπάνου</translation>
+        <translation>Απόσταση του κέντρου του θραύσματος από τον άξονα του σπονδύλου</translation>
     </message>
     <message>
         <source>Turn about the tangent through the fragment&apos;s centre (leans it in or out)</source>
@@ -1869,7 +1869,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>This fragment has no drum with an axis guide (put it in an assembly with a drum, or Tools › Dock against this drum), or its octree is not open yet.</source>
-        <translation>Αυτό το θραύσμα δεν έχει τύμπανο με οδηγό άξονα (βάλτε το σε συναρμολόγηση με τύμπανο, ή Εργαλεία › Πρόσδεση σε αυτό το τύμπανο), ή το οκταδικό του δέντρο δεν έχει ανοίξει ακόμη.</translation>
+        <translation>Αυτό το θραύσμα δεν έχει σπόνδυλο με οδηγό άξονα (βάλτε το σε συναρμολόγηση με σπόνδυλο, ή Εργαλεία › Πρόσδεση σε αυτόν τον σπόνδυλο), ή το οκταδικό του δέντρο δεν έχει ανοίξει ακόμη.</translation>
     </message>
     <message>
         <source>No fragment selected.</source>
@@ -2077,7 +2077,7 @@ Do you want to delete it anyway?</source>
     <name>stylos::widgets::GuideFitJob</name>
     <message>
         <source>Drum guides of %1</source>
-        <translation>Οδηγοί τυμπάνου του %1</translation>
+        <translation>Οδηγοί σπονδύλου του %1</translation>
     </message>
     <message>
         <source>Could not fit the guides of %1: %2.</source>
@@ -2837,7 +2837,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Set the drum of %1</source>
-        <translation>Ορισμός τυμπάνου του %1</translation>
+        <translation>Ορισμός σπονδύλου του %1</translation>
     </message>
     <message>
         <source>Show %1</source>
