@@ -1805,6 +1805,30 @@ Do you want to delete it anyway?</source>
         <comment>between the parts of a status line</comment>
         <translation> · </translation>
     </message>
+    <message>
+        <source>Could not dock %1: its %2 points are too few (at least 200 are needed).</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: τα %2 σημεία του είναι πολύ λίγα (χρειάζονται τουλάχιστον 200).</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: it is too far from the drum; %2 of its points lie within %3 mm of the drum&apos;s surface (at least 200 are needed). Bring it nearer its place on the drum (the Move tool, or its placement in the drum frame in Properties) and dock again.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: είναι πολύ μακριά από τον σπόνδυλο· %2 από τα σημεία του βρίσκονται εντός %3 mm από την επιφάνεια του σπονδύλου (χρειάζονται τουλάχιστον 200). Φέρτε το πιο κοντά στη θέση του στον σπόνδυλο (το Εργαλείο Μετακίνησης, ή η θέση του στο σύστημα του σπονδύλου στις Ιδιότητες) και κάντε ξανά πρόσδεση.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: from where it stands its outer face does not meet the drum&apos;s surface. Bring it nearer its place on the drum and dock again.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: από τη θέση όπου βρίσκεται, η εξωτερική του όψη δεν συναντά την επιφάνεια του σπονδύλου. Φέρτε το πιο κοντά στη θέση του στον σπόνδυλο και κάντε ξανά πρόσδεση.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: no flutes can be read on its outer face (flute signal %2, at least %3 needed). Lock θ (Tools › Docking locks) to dock it against the drum&apos;s surface alone.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: δεν διαβάζονται ραβδώσεις στην εξωτερική του όψη (σήμα ραβδώσεων %2, απαιτείται τουλάχιστον %3). Κλειδώστε το θ (Εργαλεία › Κλειδώματα πρόσδεσης) για πρόσδεση μόνο στην επιφάνεια του σπονδύλου.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: fewer than 200 of its points stayed on the flutes. Start it nearer its place and dock again.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: λιγότερα από 200 σημεία του έμειναν στις ραβδώσεις. Ξεκινήστε πιο κοντά στη θέση του και κάντε ξανά πρόσδεση.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: the registration did not settle in %2 iterations.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: η ευθυγράμμιση δεν σταθεροποιήθηκε σε %2 επαναλήψεις.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

@@ -1799,6 +1799,30 @@ Do you want to delete it anyway?</source>
         <comment>between the parts of a status line</comment>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Could not dock %1: its %2 points are too few (at least 200 are needed).</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not dock %1: it is too far from the drum; %2 of its points lie within %3 mm of the drum&apos;s surface (at least 200 are needed). Bring it nearer its place on the drum (the Move tool, or its placement in the drum frame in Properties) and dock again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not dock %1: from where it stands its outer face does not meet the drum&apos;s surface. Bring it nearer its place on the drum and dock again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not dock %1: no flutes can be read on its outer face (flute signal %2, at least %3 needed). Lock θ (Tools › Docking locks) to dock it against the drum&apos;s surface alone.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not dock %1: fewer than 200 of its points stayed on the flutes. Start it nearer its place and dock again.</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Could not dock %1: the registration did not settle in %2 iterations.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

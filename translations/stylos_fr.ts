@@ -1805,6 +1805,30 @@ Voulez-vous quand même le supprimer ?</translation>
         <comment>between the parts of a status line</comment>
         <translation>&#x202f;; </translation>
     </message>
+    <message>
+        <source>Could not dock %1: its %2 points are too few (at least 200 are needed).</source>
+        <translation>Impossible d’amarrer %1 : ses %2 points sont trop peu nombreux (il en faut au moins 200).</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: it is too far from the drum; %2 of its points lie within %3 mm of the drum&apos;s surface (at least 200 are needed). Bring it nearer its place on the drum (the Move tool, or its placement in the drum frame in Properties) and dock again.</source>
+        <translation>Impossible d’amarrer %1 : il est trop loin du tambour ; %2 de ses points sont à moins de %3 mm de la surface du tambour (il en faut au moins 200). Approchez-le de sa place sur le tambour (l’outil Déplacer, ou son placement dans le repère du tambour dans Propriétés) et amarrez-le de nouveau.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: from where it stands its outer face does not meet the drum&apos;s surface. Bring it nearer its place on the drum and dock again.</source>
+        <translation>Impossible d’amarrer %1 : depuis sa position, sa face extérieure ne rencontre pas la surface du tambour. Approchez-le de sa place sur le tambour et amarrez-le de nouveau.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: no flutes can be read on its outer face (flute signal %2, at least %3 needed). Lock θ (Tools › Docking locks) to dock it against the drum&apos;s surface alone.</source>
+        <translation>Impossible d’amarrer %1 : aucune cannelure ne se lit sur sa face extérieure (signal des cannelures %2, au moins %3 requis). Verrouillez θ (Outils › Verrous d’amarrage) pour l’amarrer contre la seule surface du tambour.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: fewer than 200 of its points stayed on the flutes. Start it nearer its place and dock again.</source>
+        <translation>Impossible d’amarrer %1 : moins de 200 de ses points sont restés sur les cannelures. Placez-le plus près de sa place et amarrez-le de nouveau.</translation>
+    </message>
+    <message>
+        <source>Could not dock %1: the registration did not settle in %2 iterations.</source>
+        <translation>Impossible d’amarrer %1 : le recalage ne s’est pas stabilisé en %2 itérations.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

@@ -159,19 +159,40 @@ TEST(DockRegistrationTest, RefusesAStartFarFromTheDrum)
     Eigen::Isometry3d far = test::truePose(fragment, test::dockDrum());
     far.translation() += Eigen::Vector3d(0.0, 0.0, 5.0); // 5 m off, along z of the file frame
     far = Eigen::Translation3d(2.0, 2.0, 0.0) * far;
-    auto result = dockFragment(fragment.cloud, guides(), far);
+    DockFailure failure;
+    failure.kind = DockFailure::Kind::NotConverged; // overwritten
+    auto result = dockFragment(fragment.cloud, guides(), far, {}, nullptr, &failure);
     ASSERT_FALSE(result.ok());
     EXPECT_EQ(result.error().code, ErrorCode::InvalidArgument);
     EXPECT_NE(result.error().message.find("too far from the drum"), std::string::npos) << result.error().message;
+    // The same as values, for the workbench's words: no point within the searched reach, which the message names.
+    EXPECT_EQ(failure.kind, DockFailure::Kind::TooFar);
+    EXPECT_EQ(failure.points, 0u);
+    EXPECT_GT(failure.reachM, 0.0);
+    char reach[32];
+    std::snprintf(reach, sizeof reach, "within %.1f mm", failure.reachM * 1e3);
+    EXPECT_NE(result.error().message.find(reach), std::string::npos) << result.error().message << " / " << reach;
+    // A dock that succeeds says no failure.
+    const auto docked = dockFragment(fragment.cloud, guides(), Eigen::Isometry3d(test::truePose(fragment, test::dockDrum())),
+                                     {}, nullptr, &failure);
+    ASSERT_TRUE(docked.ok()) << docked.error().message;
+    EXPECT_EQ(failure.kind, DockFailure::Kind::None);
 }
 
 TEST(DockRegistrationTest, RefusesAFragmentWithoutFlutes)
 {
     auto o = test::allRound(0.004, 9, 0); // a plain drum's fragment
     const auto& plain = test::generatedScan("dock-plain-fragment", synth::SyntheticKind::Fragment, o);
-    auto result = dockFragment(plain.cloud, guides(), Eigen::Isometry3d(test::truePose(plain, test::dockDrum())));
+    DockFailure failure;
+    auto result = dockFragment(plain.cloud, guides(), Eigen::Isometry3d(test::truePose(plain, test::dockDrum())), {},
+                               nullptr, &failure);
     ASSERT_FALSE(result.ok());
     EXPECT_NE(result.error().message.find("no readable flutes"), std::string::npos) << result.error().message;
+    EXPECT_EQ(failure.kind, DockFailure::Kind::NoFlutes);
+    EXPECT_LT(failure.strength, failure.needed);
+    char signal[64];
+    std::snprintf(signal, sizeof signal, "signal is %.2f (at least %.2f", failure.strength, failure.needed);
+    EXPECT_NE(result.error().message.find(signal), std::string::npos) << result.error().message;
 }
 
 TEST(DockRegistrationTest, RefusesGuidesWithoutAProfile)

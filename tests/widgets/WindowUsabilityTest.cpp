@@ -106,6 +106,7 @@ private Q_SLOTS:
     void fileChooserFollowsTheLanguage();
     void aPlateThatDoesNotFitIsSaidInTheLanguage();
     void logLinesWriteNumbersInTheLanguage();
+    void aFailedDockSaysWhyAndWhatToDoInTheLanguage();
     void importsGoSideBySideAndFitFillsTheView();
 
 private:
@@ -676,6 +677,49 @@ void WindowUsabilityTest::logLinesWriteNumbersInTheLanguage()
         QVERIFY2(line.contains(e.rms) && line.contains(e.points) && line.contains(QLocale().toString(0.12, 'f', 2)),
                  qPrintable(e.code + QStringLiteral(": ") + line));
         QVERIFY2(!line.contains(QStringLiteral("10974")), qPrintable(line));
+    }
+}
+
+// A dock from too far says so, and what to do, in the user's language (it said "these data and settings do not
+// allow it" in Greek, the reason only in English below).
+void WindowUsabilityTest::aFailedDockSaysWhyAndWhatToDoInTheLanguage()
+{
+    const core::Error error{core::ErrorCode::InvalidArgument, "fragment.poct: the starting pose is too far from the drum"};
+    core::dock::DockFailure far;
+    far.kind = core::dock::DockFailure::Kind::TooFar;
+    far.reachM = 0.0323;
+    core::dock::DockFailure plain;
+    plain.kind = core::dock::DockFailure::Kind::NoFlutes;
+    plain.strength = 0.04;
+    plain.needed = 0.15;
+    const struct {
+        QString code, far, plain;
+    } expected[] = {
+        {QStringLiteral("fr"),
+         QStringLiteral("Impossible d’amarrer f1 : il est trop loin du tambour ; 0 de ses points sont à moins de 32,3 mm de "
+                        "la surface du tambour (il en faut au moins 200). Approchez-le de sa place sur le tambour (l’outil "
+                        "Déplacer, ou son placement dans le repère du tambour dans Propriétés) et amarrez-le de nouveau."),
+         QStringLiteral("signal des cannelures 0,04, au moins 0,15 requis")},
+        {QStringLiteral("el"),
+         QStringLiteral("Δεν ήταν δυνατή η πρόσδεση του f1: είναι πολύ μακριά από τον σπόνδυλο· 0 από τα σημεία του βρίσκονται "
+                        "εντός 32,3 mm από την επιφάνεια του σπονδύλου (χρειάζονται τουλάχιστον 200). Φέρτε το πιο κοντά στη "
+                        "θέση του στον σπόνδυλο (το Εργαλείο Μετακίνησης, ή η θέση του στο σύστημα του σπονδύλου στις "
+                        "Ιδιότητες) και κάντε ξανά πρόσδεση."),
+         QStringLiteral("σήμα ραβδώσεων 0,04, απαιτείται τουλάχιστον 0,15")},
+        {QStringLiteral("en"),
+         QStringLiteral("Could not dock f1: it is too far from the drum; 0 of its points lie within 32.3 mm of the drum's "
+                        "surface (at least 200 are needed). Bring it nearer its place on the drum (the Move tool, or its "
+                        "placement in the drum frame in Properties) and dock again."),
+         QStringLiteral("flute signal 0.04, at least 0.15 needed")},
+    };
+    for (const auto& e : expected) {
+        setLanguage(e.code);
+        QCOMPARE(widgets::DockJob::errorText(QStringLiteral("f1"), error, far), e.far);
+        const QString noFlutes = widgets::DockJob::errorText(QStringLiteral("f1"), error, plain);
+        QVERIFY2(noFlutes.contains(e.plain), qPrintable(noFlutes));
+        // Another reason: the summary of its code, and the core's detail below.
+        const QString other = widgets::DockJob::errorText(QStringLiteral("f1"), error);
+        QVERIFY2(other.endsWith(QStringLiteral("\nfragment.poct: the starting pose is too far from the drum")), qPrintable(other));
     }
 }
 

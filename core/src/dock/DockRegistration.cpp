@@ -244,14 +244,25 @@ std::vector<DockUnknown> dockUnknownsFromName(std::string_view name)
 }
 
 Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGuides& guides,
-                                const Eigen::Isometry3d& start, const DockOptions& options, ProgressSink* progress)
+                                const Eigen::Isometry3d& start, const DockOptions& options, ProgressSink* progress,
+                                DockFailure* failure)
 {
     const auto started = std::chrono::steady_clock::now();
+    DockFailure ignored;
+    DockFailure& why = failure ? *failure : ignored;
+    why = {};
+    const auto failed = [&why](DockFailure::Kind kind) -> DockFailure& {
+        why.kind = kind;
+        return why;
+    };
     auto model = FluteModel::fromGuides(guides);
     if (!model) return invalid(fragment, model.error().message);
     const DrumFrame frame(guides);
     const std::size_t n = fragment.size();
-    if (n < kMinInliers) return invalid(fragment, std::to_string(n) + " points: too few to dock (at least 200)");
+    if (n < kMinInliers) {
+        failed(DockFailure::Kind::TooFewPoints).points = n;
+        return invalid(fragment, std::to_string(n) + " points: too few to dock (at least 200)");
+    }
     if (!start.matrix().allFinite()) return invalid(fragment, "the starting pose is not finite");
 
     Eigen::Isometry3d frameOfWorld = Eigen::Isometry3d::Identity();
@@ -275,9 +286,12 @@ Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGui
     const double depth = model->depth();
     double tau = std::max(kEnvelopeStart, 4.0 * depth);
     p.evaluate(Stage::Envelope, tau);
-    if (p.inliers() < kMinInliers)
+    if (p.inliers() < kMinInliers) {
+        failed(DockFailure::Kind::TooFar).points = p.inliers();
+        why.reachM = tau;
         return invalid(fragment, "the starting pose is too far from the drum: " + std::to_string(p.inliers()) +
                                      " points lie within " + millimetres(tau) + " of its surface (at least 200 needed)");
+    }
     for (int it = 0; it < kEnvelopeIterations; ++it) {
         if (cancelled()) return Error{ErrorCode::Cancelled, fragment.source + ": docking cancelled"};
         const double moved = step(p, Stage::Envelope, envelopeHeld);
@@ -286,9 +300,11 @@ Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGui
         const bool settled = std::abs(next - tau) < 0.01 * tau;
         tau = next;
         p.evaluate(Stage::Envelope, tau);
-        if (p.inliers() < kMinInliers)
+        if (p.inliers() < kMinInliers) {
+            failed(DockFailure::Kind::LeftTheDrum);
             return invalid(fragment, "the starting pose is too far from the drum: the fragment's outer face does not "
                                      "meet the drum's surface");
+        }
         if ((moved < 1e-6 || moved < 0) && settled) break;
     }
     if (progress) progress->update(0.3);
@@ -305,6 +321,9 @@ Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGui
             std::snprintf(text, sizeof text,
                           "no readable flutes on the fragment: its flute signal is %.2f (at least %.2f needed; "
                           "noise gives about %.2f)", snap.strength, kMinStrength, 1.0 / std::sqrt(double(std::max<std::size_t>(snap.points, 1))));
+            DockFailure& noFlutes = failed(DockFailure::Kind::NoFlutes);
+            noFlutes.strength = snap.strength;
+            noFlutes.needed = kMinStrength;
             return invalid(fragment, text);
         }
         result.snapRotation = snap.rotation;
@@ -325,14 +344,20 @@ Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGui
         const bool settled = std::abs(next - tau) < 0.01 * tau;
         tau = next;
         p.evaluate(Stage::Profile, tau);
-        if (p.inliers() < kMinInliers) return invalid(fragment, "docking lost the fragment's outer face (fewer than 200 points on the flutes)");
+        if (p.inliers() < kMinInliers) {
+            failed(DockFailure::Kind::LostOuterFace).points = p.inliers();
+            return invalid(fragment, "docking lost the fragment's outer face (fewer than 200 points on the flutes)");
+        }
         if (progress) progress->update(0.4 + 0.6 * double(it + 1) / options.maxIterations);
         if (moved < kConverged && settled) {
             converged = true;
             break;
         }
     }
-    if (!converged) return invalid(fragment, "the registration did not converge in " + std::to_string(options.maxIterations) + " iterations");
+    if (!converged) {
+        failed(DockFailure::Kind::NotConverged).iterations = options.maxIterations;
+        return invalid(fragment, "the registration did not converge in " + std::to_string(options.maxIterations) + " iterations");
+    }
 
     // What the data fix, and how well.
     const Eigen::Vector3d c = p.centre();

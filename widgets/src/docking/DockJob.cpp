@@ -30,8 +30,33 @@ QString DockJob::label() const
     return tr("Dock %1 to the flutes").arg(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name);
 }
 
-QString DockJob::errorText(const QString& name, const core::Error& error)
+QString DockJob::errorText(const QString& name, const core::Error& error, const dock::DockFailure& failure)
 {
+    const QLocale locale;
+    using Kind = dock::DockFailure::Kind;
+    switch (failure.kind) {
+    case Kind::TooFewPoints:
+        return tr("Could not dock %1: its %2 points are too few (at least 200 are needed).")
+            .arg(name, locale.toString(qulonglong(failure.points)));
+    case Kind::TooFar:
+        return tr("Could not dock %1: it is too far from the drum; %2 of its points lie within %3 mm of the drum's "
+                  "surface (at least 200 are needed). Bring it nearer its place on the drum (the Move tool, or its "
+                  "placement in the drum frame in Properties) and dock again.")
+            .arg(name, locale.toString(qulonglong(failure.points)), locale.toString(failure.reachM * 1e3, 'f', 1));
+    case Kind::LeftTheDrum:
+        return tr("Could not dock %1: from where it stands its outer face does not meet the drum's surface. Bring it "
+                  "nearer its place on the drum and dock again.").arg(name);
+    case Kind::NoFlutes:
+        return tr("Could not dock %1: no flutes can be read on its outer face (flute signal %2, at least %3 needed). "
+                  "Lock θ (Tools › Docking locks) to dock it against the drum's surface alone.")
+            .arg(name, locale.toString(failure.strength, 'f', 2), locale.toString(failure.needed, 'f', 2));
+    case Kind::LostOuterFace:
+        return tr("Could not dock %1: fewer than 200 of its points stayed on the flutes. Start it nearer its place "
+                  "and dock again.").arg(name);
+    case Kind::NotConverged:
+        return tr("Could not dock %1: the registration did not settle in %2 iterations.").arg(name).arg(failure.iterations);
+    case Kind::None: break;
+    }
     return tr("Could not dock %1: %2.").arg(name, ErrorText::reason(error.code)) + QLatin1Char('\n') +
            QString::fromStdString(error.message);
 }
@@ -70,7 +95,7 @@ QString DockJob::summary(const QString& name, const DockJobResult& r)
     return text;
 }
 
-core::Result<DockJobResult> DockJob::run(core::ProgressSink* progress) const
+core::Result<DockJobResult> DockJob::run(core::ProgressSink* progress, dock::DockFailure* failure) const
 {
     const auto started = std::chrono::steady_clock::now();
     core::SubProgress reading(progress, 0.0, 0.2);
@@ -80,7 +105,7 @@ core::Result<DockJobResult> DockJob::run(core::ProgressSink* progress) const
     if (!cloud) return cloud.error();
     cloud->source = m_path.toStdString();
     core::SubProgress docking(progress, 0.2, 1.0);
-    auto docked = dock::dockFragment(*cloud, *m_guides, m_start, m_options, &docking);
+    auto docked = dock::dockFragment(*cloud, *m_guides, m_start, m_options, &docking, failure);
     if (!docked) return docked.error();
     DockJobResult result;
     result.fragmentId = m_fragmentId;
@@ -94,13 +119,14 @@ core::Result<DockJobResult> DockJob::run(core::ProgressSink* progress) const
 
 void DockJob::operator()(QPromise<DockJobResult>& promise, core::ProgressSink& progress) const
 {
-    deliverJobResult(promise, progress, [this](core::ProgressSink* sink) { return run(sink); },
-                     [this](const core::Error& error) {
+    dock::DockFailure why;
+    deliverJobResult(promise, progress, [this, &why](core::ProgressSink* sink) { return run(sink, &why); },
+                     [this, &why](const core::Error& error) {
         DockJobResult failed;
         failed.fragmentId = m_fragmentId;
         failed.drumId = m_drumId;
         failed.start = m_start;
-        failed.error = errorText(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name, error);
+        failed.error = errorText(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name, error, why);
         return failed;
     });
 }

@@ -78,10 +78,30 @@ struct DockResult {
     double seconds = 0.0;
 };
 
+/** @brief Why a dock failed, as values, so that the workbench can say it (and what to do) in the user's language;
+ *         the Error's message stays English. */
+struct DockFailure {
+    enum class Kind {
+        None,           ///< no failure, or one not listed here (the Error says it)
+        TooFewPoints,   ///< `points`: the fragment's, under 200
+        TooFar,         ///< `points` of the fragment lie within `reachM` of the drum's surface at the start: under 200
+        LeftTheDrum,    ///< the outer face stopped meeting the drum's surface while it was brought to it
+        NoFlutes,       ///< the flute signal `strength` is under `needed`
+        LostOuterFace,  ///< fewer than 200 points stayed on the flutes
+        NotConverged,   ///< the registration did not settle in `iterations`
+    };
+    Kind kind = Kind::None;
+    std::size_t points = 0;
+    double reachM = 0.0;
+    double strength = 0.0;
+    double needed = 0.0;
+    int iterations = 0;
+};
+
 /** Docks @p fragment (its file frame) placed by @p start into the drum file frame against @p guides
- *  (with a profile). See the file comment. */
+ *  (with a profile). See the file comment. @p failure, when given, receives why it failed (Kind::None otherwise). */
 Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGuides& guides,
                                 const Eigen::Isometry3d& start, const DockOptions& options = {},
-                                ProgressSink* progress = nullptr);
+                                ProgressSink* progress = nullptr, DockFailure* failure = nullptr);
 
 } // namespace stylos::core::dock

@@ -54,11 +54,13 @@ public:
 
     /** @brief The task body: adds run()'s result, a failure as a result with error, nothing when cancelled. */
     void operator()(QPromise<DockJobResult>& promise, core::ProgressSink& progress) const;
-    /** @brief Runs on the calling thread. Errors: loadPointCloud's and dockFragment's, Cancelled. */
-    core::Result<DockJobResult> run(core::ProgressSink* progress = nullptr) const;
+    /** @brief Runs on the calling thread. Errors: loadPointCloud's and dockFragment's, Cancelled; @p failure, when
+     *         given, receives dockFragment's reason as values. */
+    core::Result<DockJobResult> run(core::ProgressSink* progress = nullptr, core::dock::DockFailure* failure = nullptr) const;
 
-    /** @brief "Could not dock NAME: REASON.\nDETAIL" (translated). */
-    static QString errorText(const QString& name, const core::Error& error);
+    /** @brief Why the dock failed and what to do, in the user's language, for the reasons @p failure names (too far
+     *         from the drum, no readable flutes…); otherwise "Could not dock NAME: REASON.\nDETAIL" (translated). */
+    static QString errorText(const QString& name, const core::Error& error, const core::dock::DockFailure& failure = {});
     /** @brief One line for the log: RMS, points, flute shift, the uncertainty of each free unknown (degrees,
      *         millimetres) and what the flutes do not fix (translated). */
     static QString summary(const QString& name, const DockJobResult& result);
