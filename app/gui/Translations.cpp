@@ -1,6 +1,8 @@
 #include "Translations.h"
 
 #include <QCoreApplication>
+#include <QApplication>
+#include <QWidget>
 #include <QLibraryInfo>
 #include <QLocale>
 #include <QSettings>
@@ -65,7 +67,11 @@ bool Translations::setLanguage(const QString& code)
     if (m_qt) QCoreApplication::installTranslator(m_qt);
     // Numbers follow the chosen language too (decimal comma and grouping in French and Greek), the system's when
     // none is chosen; widgets read QLocale() when they retranslate.
-    QLocale::setDefault(code.isEmpty() ? QLocale::system() : QLocale(code));
+    const QLocale numbers = code.isEmpty() ? QLocale::system() : QLocale(code);
+    QLocale::setDefault(numbers);
+    // Widgets made before keep the locale they were made with unless told: number fields would go on writing
+    // the old decimal point. Each window passes it to its children (a LocaleChange event each).
+    for (QWidget* window : QApplication::topLevelWidgets()) window->setLocale(numbers);
     m_language = code;
     m_loaded = loaded;
     QSettings().setValue(LanguageKey, code);

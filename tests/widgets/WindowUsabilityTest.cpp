@@ -31,6 +31,7 @@
 #include "stylos/widgets/document/SceneTreeModel.h"
 #include "stylos/widgets/plate/PlateDialog.h"
 #include "stylos/widgets/tasks/TaskManager.h"
+#include "stylos/widgets/util/NumberSpinBox.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
 #include <QAbstractButton>
@@ -671,8 +672,14 @@ void WindowUsabilityTest::logLinesWriteNumbersInTheLanguage()
     } expected[] = {{QStringLiteral("fr"), QStringLiteral("0,232"), QLocale(QLocale::French).toString(10974)},
                     {QStringLiteral("el"), QStringLiteral("0,232"), QStringLiteral("10.974")},
                     {QStringLiteral("en"), QStringLiteral("0.232"), QStringLiteral("10,974")}};
+    // A number field made before the switch writes its number the new way too.
+    widgets::NumberSpinBox field;
+    field.setDecimals(2);
+    field.setRange(0, 10);
+    field.setValue(1.5);
     for (const auto& e : expected) {
         setLanguage(e.code);
+        QCOMPARE(field.text(), e.code == QStringLiteral("en") ? QStringLiteral("1.50") : QStringLiteral("1,50"));
         const QString line = widgets::DockJob::summary(QStringLiteral("fragment"), docked);
         QVERIFY2(line.contains(e.rms) && line.contains(e.points) && line.contains(QLocale().toString(0.12, 'f', 2)),
                  qPrintable(e.code + QStringLiteral(": ") + line));
