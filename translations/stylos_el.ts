@@ -2,6 +2,27 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="el">
 <context>
+    <name>QAbstractFileIconProvider</name>
+    <message>
+        <source>Drive</source>
+        <translation>Μονάδα δίσκου</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Άγνωστο</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <comment>All other platforms</comment>
+        <translation>Φάκελος</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <comment>All other platforms</comment>
+        <translation>Συντόμευση</translation>
+    </message>
+</context>
+<context>
     <name>QFileDialog</name>
     <message>
         <source>Look in:</source>
@@ -394,7 +415,7 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Group the selected fragments into an assembly that moves as one; a drum among them (a fragment with an axis guide) becomes what they dock against</source>
-        <translation>Ομαδοποίηση των επιλεγμένων θραυσμάτων σε συναρμολόγηση που κινείται ενιαία· ένας σπόνδυλος ανάμεσά τους (θραύσμα με οδηγό άξονα) γίνεται αυτό στο οποίο προσαρμόζονται</translation>
+        <translation>Ομαδοποίηση των επιλεγμένων θραυσμάτων σε συναρμολόγηση που κινείται ενιαία· ένας σπόνδυλος ανάμεσά τους (θραύσμα με οδηγό άξονα) γίνεται αυτός στον οποίο προσαρμόζονται</translation>
     </message>
     <message>
         <source>&amp;Take out of assembly</source>

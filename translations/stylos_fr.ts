@@ -2,6 +2,27 @@
 <!DOCTYPE TS>
 <TS version="2.1" language="fr">
 <context>
+    <name>QAbstractFileIconProvider</name>
+    <message>
+        <source>Drive</source>
+        <translation>Disque</translation>
+    </message>
+    <message>
+        <source>Unknown</source>
+        <translation>Inconnu</translation>
+    </message>
+    <message>
+        <source>Folder</source>
+        <comment>All other platforms</comment>
+        <translation>Dossier</translation>
+    </message>
+    <message>
+        <source>Shortcut</source>
+        <comment>All other platforms</comment>
+        <translation>Raccourci</translation>
+    </message>
+</context>
+<context>
     <name>QFileDialog</name>
     <message>
         <source>Look in:</source>
@@ -53,7 +74,7 @@
     </message>
     <message>
         <source>Change to detail view mode</source>
-        <translation>Affichage la vue sous forme détaillée</translation>
+        <translation>Affiche la vue sous forme détaillée</translation>
     </message>
     <message>
         <source>Sidebar</source>
@@ -166,7 +187,7 @@
     <message>
         <source>%1 already exists.
 Do you want to replace it?</source>
-        <translation>Le fichier %1 existe déjà
+        <translation>Le fichier %1 existe déjà.
 Voulez-vous l&apos;écraser ?</translation>
     </message>
     <message>
@@ -2686,7 +2707,7 @@ Voulez-vous quand même le supprimer ?</translation>
     </message>
     <message>
         <source>%1 is %2; the print area is %3: use %4 or smaller, or a larger page.</source>
-        <translation>%1 mesure %2 ; la zone d’impression mesure %3 : choisissez %4 ou plus petit, ou une page plus grande.</translation>
+        <translation>%1 mesure %2 ; la zone d’impression mesure %3 : choisissez %4 ou une échelle plus petite, ou une page plus grande.</translation>
     </message>
     <message>
         <source>%1 is %2; the print area is %3: no scale fits this page, use a larger page.</source>

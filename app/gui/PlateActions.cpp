@@ -84,11 +84,17 @@ std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::S
         p.labels[0] = document.labels().labels(f.id, core::annotation::AnnotationLayer::Material);
         p.labels[1] = document.labels().labels(f.id, core::annotation::AnnotationLayer::Toolmark);
         // Its développée as the Développée dock last showed it (the axis guide, the drum guides' radius, the dock's
-        // settings): the plate's angles and cut are the dock's. Without one, about its axis guide or its drum's.
+        // settings): the plate's angles and cut are the dock's — unless the axis it was unrolled about is no longer
+        // the fragment's (docked, moved or given another guide since). Else about its axis guide or its drum's.
+        const auto axis = core::scene::unrollAxis(scene, f.id, document.drumFor(f.id));
         const auto shown = document.developpee(f.id);
-        if (shown && shown->ok() && !shown->pieceAt && shown->octreePath == QString::fromStdString(f.octreePath.string())) {
+        const auto sameAxis = [&axis](const core::unroll::Axis& used) {
+            return axis && (used.point - axis->origin).norm() <= 1e-9 && (used.direction - axis->direction).norm() <= 1e-9;
+        };
+        if (shown && shown->ok() && !shown->pieceAt && shown->octreePath == QString::fromStdString(f.octreePath.string()) &&
+            (!shown->settings.axis || sameAxis(*shown->settings.axis))) {
             p.unrolling = shown->settings.options();
-        } else if (const auto axis = core::scene::unrollAxis(scene, f.id, document.drumFor(f.id))) {
+        } else if (axis) {
             p.unrolling.emplace();
             p.unrolling->axis = core::unroll::Axis{axis->origin, axis->direction};
         }

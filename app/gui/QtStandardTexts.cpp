@@ -79,4 +79,18 @@ namespace stylos::app {
     QT_TRANSLATE_NOOP("QFileSystemModel", "Invalid filename"),
 };
 
+/** The file chooser's Type column (Qt 6 asks QAbstractFileIconProvider, a disambiguation for some). */
+[[maybe_unused]] const char* const kQtFileTypeTexts[] = {
+    QT_TRANSLATE_NOOP("QAbstractFileIconProvider", "Drive"),
+    QT_TRANSLATE_NOOP("QAbstractFileIconProvider", "Unknown"),
+};
+struct TextWithComment {
+    const char* source;
+    const char* comment;
+};
+[[maybe_unused]] const TextWithComment kQtFileTypeTextsOnThisPlatform[] = {
+    QT_TRANSLATE_NOOP3("QAbstractFileIconProvider", "Folder", "All other platforms"),
+    QT_TRANSLATE_NOOP3("QAbstractFileIconProvider", "Shortcut", "All other platforms"),
+};
+
 } // namespace stylos::app

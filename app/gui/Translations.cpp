@@ -36,7 +36,8 @@ QString Translations::savedLanguage()
 
 bool Translations::setLanguage(const QString& code)
 {
-    const QLocale locale = code.isEmpty() ? QLocale() : QLocale(code);
+    // The system's, not QLocale(): that is the default this function sets below (the last language chosen).
+    const QLocale locale = code.isEmpty() ? QLocale::system() : QLocale(code);
     QString loaded = locale.language() == QLocale::French ? QStringLiteral("fr")
                      : locale.language() == QLocale::Greek ? QStringLiteral("el")
                                                            : QStringLiteral("en");

@@ -11,6 +11,7 @@ core::Result<PlateContent> composePlate(const cp::PlateSources& sources, const c
                                         const cp::PanelRenderOptions& options, core::ProgressSink* progress,
                                         const PlateTexts& texts, cp::LayoutFailure* failure)
 {
+    if (failure) *failure = {};
     if (auto s = spec.validate(sources.source); !s) return s.error();
     PlateContent plate;
     plate.spec = spec;

@@ -209,7 +209,8 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     // At the scale it names, it fits.
     s.panels[0].scale = 18;
     const std::array<double, 2> smaller{width * 10 / 18, 50 * 10 / 18.0};
-    EXPECT_TRUE(layoutPlate(s, std::span(&smaller, 1), 0, 0).ok());
+    EXPECT_TRUE(layoutPlate(s, std::span(&smaller, 1), 0, 0, {}, &failure).ok());
+    EXPECT_EQ(failure.kind, LayoutFailure::Kind::None); // not the last call's failure
     // Too much height with the caption.
     const std::array<double, 2> tall{100, 230};
     const auto crowded = layoutPlate(s, std::span(&tall, 1), 0, 40, {}, &failure);

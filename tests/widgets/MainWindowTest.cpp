@@ -605,7 +605,7 @@ void MainWindowTest::switchesTheLanguageFromTheMenu()
     QTRY_COMPARE(file->title(), QStringLiteral("&Fichier")); // LanguageChange is posted, not sent
     QCOMPARE(app::Translations::savedLanguage(), QStringLiteral("fr"));
     // Qt's own dialogs (the file chooser) speak French too: qtbase's catalogue (qt6-translations-l10n).
-    QCOMPARE(QCoreApplication::translate("QFileDialog", "File &name:"), QStringLiteral("&Nom de fichier :"));
+    QCOMPARE(QCoreApplication::translate("QFileDialog", "Alt+Left"), QStringLiteral("Alt+Gauche")); // only Qt's has it
     // A plate's numbers take the chosen language's decimal point, whatever the system's locale.
     QCOMPARE(widgets::PlateTexts::translated({}).decimalPoint, QStringLiteral(","));
     pick(QStringLiteral("el"));
@@ -614,6 +614,15 @@ void MainWindowTest::switchesTheLanguageFromTheMenu()
     pick(QStringLiteral("en"));
     QTRY_COMPARE(file->title(), QStringLiteral("&File"));
     QCOMPARE(widgets::PlateTexts::translated({}).decimalPoint, QStringLiteral("."));
+    // Back to the system's language from another: the system's, not the last one chosen.
+    pick(QStringLiteral("fr"));
+    QTRY_COMPARE(file->title(), QStringLiteral("&Fichier"));
+    pick(QString());
+    const QLocale::Language system = QLocale::system().language();
+    const QString expected = system == QLocale::French ? QStringLiteral("fr") : system == QLocale::Greek ? QStringLiteral("el")
+                                                                                                         : QStringLiteral("en");
+    QCOMPARE(m_translations->loadedLanguage(), expected);
+    QCOMPARE(QLocale().language(), system);
 }
 
 void MainWindowTest::statusReadoutFormats()

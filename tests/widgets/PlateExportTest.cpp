@@ -54,6 +54,7 @@ class PlateExportTest : public QObject {
 private Q_SLOTS:
     void initTestCase();
     void previewDrawsAndRefusesWhatDoesNotFit();
+    void anErrorThatIsNotTheLayoutsIsSaidAsItIs();
     void exportDrawsUnsavedLabelsAndKeepsThePlate();
     void viewImageIsTheChosenWidthAlongTheCamera();
     void aCancelledExportIsNoError();
@@ -128,7 +129,10 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
     scale->setValue(2);
     QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
     QVERIFY(updated.wait(60000));
-    QVERIFY2(dialog.messageLabel()->text().contains(QStringLiteral("use 1:")), qPrintable(dialog.messageLabel()->text()));
+    // Worded by the dialog (the layout's values), not the layout's English: "The panel (Développée, 1:2) is …".
+    QVERIFY2(dialog.messageLabel()->text().startsWith(QStringLiteral("The panel (Développée, 1:2) is ")) &&
+                 dialog.messageLabel()->text().contains(QStringLiteral("use 1:")),
+             qPrintable(dialog.messageLabel()->text()));
     QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
     QVERIFY(dialog.previewImage().isNull()); // not the last page that fitted
 
@@ -153,6 +157,24 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
     dialog.setSpec(lower);
     QCOMPARE(page->count(), pages);
     QCOMPARE(page->currentData().toString(), QStringLiteral("A4"));
+}
+
+// A plate that fails for another reason than its page (here its fragment is missing) says that reason, not a
+// "does not fit" with zero sizes (the layout's values were read whatever the error).
+void PlateExportTest::anErrorThatIsNotTheLayoutsIsSaidAsItIs()
+{
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    QVERIFY(addDrum(document) != 0);
+    auto sources = std::make_shared<cp::PlateSources>(*app::PlateActions::sourcesOf(document));
+    sources->fragments[0].missing = true;
+    widgets::PlateDialog dialog(sources, spec(20));
+    QSignalSpy updated(&dialog, &widgets::PlateDialog::previewUpdated);
+    QVERIFY(updated.wait(60000));
+    const QString message = dialog.messageLabel()->text();
+    QVERIFY2(message.contains(QStringLiteral("is missing")) && !message.contains(QStringLiteral("print area")),
+             qPrintable(message));
+    QVERIFY(!dialog.buttons()->button(QDialogButtonBox::Ok)->isEnabled());
 }
 
 void PlateExportTest::exportDrawsUnsavedLabelsAndKeepsThePlate()
@@ -308,11 +330,11 @@ void PlateExportTest::aPlateUnrollsAsTheDockDoes()
     QCOMPARE(unrolling->axis->direction, axis.direction);
     QVERIFY(!unrolling->pixelSize);
 
-    // The dock's result, about the axis turned end for end, at 2 cm pixels and 8 directions.
+    // The dock's result, about that guide, at 2 cm pixels and 8 directions.
     widgets::DeveloppeeResult shown;
     shown.fragmentId = id;
     shown.octreePath = m_octree;
-    shown.settings.axis = core::unroll::Axis{axis.point, -axis.direction};
+    shown.settings.axis = axis;
     shown.settings.pixelSize = 0.02;
     shown.settings.directions = 8;
     auto computed = core::developpee::computeDeveloppee(m_octree.toStdString(), shown.settings.options());
@@ -321,9 +343,21 @@ void PlateExportTest::aPlateUnrollsAsTheDockDoes()
     QVERIFY(document.setDeveloppee(id, std::make_shared<const widgets::DeveloppeeResult>(shown)));
     unrolling = app::PlateActions::sourcesOf(document)->fragments[0].unrolling;
     QVERIFY(unrolling && unrolling->axis);
-    QCOMPARE(unrolling->axis->direction, Eigen::Vector3d(-axis.direction));
+    QCOMPARE(unrolling->axis->direction, axis.direction);
     QCOMPARE(unrolling->pixelSize, std::optional<double>(0.02));
     QCOMPARE(unrolling->directions, 8);
+
+    // The guide changed since (turned end for end): the dock's result is about an axis the fragment no longer has,
+    // so the plate takes the guide's.
+    QVERIFY(document.setFragmentGuides(id, {{"axis", core::scene::GuideKind::Axis, core::scene::toArray(axis.point),
+                                             core::scene::toArray(-axis.direction)}}));
+    unrolling = app::PlateActions::sourcesOf(document)->fragments[0].unrolling;
+    QVERIFY(unrolling && unrolling->axis);
+    QCOMPARE(unrolling->axis->direction, Eigen::Vector3d(-axis.direction));
+    QVERIFY(!unrolling->pixelSize);
+    QVERIFY(document.setFragmentGuides(id, {{"axis", core::scene::GuideKind::Axis, core::scene::toArray(axis.point),
+                                             core::scene::toArray(axis.direction)}}));
+    QCOMPARE(app::PlateActions::sourcesOf(document)->fragments[0].unrolling->pixelSize, std::optional<double>(0.02));
 
     // A result of another octree (the fragment's file was replaced since) is not the fragment's: its guide again.
     shown.octreePath = m_octree + QStringLiteral(".old");

@@ -109,6 +109,7 @@ std::string scalesText(const PlateSpec& spec, const std::vector<double>& scales)
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
                                 double captionMm, const PanelLabelWidth& labelWidth, LayoutFailure* failure)
 {
+    if (failure) *failure = {};
     return layoutAt(spec, imageMm, legendRows, captionMm, labelWidth, true, failure);
 }
 

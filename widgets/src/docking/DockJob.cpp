@@ -30,9 +30,9 @@ QString DockJob::label() const
     return tr("Dock %1 to the flutes").arg(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name);
 }
 
-QString DockJob::errorText(const QString& name, const core::Error& error, const dock::DockFailure& failure)
+QString DockJob::errorText(const QString& name, const core::Error& error, const dock::DockFailure& failure,
+                           const QLocale& locale)
 {
-    const QLocale locale;
     using Kind = dock::DockFailure::Kind;
     switch (failure.kind) {
     case Kind::TooFewPoints:
@@ -54,7 +54,8 @@ QString DockJob::errorText(const QString& name, const core::Error& error, const 
         return tr("Could not dock %1: fewer than 200 of its points stayed on the flutes. Start it nearer its place "
                   "and dock again.").arg(name);
     case Kind::NotConverged:
-        return tr("Could not dock %1: the registration did not settle in %2 iterations.").arg(name).arg(failure.iterations);
+        return tr("Could not dock %1: the registration did not settle in %2 iterations.")
+            .arg(name, locale.toString(failure.iterations));
     case Kind::None: break;
     }
     return tr("Could not dock %1: %2.").arg(name, ErrorText::reason(error.code)) + QLatin1Char('\n') +
@@ -126,7 +127,7 @@ void DockJob::operator()(QPromise<DockJobResult>& promise, core::ProgressSink& p
         failed.fragmentId = m_fragmentId;
         failed.drumId = m_drumId;
         failed.start = m_start;
-        failed.error = errorText(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name, error, why);
+        failed.error = errorText(m_name.isEmpty() ? QFileInfo(m_path).fileName() : m_name, error, why, m_locale);
         return failed;
     });
 }

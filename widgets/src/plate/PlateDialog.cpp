@@ -59,7 +59,8 @@ bool isPrintArea(const QString& page)
 
 struct Preview {
     QImage image;
-    QString error;
+    QString error;                  ///< the plate's error (English detail), when it is not a layout's
+    cp::LayoutFailure failure;      ///< Kind::None unless the plate does not fit its page: worded on the GUI thread
 };
 
 QString viewText(cp::PanelView v)
@@ -104,12 +105,11 @@ Preview computePreview(const std::shared_ptr<const cp::PlateSources>& sources, c
 {
     Preview out;
     spec.dpi = kPreviewDpi;
-    std::optional<cp::LayoutFailure> failure{std::in_place};
-    auto plate = plate::composePlate(*sources, spec, {}, nullptr, texts, &*failure);
+    auto plate = plate::composePlate(*sources, spec, {}, nullptr, texts, &out.failure);
     if (!plate) {
-        // A layout that does not fit is said in the user's language; other errors (a missing octree) name their file.
-        const bool layout = plate.error().code == core::ErrorCode::InvalidArgument && failure->page.widthMm > 0;
-        out.error = layout ? PlateDialog::layoutFailureText(*failure, spec) : QString::fromStdString(plate.error().message);
+        // A layout that does not fit is said in the user's language, on the GUI thread (QLocale's default may change
+        // there); other errors (a missing octree, nothing visible) name their file.
+        out.error = QString::fromStdString(plate.error().message);
         return out;
     }
     const auto& page = plate->layout.page;
@@ -457,7 +457,8 @@ void PlateDialog::startPreview()
     }
     m_running = true;
     auto* watcher = new QFutureWatcher<Preview>(this);
-    connect(watcher, &QFutureWatcher<Preview>::finished, this, [this, watcher] {
+    const cp::PlateSpec stated = spec();
+    connect(watcher, &QFutureWatcher<Preview>::finished, this, [this, watcher, stated] {
         const Preview p = watcher->result();
         watcher->deleteLater();
         m_running = false;
@@ -473,12 +474,12 @@ void PlateDialog::startPreview()
         } else {
             m_image = QImage(); // not the last page that fitted: nothing is shown that would not be exported
             m_preview->clear();
-            m_message->setText(p.error);
+            m_message->setText(p.failure.kind != cp::LayoutFailure::Kind::None ? layoutFailureText(p.failure, stated) : p.error);
         }
         m_buttons->button(QDialogButtonBox::Ok)->setEnabled(p.error.isEmpty());
         Q_EMIT previewUpdated();
     });
-    watcher->setFuture(QtConcurrent::run([sources = m_sources, spec = spec(), texts = PlateTexts::translated(m_sources->legend)] {
+    watcher->setFuture(QtConcurrent::run([sources = m_sources, spec = stated, texts = PlateTexts::translated(m_sources->legend)] {
         return computePreview(sources, spec, texts);
     }));
 }
@@ -493,6 +494,7 @@ QString PlateDialog::layoutFailureText(const cp::LayoutFailure& failure, const c
         return letters ? tr("Panel %1 (%2)").arg(QChar(QLatin1Char(char('A' + i))), what) : tr("The panel (%1)").arg(what);
     };
     switch (failure.kind) {
+    case cp::LayoutFailure::Kind::None: break;
     case cp::LayoutFailure::Kind::PanelTooLarge: {
         if (failure.panel >= spec.panels.size()) break;
         const QString size = tr("%1 × %2 mm").arg(millimetres(failure.sizeMm[0]), millimetres(failure.sizeMm[1]));

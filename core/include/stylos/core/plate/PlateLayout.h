@@ -61,11 +61,12 @@ struct PlateLayout {
 /** @brief Why a plate does not fit its page, as values, so that the workbench can say it in the user's language. */
 struct LayoutFailure {
     enum class Kind {
+        None,           ///< it fits, or failed for another reason (the Error says which)
         PanelTooLarge,  ///< panel `panel`'s image (`sizeMm`) is larger than the print area on its own
         PanelOutside,   ///< placed panel `panel` at `atMm` with its bands (`sizeMm`) leaves the page
         TooTall,        ///< the panels, legend and caption need `sizeMm[1]` mm of height
     };
-    Kind kind = Kind::PanelTooLarge;
+    Kind kind = Kind::None;
     std::size_t panel = 0;
     std::array<double, 2> sizeMm{};
     std::array<double, 2> atMm{};
@@ -89,7 +90,7 @@ using PanelLabelWidth = std::function<double(std::size_t index, const PanelSpec&
  *        wider than the print area starts at its left edge). When the panels, legend and caption need more height
  *        than the print area, the message gives scales that would fit (the flowing panels' scales times one
  *        factor, rounded up; their labels measured again at those scales). @p failure, when given, receives
- *        the same as values when the plate does not fit (the message stays English).
+ *        the same as values when the plate does not fit (the message stays English); Kind::None otherwise.
  */
 Result<PlateLayout> layoutPlate(const PlateSpec& spec, std::span<const std::array<double, 2>> imageMm, int legendRows,
                                 double captionMm, const PanelLabelWidth& labelWidth = {},

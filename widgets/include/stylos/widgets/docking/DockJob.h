@@ -21,6 +21,7 @@
 
 #include <QCoreApplication>
 #include <QPromise>
+#include <QLocale>
 #include <QString>
 
 #include <memory>
@@ -59,8 +60,11 @@ public:
     core::Result<DockJobResult> run(core::ProgressSink* progress = nullptr, core::dock::DockFailure* failure = nullptr) const;
 
     /** @brief Why the dock failed and what to do, in the user's language, for the reasons @p failure names (too far
-     *         from the drum, no readable flutes…); otherwise "Could not dock NAME: REASON.\nDETAIL" (translated). */
-    static QString errorText(const QString& name, const core::Error& error, const core::dock::DockFailure& failure = {});
+     *         from the drum, no readable flutes…); otherwise "Could not dock NAME: REASON.\nDETAIL" (translated).
+     *         Numbers in @p locale: the task passes the one of the GUI thread when the job was made (QLocale's
+     *         default is not to be read on a worker while a language switch sets it). */
+    static QString errorText(const QString& name, const core::Error& error, const core::dock::DockFailure& failure = {},
+                             const QLocale& locale = QLocale());
     /** @brief One line for the log: RMS, points, flute shift, the uncertainty of each free unknown (degrees,
      *         millimetres) and what the flutes do not fix (translated). */
     static QString summary(const QString& name, const DockJobResult& result);
@@ -72,6 +76,7 @@ private:
     Eigen::Isometry3d m_start;
     core::dock::DockOptions m_options;
     QString m_name;
+    QLocale m_locale; ///< the GUI thread's when the job was made, for the error's numbers
 };
 
 } // namespace stylos::widgets
