@@ -97,6 +97,11 @@ std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::S
         } else if (axis) {
             p.unrolling.emplace();
             p.unrolling->axis = core::unroll::Axis{axis->origin, axis->direction};
+            // At the radius of the drum guides the dock would use (its own axis guide's, else its drum's).
+            const core::scene::Fragment* owner =
+                core::scene::firstGuide(f, core::scene::GuideKind::Axis) ? &f : document.fragment(document.drumFor(f.id));
+            if (const auto options = owner ? core::dock::guideOptionsFor(*owner) : std::nullopt)
+                p.drumGuides = cp::PlateFragment::DrumGuidesSource{owner->octreePath, *options};
         }
         sources->fragments.push_back(std::move(p));
     }

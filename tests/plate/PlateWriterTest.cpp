@@ -7,7 +7,9 @@
 #include "SyntheticTestSupport.h"
 #include "TestSupport.h"
 
+#include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/developpee/Developpee.h"
+#include "stylos/core/dock/DrumGuides.h"
 #include "stylos/core/octree/OctreeBuild.h"
 #include "stylos/core/scene/ProjectFile.h"
 #include "stylos/core/scene/SceneEigen.h"
@@ -450,4 +452,73 @@ TEST(PlateSources, AProjectsFragmentUnrollsAboutItsAxisGuide)
     ASSERT_TRUE(coarse.ok()) << coarse.error().message;
     EXPECT_EQ(coarse->naturalPixelM, 0.004);
     EXPECT_NE(plain->naturalPixelM, 0.004);
+}
+
+// A fluted drum whose guides were fitted in the workbench (axis and flute lines in the project): a plate of its
+// développée from the project is the dock's — unrolled about the axis guide at the drum guides' leading radius and
+// taper (fitted as the dock fits them) — not one at a radius fitted about the axis (whose default cut, on a whole
+// drum, fell elsewhere: the same painted patch at 20° in the dock and at 267° on the plate).
+TEST(PlateSources, AFlutedDrumUnrollsAtItsGuidesRadius)
+{
+    test::TempDir dir;
+    auto o = test::coarse(0.006, 3);
+    o.writeNormals = true;
+    const auto ply = dir / "fluted.ply";
+    test::generate(core::synth::SyntheticKind::Drum, o, ply);
+    core::octree::BuildOptions build;
+    build.depth = 8;
+    build.threads = 2;
+    const fs::path octree = dir / "fluted.poct";
+    ASSERT_TRUE(core::octree::buildOctreeFile(ply, octree, build).ok());
+    core::cloud::CloudLoadOptions load;
+    load.keepNormals = true;
+    auto cloud = core::cloud::loadPointCloud(octree, load);
+    ASSERT_TRUE(cloud.ok()) << cloud.error().message;
+    const auto fitted = core::dock::fitDrumGuides(*cloud);
+    ASSERT_TRUE(fitted.ok()) << fitted.error().message;
+
+    core::scene::Scene scene;
+    core::scene::Fragment drum;
+    drum.name = "drum";
+    drum.octreePath = octree;
+    drum.guides.push_back({"axis", core::scene::GuideKind::Axis, core::scene::toArray(fitted->axis.point),
+                           core::scene::toArray(fitted->axis.direction)});
+    for (const auto& line : fitted->fluteLines)
+        drum.guides.push_back({"flute", core::scene::GuideKind::Groove, core::scene::toArray(line.point),
+                               core::scene::toArray(line.direction)});
+    scene.add(drum);
+    const fs::path project = dir / "fluted.stylos";
+    ASSERT_TRUE(core::scene::ProjectFile::save(scene, project).ok());
+    auto sources = cp::readPlateSources(project);
+    ASSERT_TRUE(sources.ok()) << sources.error().message;
+    ASSERT_TRUE(sources->fragments[0].drumGuides);
+    EXPECT_EQ(sources->fragments[0].drumGuides->octree, octree);
+    EXPECT_EQ(sources->fragments[0].drumGuides->options.flutes, int(fitted->fluteLines.size()));
+
+    // What the dock computes: the axis guide, the guides' radius and taper fitted about it with its flute count.
+    const auto options = core::dock::guideOptionsFor(scene.fragments()[0]);
+    ASSERT_TRUE(options);
+    const auto guides = core::dock::fitDrumGuides(*cloud, *options);
+    ASSERT_TRUE(guides.ok()) << guides.error().message;
+    auto dock = *sources;
+    dock.fragments[0].drumGuides.reset();
+    dock.fragments[0].unrolling->radius = guides->radius;
+    dock.fragments[0].unrolling->radiusSlope = guides->slope;
+    auto fittedRadius = *sources;
+    fittedRadius.fragments[0].drumGuides.reset();
+
+    cp::PanelSpec panel;
+    panel.scale = 10;
+    cp::PanelRenderOptions render;
+    render.dpi = 100;
+    render.threads = 2;
+    const auto plate = cp::renderPanel(*sources, panel, render);
+    const auto docked = cp::renderPanel(dock, panel, render);
+    const auto unguided = cp::renderPanel(fittedRadius, panel, render);
+    ASSERT_TRUE(plate.ok() && docked.ok() && unguided.ok());
+    EXPECT_EQ(plate->imageMm, docked->imageMm);
+    EXPECT_EQ(plate->image.samples, docked->image.samples);
+    // 2π R at 1:10, R the guides' leading radius; not the radius fitted about the axis alone.
+    EXPECT_NEAR(plate->imageMm[0], 2 * std::numbers::pi * guides->radius * 1000 / 10, 1e-6);
+    EXPECT_NE(plate->imageMm[0], unguided->imageMm[0]);
 }

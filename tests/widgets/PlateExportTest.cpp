@@ -366,6 +366,18 @@ void PlateExportTest::aPlateUnrollsAsTheDockDoes()
     QVERIFY(unrolling && unrolling->axis);
     QCOMPARE(unrolling->axis->direction, axis.direction);
     QVERIFY(!unrolling->pixelSize);
+    QVERIFY(!app::PlateActions::sourcesOf(document)->fragments[0].drumGuides); // an axis guide without flutes
+
+    // With flute guides too (Fit drum guides), the plate fits the drum guides' radius as the dock does.
+    std::vector<core::scene::Guide> fluted{{"axis", core::scene::GuideKind::Axis, core::scene::toArray(axis.point),
+                                            core::scene::toArray(axis.direction)}};
+    for (int k = 0; k < 3; ++k)
+        fluted.push_back({"flute", core::scene::GuideKind::Groove, core::scene::toArray(axis.point), core::scene::toArray(axis.direction)});
+    QVERIFY(document.setFragmentGuides(id, fluted));
+    const auto drumGuides = app::PlateActions::sourcesOf(document)->fragments[0].drumGuides;
+    QVERIFY(drumGuides);
+    QCOMPARE(QString::fromStdString(drumGuides->octree.string()), m_octree);
+    QCOMPARE(drumGuides->options.flutes, 3);
 }
 
 STYLOS_WIDGET_TEST_MAIN(PlateExportTest)

@@ -1,4 +1,5 @@
 #include "stylos/core/dock/DrumGuides.h"
+#include "stylos/core/scene/SceneEigen.h"
 
 #include "stylos/core/unroll/UnrollMap.h"
 
@@ -270,6 +271,18 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
     if (progress) progress->update(1.0);
     g.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return g;
+}
+
+std::optional<GuideOptions> guideOptionsFor(const scene::Fragment& drum)
+{
+    const auto axis = scene::firstGuide(drum, scene::GuideKind::Axis);
+    const auto grooves = std::count_if(drum.guides.begin(), drum.guides.end(),
+                                       [](const scene::Guide& g) { return g.kind == scene::GuideKind::Groove; });
+    if (!axis || grooves < 3 || !(axis->direction.norm() > 0.0)) return std::nullopt;
+    GuideOptions options;
+    options.axis = unroll::Axis{axis->origin, axis->direction.normalized()};
+    options.flutes = int(grooves);
+    return options;
 }
 
 } // namespace stylos::core::dock

@@ -88,7 +88,24 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
                 : panel.shading == PanelShading::Height ? developpee::Shading::Height
                                                         : developpee::Shading::Skydome;
     d.threads = options.threads;
-    SubProgress computing(progress, 0.0, 0.8);
+    if (d.axis && !d.radius && f.drumGuides) {
+        // The drum guides' leading radius and taper, fitted as the workbench fits them (DrumGuidesCache).
+        SubProgress fitting(progress, 0.0, 0.2);
+        cloud::CloudLoadOptions load;
+        load.keepNormals = true;
+        auto drum = cloud::loadPointCloud(f.drumGuides->octree, load, &fitting);
+        if (!drum) return drum.error();
+        drum->source = f.drumGuides->octree.string();
+        dock::GuideOptions guideOptions = f.drumGuides->options;
+        guideOptions.threads = options.threads;
+        if (const auto guides = dock::fitDrumGuides(*drum, guideOptions)) {
+            d.radius = guides->radius;
+            d.radiusSlope = guides->slope;
+        } else if (guides.error().code == ErrorCode::Cancelled) {
+            return guides.error();
+        }
+    }
+    SubProgress computing(progress, 0.2, 0.8);
     auto made = developpee::computeDeveloppee(f.path, d, &computing);
     if (!made) return made.error();
     const developpee::Developpee& dev = *made;
@@ -205,20 +222,25 @@ Result<PlateSources> readPlateSources(const fs::path& path)
         out.isProject = true;
         out.legend = s.legend();
         for (const scene::Fragment& f : s.fragments()) {
-            out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}, {}});
-            // Unrolled about its axis guide, or its assembly drum's, as the workbench unrolls it.
+            out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}, {}, {}});
+            // Unrolled about its axis guide, or its assembly drum's, at the radius of that drum's guides, as the
+            // workbench unrolls it.
             const scene::Assembly* assembly = s.findAssembly(f.assembly);
-            if (const auto axis = scene::unrollAxis(s, f.id, assembly ? assembly->drum : scene::NoFragment)) {
+            const scene::FragmentId drum = assembly ? assembly->drum : scene::NoFragment;
+            if (const auto axis = scene::unrollAxis(s, f.id, drum)) {
                 developpee::DeveloppeeOptions unrolling;
                 unrolling.axis = unroll::Axis{axis->origin, axis->direction};
                 out.fragments.back().unrolling = unrolling;
+                const scene::Fragment* owner = scene::firstGuide(f, scene::GuideKind::Axis) ? &f : s.find(drum);
+                if (const auto options = owner ? dock::guideOptionsFor(*owner) : std::nullopt)
+                    out.fragments.back().drumGuides = PlateFragment::DrumGuidesSource{owner->octreePath, *options};
             }
         }
         if (out.fragments.empty()) return Error::at(ErrorCode::InvalidArgument, path.string(), {}, "the project has no fragment");
         return out;
     }
     const bool octree = cloud::isPoctPath(path);
-    out.fragments.push_back({path.stem().string(), path, octree, false, scene::Pose(), true, {}, {}});
+    out.fragments.push_back({path.stem().string(), path, octree, false, scene::Pose(), true, {}, {}, {}});
     return out;
 }
 

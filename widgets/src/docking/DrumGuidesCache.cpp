@@ -15,15 +15,7 @@ DrumGuidesCache::DrumGuidesCache(SceneDocument& document, QObject* parent)
 
 std::optional<core::dock::GuideOptions> DrumGuidesCache::guideOptionsOf(const core::scene::Fragment& drum)
 {
-    const auto axis = core::scene::firstGuide(drum, core::scene::GuideKind::Axis);
-    const auto grooves = std::count_if(drum.guides.begin(), drum.guides.end(), [](const core::scene::Guide& g) {
-        return g.kind == core::scene::GuideKind::Groove;
-    });
-    if (!axis || grooves < 3 || !(axis->direction.norm() > 0.0)) return std::nullopt;
-    core::dock::GuideOptions options;
-    options.axis = core::unroll::Axis{axis->origin, axis->direction.normalized()};
-    options.flutes = int(grooves);
-    return options;
+    return core::dock::guideOptionsFor(drum);
 }
 
 std::optional<std::string> DrumGuidesCache::keyOf(FragmentId drum) const

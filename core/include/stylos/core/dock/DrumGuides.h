@@ -42,6 +42,7 @@
  * options and seed.
  */
 #include "stylos/core/cloud/PointCloud.h"
+#include "stylos/core/scene/Fragment.h"
 #include "stylos/core/unroll/Surface.h"
 #include "stylos/core/util/Progress.h"
 #include "stylos/core/util/Result.h"
@@ -94,6 +95,11 @@ struct DrumGuides {
 
 /** @brief Sets @p g's flute lines from its axis, reference, radius, slope, depth, count and phase. */
 void placeFluteLines(DrumGuides& g);
+
+/** @brief How the workbench fits the guides of @p drum, a scene fragment whose guides were fitted before: about
+ *         its first axis guide, with as many flutes as it has groove guides; nullopt without an axis guide or with
+ *         fewer than 3 grooves (its guides cannot be fitted again, nor a fragment docked against it). */
+std::optional<GuideOptions> guideOptionsFor(const scene::Fragment& drum);
 
 /** @brief Fits the guides of the drum @p cloud (see the file comment). Errors: InvalidArgument naming
  *         the cloud's source, Cancelled, or the normal estimation's OutOfBudget. */

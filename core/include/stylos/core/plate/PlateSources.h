@@ -23,6 +23,7 @@
  */
 #include "stylos/core/annotation/Legend.h"
 #include "stylos/core/developpee/Developpee.h"
+#include "stylos/core/dock/DrumGuides.h"
 #include "stylos/core/plate/PanelImage.h"
 #include "stylos/core/plate/PlateSpec.h"
 #include "stylos/core/scene/Pose.h"
@@ -52,6 +53,14 @@ struct PlateFragment {
      *  so that a plate shows the développée the workbench shows — the same axis, hence the same cut and angles;
      *  the panel's shading replaces this one's. Unset: an axis fitted to the points, every default. */
     std::optional<developpee::DeveloppeeOptions> unrolling;
+    /** The drum whose guides give the radius and taper it unrolls at, as in the Développée dock: its octree and how
+     *  its guides are fitted (dock::guideOptionsFor). Fitted when its développée is made, unless `unrolling` gives a
+     *  radius already; a fit that fails leaves the radius fitted about the axis, as the dock does. */
+    struct DrumGuidesSource {
+        std::filesystem::path octree;
+        dock::GuideOptions options;
+    };
+    std::optional<DrumGuidesSource> drumGuides;
 };
 
 struct PlateSources {
