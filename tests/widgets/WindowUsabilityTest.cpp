@@ -690,6 +690,10 @@ void WindowUsabilityTest::logLinesWriteNumbersInTheLanguage()
                  qPrintable(e.code + QStringLiteral(": ") + line));
         QVERIFY2(!line.contains(QStringLiteral("10974")), qPrintable(line));
     }
+    // A shift that rounds to nothing is 0.00, not -0.00.
+    docked.dock.fluteShift = -0.0004;
+    const QString still = widgets::DockJob::summary(QStringLiteral("fragment"), docked);
+    QVERIFY2(still.contains(QStringLiteral(" 0.00 ")) && !still.contains(QStringLiteral("-0.00")), qPrintable(still));
 }
 
 // A dock from too far says so, and what to do, in the user's language (it said "these data and settings do not

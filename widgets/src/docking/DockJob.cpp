@@ -7,6 +7,8 @@
 
 #include <QLocale>
 #include <QFileInfo>
+
+#include <cmath>
 #include <QStringList>
 
 #include <chrono>
@@ -88,7 +90,7 @@ QString DockJob::summary(const QString& name, const DockJobResult& r)
                        .arg(name)
                        .arg(QLocale().toString(r.dock.rms * 1e3, 'f', 3))
                        .arg(QLocale().toString(qlonglong(r.dock.inliers)))
-                       .arg(QLocale().toString(r.dock.fluteShift, 'f', 2))
+                       .arg(QLocale().toString(std::abs(r.dock.fluteShift) < 0.005 ? 0.0 : r.dock.fluteShift, 'f', 2)) // no "-0.00"
                        .arg(QLocale().toString(r.seconds, 'f', 1));
     if (!sigmas.isEmpty()) text += tr("; ", "between the parts of a status line") + tr("uncertainty %1").arg(sigmas.join(QStringLiteral(", ")));
     if (!unobservable.isEmpty())
