@@ -1932,6 +1932,10 @@ Do you want to delete it anyway?</source>
         <source>Turn about the line through the fragment&apos;s centre parallel to the axis; with θ and the tilts it fixes the orientation. The tilts and the spin are measured from the fragment&apos;s frame as scanned</source>
         <translation>Περιστροφή γύρω από την ευθεία που περνά από το κέντρο του θραύσματος παράλληλα στον άξονα· μαζί με το θ και τις κλίσεις ορίζει τον προσανατολισμό. Οι κλίσεις και η ιδιοπεριστροφή μετρώνται από το σύστημα του θραύσματος όπως σαρώθηκε</translation>
     </message>
+    <message>
+        <source>This is the drum the others are placed against: select one of them.</source>
+        <translation>Αυτός είναι ο σπόνδυλος ως προς τον οποίο τοποθετούνται τα άλλα: επιλέξτε ένα από αυτά.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::EditAxisDialog</name>

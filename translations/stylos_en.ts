@@ -1926,6 +1926,10 @@ Do you want to delete it anyway?</source>
         <source>Turn about the line through the fragment&apos;s centre parallel to the axis; with θ and the tilts it fixes the orientation. The tilts and the spin are measured from the fragment&apos;s frame as scanned</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>This is the drum the others are placed against: select one of them.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::EditAxisDialog</name>

@@ -1932,6 +1932,10 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>Turn about the line through the fragment&apos;s centre parallel to the axis; with θ and the tilts it fixes the orientation. The tilts and the spin are measured from the fragment&apos;s frame as scanned</source>
         <translation>Rotation autour de la droite passant par le centre du fragment, parallèle à l’axe ; avec θ et les inclinaisons, elle fixe l’orientation. Les inclinaisons et la rotation propre sont mesurées depuis le repère du fragment tel qu’il a été numérisé</translation>
     </message>
+    <message>
+        <source>This is the drum the others are placed against: select one of them.</source>
+        <translation>C’est le tambour contre lequel les autres sont placés : sélectionnez l’un d’eux.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::EditAxisDialog</name>

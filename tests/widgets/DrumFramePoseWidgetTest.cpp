@@ -119,6 +119,8 @@ void DrumFramePoseWidgetTest::readsThePlacementAboutTheDrumAxis()
     // The drum's own octree is the piece's: the drum itself has no drum to be placed in.
     m_widget->setFragment(m_drumId);
     QVERIFY(!m_widget->isAvailable());
+    // It says so (it said the drum had no drum with an axis guide).
+    QCOMPARE(m_widget->statusLabel()->text(), QStringLiteral("This is the drum the others are placed against: select one of them."));
 }
 
 void DrumFramePoseWidgetTest::typingAValueMovesThePieceAsOneUndoStep_data()

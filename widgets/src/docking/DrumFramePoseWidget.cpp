@@ -156,10 +156,11 @@ void DrumFramePoseWidget::refresh()
     m_updating = true;
     for (QDoubleSpinBox* spin : m_fields) spin->setEnabled(m_available);
     if (!m_available) {
-        m_status->setText(m_document.fragment(m_id)
-                              ? tr("This fragment has no drum with an axis guide (put it in an assembly with a drum, "
-                                   "or Tools › Dock against this drum), or its octree is not open yet.")
-                              : tr("No fragment selected."));
+        const bool isDrum = m_id != core::scene::NoFragment && m_document.drumFor(m_id) == m_id;
+        m_status->setText(!m_document.fragment(m_id) ? tr("No fragment selected.")
+                          : isDrum ? tr("This is the drum the others are placed against: select one of them.")
+                                   : tr("This fragment has no drum with an axis guide (put it in an assembly with a drum, "
+                                        "or Tools › Dock against this drum), or its octree is not open yet."));
         for (QDoubleSpinBox* spin : m_fields) spin->setValue(0.0);
         m_updating = false;
         return;
