@@ -100,7 +100,16 @@ MainWindow::MainWindow(Translations& translations, const QString& demoDirectory,
             const auto* f = m_document->fragment(id);
             m_message->showMessage(tr("%1 on %2").arg(StatusReadout::formatPoint(p),
                                                         f ? QString::fromStdString(f->name) : QString()));
+            m_picked = {id, m_message->message()};
         });
+        // A picked point's line goes with its fragment (removed, or a new or another project opened).
+        const auto forgetPick = [this](quint64 id) {
+            if (m_picked.first == 0 || (id != 0 && id != m_picked.first)) return;
+            if (m_message->message() == m_picked.second) m_message->clearMessage();
+            m_picked = {};
+        };
+        connect(m_document, &widgets::SceneDocument::sceneAboutToBeReset, this, [forgetPick] { forgetPick(0); });
+        connect(m_document, &widgets::SceneDocument::fragmentAboutToBeRemoved, this, forgetPick);
     }
 
     QSettings settings;

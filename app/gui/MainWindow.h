@@ -143,6 +143,7 @@ private:
     QToolBar* m_viewToolBar = nullptr;
     ToolBarRows* m_toolBarRows = nullptr;
     StatusMessage* m_message = nullptr;
+    std::pair<quint64, QString> m_picked; ///< the fragment of the point picked last and the line it showed
     QMenu* m_fileMenu = nullptr;
     bool m_errorDialogs = true;
     bool m_demoPending = false;

@@ -102,6 +102,7 @@ private Q_SLOTS:
     void docksShowEveryLabelInEveryLanguage();
     void toolBarsShowEveryActionInEveryLanguage();
     void statusBarCutsWithAnEllipsisAndKeepsTheWhole();
+    void aPickedPointsLineGoesWithItsFragment();
     void legendShowsEveryColumnInEveryLanguage();
     void standardButtonsFollowTheLanguage();
     void fileChooserFollowsTheLanguage();
@@ -485,6 +486,32 @@ void WindowUsabilityTest::toolBarsShowEveryActionInEveryLanguage()
             if (code == QStringLiteral("en") && size.width() == 1600) QVERIFY(!window->toolBarRows().isSplit());
         }
     }
+}
+
+// The line a picked point leaves in the status bar ("x … on drum") goes when its fragment does, or with the
+// project (it stayed after File › New, naming a fragment no longer there).
+void WindowUsabilityTest::aPickedPointsLineGoesWithItsFragment()
+{
+    auto window = makeWindow();
+    importDrum(*window);
+    importDrum(*window);
+    widgets::ViewportWidget* viewport = window->viewport();
+    if (!viewport) QSKIP("no OpenGL 3.3: no 3D view to pick in");
+    widgets::SceneDocument& document = window->document();
+    const auto first = document.scene().fragments()[0].id, second = document.scene().fragments()[1].id;
+    app::StatusMessage& message = window->statusMessage();
+    Q_EMIT viewport->pointPicked(Eigen::Vector3d(0.5, 0.25, 1.0), first);
+    const QString picked = message.message();
+    QVERIFY2(picked.endsWith(QStringLiteral(" on drum")), qPrintable(picked));
+    QVERIFY(document.removeFragment(second)); // another fragment: the line stays
+    QCOMPARE(message.message(), picked);
+    QVERIFY(document.removeFragment(first));
+    QCOMPARE(message.message(), QString());
+    importDrum(*window);
+    Q_EMIT viewport->pointPicked(Eigen::Vector3d(0.5, 0.25, 1.0), document.scene().fragments()[0].id);
+    QVERIFY(!message.message().isEmpty());
+    document.newProject();
+    QCOMPARE(message.message(), QString());
 }
 
 void WindowUsabilityTest::statusBarCutsWithAnEllipsisAndKeepsTheWhole()
