@@ -47,6 +47,7 @@
 #include <QMimeData>
 #include <QSettings>
 #include <QStatusBar>
+#include <QStatusTipEvent>
 #include <QToolBar>
 #include <QTreeView>
 #include <QUndoStack>
@@ -384,6 +385,15 @@ void MainWindow::showDeveloppee()
     m_developpeeDock->show();
     m_developpeeDock->raise();
     m_developpeeLink->compute();
+}
+
+bool MainWindow::event(QEvent* event)
+{
+    if (event->type() == QEvent::StatusTip) {
+        m_message->setTip(static_cast<QStatusTipEvent*>(event)->tip());
+        return true;
+    }
+    return QMainWindow::event(event);
 }
 
 void MainWindow::report(const QString& message, bool failed)

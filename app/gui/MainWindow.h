@@ -97,6 +97,8 @@ public:
     void setErrorDialogsEnabled(bool enabled);
 
 protected:
+    /** Status tips (menus, buttons) go to the status line, cut with "…" before the readout. */
+    bool event(QEvent* event) override;
     void closeEvent(QCloseEvent* event) override;
     void changeEvent(QEvent* event) override;
     void dragEnterEvent(QDragEnterEvent* event) override;

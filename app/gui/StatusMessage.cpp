@@ -18,7 +18,6 @@ StatusMessage::StatusMessage(QWidget* parent) : QLabel(parent), m_timer(new QTim
 void StatusMessage::showMessage(const QString& message, int timeoutMs)
 {
     m_message = message;
-    setToolTip(message);
     refresh();
     if (timeoutMs > 0) m_timer->start(timeoutMs);
     else m_timer->stop();
@@ -28,11 +27,16 @@ void StatusMessage::clearMessage()
 {
     m_timer->stop();
     m_message.clear();
-    setToolTip(QString());
-    setText(QString());
+    refresh();
 }
 
-bool StatusMessage::isElided() const { return text() != m_message.section(QLatin1Char('\n'), 0, 0); }
+void StatusMessage::setTip(const QString& tip)
+{
+    m_tip = tip;
+    refresh();
+}
+
+bool StatusMessage::isElided() const { return text() != (m_tip.isEmpty() ? m_message : m_tip).section(QLatin1Char('\n'), 0, 0); }
 
 QSize StatusMessage::minimumSizeHint() const { return {0, QLabel::minimumSizeHint().height()}; }
 
@@ -46,7 +50,9 @@ void StatusMessage::resizeEvent(QResizeEvent* event)
 
 void StatusMessage::refresh()
 {
-    const QString line = m_message.section(QLatin1Char('\n'), 0, 0);
+    const QString& shown = m_tip.isEmpty() ? m_message : m_tip;
+    setToolTip(shown);
+    const QString line = shown.section(QLatin1Char('\n'), 0, 0);
     const int width = contentsRect().width() - 2 * margin();
     setText(fontMetrics().elidedText(line, Qt::ElideRight, std::max(0, width)));
 }

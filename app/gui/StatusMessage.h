@@ -19,6 +19,10 @@ public:
     /** @brief Shows @p message (its first line) for @p timeoutMs ms (0: until the next one). */
     void showMessage(const QString& message, int timeoutMs = 0);
     void clearMessage();
+    /** @brief Shows @p tip (a menu's or a button's status tip) over the message while it is not empty; an empty
+     *         tip brings the message back. Cut with "…" as the message is (QStatusBar cut it without one). */
+    void setTip(const QString& tip);
+    QString tip() const { return m_tip; }
     /** @brief The whole message shown now (the tooltip's text); empty once cleared. */
     QString message() const { return m_message; }
     /** @brief Whether the label shows less than the message's first line (it ends in "…"). */
@@ -34,6 +38,7 @@ private:
     void refresh();
 
     QString m_message;
+    QString m_tip;
     QTimer* m_timer;
 };
 

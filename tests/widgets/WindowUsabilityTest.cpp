@@ -48,10 +48,11 @@
 #include <QLineEdit>
 #include <QLocale>
 #include <QScrollArea>
+#include <QStatusBar>
+#include <QStatusTipEvent>
 #include <QCheckBox>
 #include <QSettings>
 #include <QSlider>
-#include <QStatusBar>
 #include <QStyleHints>
 #include <QTemporaryDir>
 #include <QToolBar>
@@ -512,6 +513,20 @@ void WindowUsabilityTest::aPickedPointsLineGoesWithItsFragment()
     QVERIFY(!message.message().isEmpty());
     document.newProject();
     QCOMPARE(message.message(), QString());
+
+    // A status tip (hovering the lasso's button) takes the line, cut with "…" before the readout (Qt's own status
+    // bar cut it without one, into the coordinates), and leaves the message to come back.
+    message.showMessage(QStringLiteral("Imported drum"));
+    const QString tip = window->annotation().lassoAction()->statusTip();
+    QStatusTipEvent hover(tip);
+    QCoreApplication::sendEvent(window.get(), &hover);
+    QCOMPARE(window->statusBar()->currentMessage(), QString());
+    QCOMPARE(message.toolTip(), tip);
+    QVERIFY2(message.fontMetrics().horizontalAdvance(tip) > message.contentsRect().width(), "the tip fits: nothing checked");
+    QVERIFY2(message.text().endsWith(QStringLiteral("…")) && tip.startsWith(message.text().chopped(1)), qPrintable(message.text()));
+    QStatusTipEvent leave{QString()};
+    QCoreApplication::sendEvent(window.get(), &leave);
+    QCOMPARE(message.text(), QStringLiteral("Imported drum"));
 }
 
 void WindowUsabilityTest::statusBarCutsWithAnEllipsisAndKeepsTheWhole()
