@@ -125,10 +125,7 @@ void DeveloppeeLink::setGuidesCache(widgets::DrumGuidesCache* cache)
 
 core::scene::FragmentId DeveloppeeLink::guidesOwner(const core::scene::Fragment& fragment) const
 {
-    if (core::scene::firstGuide(fragment, core::scene::GuideKind::Axis)) return fragment.id;
-    const core::scene::FragmentId drumId = m_document.drumFor(fragment.id);
-    const core::scene::Fragment* drum = drumId != fragment.id ? m_document.fragment(drumId) : nullptr;
-    return drum && core::scene::firstGuide(*drum, core::scene::GuideKind::Axis) ? drumId : core::scene::NoFragment;
+    return core::scene::unrollAxisOwner(m_document.scene(), fragment.id, m_document.drumFor(fragment.id));
 }
 
 bool DeveloppeeLink::leadingRadius(core::scene::FragmentId owner, widgets::DeveloppeeSettings& settings)

@@ -94,14 +94,8 @@ std::shared_ptr<const cp::PlateSources> PlateActions::sourcesOf(const widgets::S
         if (shown && shown->ok() && !shown->pieceAt && shown->octreePath == QString::fromStdString(f.octreePath.string()) &&
             (!shown->settings.axis || sameAxis(*shown->settings.axis))) {
             p.unrolling = shown->settings.options();
-        } else if (axis) {
-            p.unrolling.emplace();
-            p.unrolling->axis = core::unroll::Axis{axis->origin, axis->direction};
-            // At the radius of the drum guides the dock would use (its own axis guide's, else its drum's).
-            const core::scene::Fragment* owner =
-                core::scene::firstGuide(f, core::scene::GuideKind::Axis) ? &f : document.fragment(document.drumFor(f.id));
-            if (const auto options = owner ? core::dock::guideOptionsFor(*owner) : std::nullopt)
-                p.drumGuides = cp::PlateFragment::DrumGuidesSource{owner->octreePath, *options};
+        } else {
+            cp::unrollAsTheDock(p, scene, f.id, document.drumFor(f.id));
         }
         sources->fragments.push_back(std::move(p));
     }

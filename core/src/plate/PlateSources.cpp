@@ -209,6 +209,17 @@ Result<RenderedPanel> render3d(const PlateSources& sources, const std::vector<co
 
 } // namespace
 
+void unrollAsTheDock(PlateFragment& out, const scene::Scene& scene, scene::FragmentId fragment, scene::FragmentId drum)
+{
+    const auto axis = scene::unrollAxis(scene, fragment, drum);
+    if (!axis) return;
+    out.unrolling.emplace();
+    out.unrolling->axis = unroll::Axis{axis->origin, axis->direction};
+    const scene::Fragment* owner = scene.find(scene::unrollAxisOwner(scene, fragment, drum));
+    if (const auto options = owner ? dock::guideOptionsFor(*owner) : std::nullopt)
+        out.drumGuides = PlateFragment::DrumGuidesSource{owner->octreePath, *options};
+}
+
 Result<PlateSources> readPlateSources(const fs::path& path)
 {
     PlateSources out;
@@ -223,18 +234,8 @@ Result<PlateSources> readPlateSources(const fs::path& path)
         out.legend = s.legend();
         for (const scene::Fragment& f : s.fragments()) {
             out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}, {}, {}});
-            // Unrolled about its axis guide, or its assembly drum's, at the radius of that drum's guides, as the
-            // workbench unrolls it.
             const scene::Assembly* assembly = s.findAssembly(f.assembly);
-            const scene::FragmentId drum = assembly ? assembly->drum : scene::NoFragment;
-            if (const auto axis = scene::unrollAxis(s, f.id, drum)) {
-                developpee::DeveloppeeOptions unrolling;
-                unrolling.axis = unroll::Axis{axis->origin, axis->direction};
-                out.fragments.back().unrolling = unrolling;
-                const scene::Fragment* owner = scene::firstGuide(f, scene::GuideKind::Axis) ? &f : s.find(drum);
-                if (const auto options = owner ? dock::guideOptionsFor(*owner) : std::nullopt)
-                    out.fragments.back().drumGuides = PlateFragment::DrumGuidesSource{owner->octreePath, *options};
-            }
+            unrollAsTheDock(out.fragments.back(), s, f.id, assembly ? assembly->drum : scene::NoFragment);
         }
         if (out.fragments.empty()) return Error::at(ErrorCode::InvalidArgument, path.string(), {}, "the project has no fragment");
         return out;

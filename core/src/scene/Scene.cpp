@@ -158,15 +158,22 @@ Pose Scene::localPose(FragmentId id, const Pose& world) const
     return a ? a->pose.rigidInverse() * world : world;
 }
 
-std::optional<GuideLine> unrollAxis(const Scene& scene, FragmentId fragment, FragmentId drum)
+FragmentId unrollAxisOwner(const Scene& scene, FragmentId fragment, FragmentId drum)
 {
     const Fragment* f = scene.find(fragment);
-    if (!f) return std::nullopt;
-    if (auto own = firstGuide(*f, GuideKind::Axis)) return own;
+    if (!f) return NoFragment;
+    if (firstGuide(*f, GuideKind::Axis)) return fragment;
     const Fragment* d = drum != fragment ? scene.find(drum) : nullptr;
-    const auto line = d ? firstGuide(*d, GuideKind::Axis) : std::nullopt;
-    if (!line) return std::nullopt;
-    const Eigen::Matrix4d m = toEigen(scene.worldPose(fragment).rigidInverse() * scene.worldPose(drum));
+    return d && firstGuide(*d, GuideKind::Axis) ? drum : NoFragment;
+}
+
+std::optional<GuideLine> unrollAxis(const Scene& scene, FragmentId fragment, FragmentId drum)
+{
+    const FragmentId owner = unrollAxisOwner(scene, fragment, drum);
+    if (owner == NoFragment) return std::nullopt;
+    const auto line = firstGuide(*scene.find(owner), GuideKind::Axis);
+    if (owner == fragment) return line;
+    const Eigen::Matrix4d m = toEigen(scene.worldPose(fragment).rigidInverse() * scene.worldPose(owner));
     return GuideLine{m.topLeftCorner<3, 3>() * line->origin + m.topRightCorner<3, 1>(),
                      (m.topLeftCorner<3, 3>() * line->direction).normalized()};
 }

@@ -486,7 +486,8 @@ void PlateDialog::startPreview()
 
 QString PlateDialog::layoutFailureText(const cp::LayoutFailure& failure, const cp::PlateSpec& spec)
 {
-    const QString area = tr("%1 × %2 mm").arg(millimetres(failure.printArea.w), millimetres(failure.printArea.h));
+    const auto size = [](double w, double h) { return tr("%1 × %2 mm").arg(millimetres(w), millimetres(h)); };
+    const QString area = size(failure.printArea.w, failure.printArea.h);
     const bool letters = spec.panels.size() > 1;
     const auto panelName = [&](std::size_t i) {
         const cp::PanelSpec& p = spec.panels[i];
@@ -497,19 +498,18 @@ QString PlateDialog::layoutFailureText(const cp::LayoutFailure& failure, const c
     case cp::LayoutFailure::Kind::None: break;
     case cp::LayoutFailure::Kind::PanelTooLarge: {
         if (failure.panel >= spec.panels.size()) break;
-        const QString size = tr("%1 × %2 mm").arg(millimetres(failure.sizeMm[0]), millimetres(failure.sizeMm[1]));
+        const QString panel = size(failure.sizeMm[0], failure.sizeMm[1]);
         if (failure.smallerScale)
             return tr("%1 is %2; the print area is %3: use %4 or smaller, or a larger page.")
-                .arg(panelName(failure.panel), size, area, scaleLabel(*failure.smallerScale));
+                .arg(panelName(failure.panel), panel, area, scaleLabel(*failure.smallerScale));
         return tr("%1 is %2; the print area is %3: no scale fits this page, use a larger page.")
-            .arg(panelName(failure.panel), size, area);
+            .arg(panelName(failure.panel), panel, area);
     }
     case cp::LayoutFailure::Kind::PanelOutside:
         if (failure.panel >= spec.panels.size()) break;
         return tr("%1, placed at (%2, %3) mm, is %4 with its texts and leaves the %5 page.")
             .arg(panelName(failure.panel), millimetres(failure.atMm[0]), millimetres(failure.atMm[1]),
-                 tr("%1 × %2 mm").arg(millimetres(failure.sizeMm[0]), millimetres(failure.sizeMm[1])),
-                 tr("%1 × %2 mm").arg(millimetres(failure.page.widthMm), millimetres(failure.page.heightMm)));
+                 size(failure.sizeMm[0], failure.sizeMm[1]), size(failure.page.widthMm, failure.page.heightMm));
     case cp::LayoutFailure::Kind::TooTall: {
         QStringList scales;
         for (std::size_t i = 0; i < failure.fittingScales.size() && i < spec.panels.size(); ++i) {

@@ -27,6 +27,7 @@
 #include "stylos/core/plate/PanelImage.h"
 #include "stylos/core/plate/PlateSpec.h"
 #include "stylos/core/scene/Pose.h"
+#include "stylos/core/scene/Scene.h"
 #include "stylos/core/util/Progress.h"
 #include "stylos/core/util/Result.h"
 
@@ -69,6 +70,12 @@ struct PlateSources {
     annotation::Legend legend = annotation::Legend::defaults();
     bool isProject = false;
 };
+
+/** @brief Sets @p out's unrolling (the axis) and drumGuides as the Développée dock unrolls @p fragment of @p scene
+ *         against @p drum (its assembly's drum, or the workbench's docking drum): about the axis guide of
+ *         scene::unrollAxisOwner, at the radius of that fragment's guides when they can be fitted. Leaves @p out
+ *         as it is when neither has an axis guide. */
+void unrollAsTheDock(PlateFragment& out, const scene::Scene& scene, scene::FragmentId fragment, scene::FragmentId drum);
 
 /** @brief Reads @p path as a project, an octree or a point file (by content and extension). */
 Result<PlateSources> readPlateSources(const std::filesystem::path& path);

@@ -56,6 +56,10 @@ inline std::optional<GuideLine> firstGuide(const Fragment& fragment, GuideKind k
     return std::nullopt;
 }
 
+/** @brief The fragment whose axis guide @p fragment unrolls about: itself when it has one, else @p drum (another
+ *         fragment of @p scene) when that has one; NoFragment otherwise. */
+FragmentId unrollAxisOwner(const Scene& scene, FragmentId fragment, FragmentId drum);
+
 /**
  * @brief The axis @p fragment unrolls about (its développée in the workbench and on a plate): its own first
  *        Axis guide, else that of @p drum (another fragment of @p scene, e.g. its assembly's drum) carried into
