@@ -56,7 +56,8 @@ struct PlateFragment {
     std::optional<developpee::DeveloppeeOptions> unrolling;
     /** The drum whose guides give the radius and taper it unrolls at, as in the Développée dock: its octree and how
      *  its guides are fitted (dock::guideOptionsFor). Fitted when its développée is made, unless `unrolling` gives a
-     *  radius already; a fit that fails leaves the radius fitted about the axis, as the dock does. */
+     *  radius already; a fit that fails leaves the radius fitted about the axis, as the dock does (a drum octree that
+     *  cannot be read is an error naming it). */
     struct DrumGuidesSource {
         std::filesystem::path octree;
         dock::GuideOptions options;
