@@ -2841,6 +2841,13 @@ Do you want to delete it anyway?</source>
         <source>Could not import %1: the folder %2 cannot be created or written to.</source>
         <translation>Δεν ήταν δυνατή η εισαγωγή του %1: ο φάκελος %2 δεν μπορεί να δημιουργηθεί ή να δεχτεί εγγραφή.</translation>
     </message>
+    <message numerus="yes">
+        <source>%1 holds %Ln scan(s), merged into one fragment; each point&apos;s normal was estimated from its own scan&apos;s points</source>
+        <translation>
+            <numerusform>Το %1 περιέχει %Ln σάρωση, συγχωνευμένη σε ένα θραύσμα· το κάθετο διάνυσμα κάθε σημείου εκτιμήθηκε από τα σημεία της δικής του σάρωσης</numerusform>
+            <numerusform>Το %1 περιέχει %Ln σαρώσεις, συγχωνευμένες σε ένα θραύσμα· το κάθετο διάνυσμα κάθε σημείου εκτιμήθηκε από τα σημεία της δικής του σάρωσης</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneDocument</name>

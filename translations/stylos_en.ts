@@ -2835,6 +2835,13 @@ Do you want to delete it anyway?</source>
         <source>Could not import %1: the folder %2 cannot be created or written to.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message numerus="yes">
+        <source>%1 holds %Ln scan(s), merged into one fragment; each point&apos;s normal was estimated from its own scan&apos;s points</source>
+        <translation>
+            <numerusform>%1 holds %Ln scan, merged into one fragment; each point&apos;s normal was estimated from its own scan&apos;s points</numerusform>
+            <numerusform>%1 holds %Ln scans, merged into one fragment; each point&apos;s normal was estimated from its own scan&apos;s points</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneDocument</name>

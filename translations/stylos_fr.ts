@@ -2841,6 +2841,13 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>Could not import %1: the folder %2 cannot be created or written to.</source>
         <translation>Impossible d’importer %1 : le dossier %2 ne peut pas être créé ou n’accepte pas d’écriture.</translation>
     </message>
+    <message numerus="yes">
+        <source>%1 holds %Ln scan(s), merged into one fragment; each point&apos;s normal was estimated from its own scan&apos;s points</source>
+        <translation>
+            <numerusform>%1 contient %Ln relevé, fusionné en un seul fragment ; la normale de chaque point a été estimée à partir des points de son propre relevé</numerusform>
+            <numerusform>%1 contient %Ln relevés, fusionnés en un seul fragment ; la normale de chaque point a été estimée à partir des points de son propre relevé</numerusform>
+        </translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::SceneDocument</name>

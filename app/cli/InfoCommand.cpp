@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdio>
+#include <optional>
 #include <iostream>
 
 namespace stylos::cli {
@@ -32,7 +33,7 @@ nlohmann::json toJson(const core::io::ScanInfo& scan, std::size_t index)
     return j;
 }
 
-nlohmann::json toJson(const std::string& file, const core::io::PointFileSummary& s)
+nlohmann::json toJson(const std::string& file, const core::io::PointFileSummary& s, std::optional<std::size_t> read)
 {
     nlohmann::json j;
     j["file"] = file;
@@ -44,6 +45,7 @@ nlohmann::json toJson(const std::string& file, const core::io::PointFileSummary&
     if (!s.scans.empty()) {
         j["scans"] = nlohmann::json::array();
         for (std::size_t i = 0; i < s.scans.size(); ++i) j["scans"].push_back(toJson(s.scans[i], i));
+        if (read) j["scan_read"] = *read; // --scan: the points, bounds and attributes are this scan's only
     }
     if (s.min) j["bounds"] = {{"min", *s.min}, {"max", *s.max}};
     else j["bounds"] = nullptr;
@@ -52,7 +54,7 @@ nlohmann::json toJson(const std::string& file, const core::io::PointFileSummary&
     return j;
 }
 
-void printText(const std::string& file, const core::io::PointFileSummary& s)
+void printText(const std::string& file, const core::io::PointFileSummary& s, std::optional<std::size_t> read)
 {
     std::printf("file:       %s\nformat:     %s\npoints:     %llu\n", file.c_str(), s.format.c_str(),
                 static_cast<unsigned long long>(s.points));
@@ -71,7 +73,11 @@ void printText(const std::string& file, const core::io::PointFileSummary& s)
     std::string attrs;
     for (const auto& a : s.attributes) attrs += (attrs.empty() ? "" : ", ") + a;
     std::printf("attributes: %s\n", attrs.empty() ? "(none)" : attrs.c_str());
-    if (!s.scans.empty()) std::printf("scans:      %zu\n", s.scans.size());
+    if (!s.scans.empty() && read)
+        std::printf("scans:      %zu (only scan %zu read: the points, bounds and attributes above are its own)\n",
+                    s.scans.size(), *read);
+    else if (!s.scans.empty())
+        std::printf("scans:      %zu\n", s.scans.size());
     for (std::size_t i = 0; i < s.scans.size(); ++i) {
         const auto& scan = s.scans[i];
         const auto& m = scan.pose;
@@ -131,8 +137,8 @@ int runInfo(const std::vector<std::string>& args)
         std::cerr << "stylos-cli: " << summary.error().message << "\n";
         return ExitFailure;
     }
-    if (cl.flag("json")) std::cout << toJson(file, *summary).dump() << "\n";
-    else printText(file, *summary);
+    if (cl.flag("json")) std::cout << toJson(file, *summary, options.scan).dump() << "\n";
+    else printText(file, *summary, options.scan);
     return ExitOk;
 }
 

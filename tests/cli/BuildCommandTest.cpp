@@ -13,8 +13,11 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "stylos/core/io/PointFileFormat.h"
+
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <string>
 #include <thread>
 
@@ -195,6 +198,44 @@ TEST(CliBuild, FileWithoutNormalsGetsThemEstimated)
                             std::to_string(j["normal_scans"].get<int>()) + " scans, column scan_id)"),
               std::string::npos) << text.out;
     EXPECT_EQ(entriesIn(dir.path()), 3u); // scan, truth, octree: the estimated normals were temporary
+}
+
+TEST(CliBuild, PtxScansGetTheirNormalsScanByScanAsAPlyScanColumn)
+{
+    // The generator's drum (three stations, a scan_id column) rewritten as a PTX of three scans, one per
+    // station (identity transforms): the PTX reader numbers each point's scan, so the normals are
+    // estimated scan by scan as for the PLY, and the two octrees are the same bytes. Estimated whole (the
+    // scans' sheets mixed), the PTX's normals, hence its octree, would differ.
+    TempDir dir;
+    const auto ply = generateDrum(dir, false);
+    auto reader = stylos::core::io::openPointReader(ply);
+    ASSERT_TRUE(reader) << reader.error().message;
+    ASSERT_EQ((*reader)->header().schema.scalarNames, std::vector<std::string>{"scan_id"});
+    auto all = stylos::test::readAllPoints(**reader, 4096);
+    ASSERT_TRUE(all) << all.error().message;
+    std::map<int, std::vector<std::size_t>> byScan;
+    for (std::size_t i = 0; i < all->size(); ++i) byScan[int(all->scalars[0][i])].push_back(i);
+    ASSERT_EQ(byScan.size(), 3u);
+    const fs::path ptx = dir / "drum.ptx";
+    {
+        std::ofstream out(ptx);
+        out.precision(17);
+        for (const auto& [scan, points] : byScan) {
+            out << "1\n" << points.size() << "\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+            for (std::size_t i : points)
+                out << all->positions[3 * i] << ' ' << all->positions[3 * i + 1] << ' ' << all->positions[3 * i + 2]
+                    << " 0.5\n";
+        }
+    }
+    const auto fromPly = runCli({"build", ply, "-o", (dir / "ply.poct").string(), "--depth", "8", "--json"});
+    ASSERT_EQ(fromPly.exitCode, 0) << fromPly.err;
+    const auto fromPtx = runCli({"build", ptx.string(), "-o", (dir / "ptx.poct").string(), "--depth", "8", "--json"});
+    ASSERT_EQ(fromPtx.exitCode, 0) << fromPtx.err;
+    EXPECT_EQ(nlohmann::json::parse(fromPtx.out)["normal_scans"], 3);
+    EXPECT_EQ(stylos::test::readBytes(dir / "ply.poct"), stylos::test::readBytes(dir / "ptx.poct"));
+    const auto text = runCli({"build", ptx.string(), "-o", (dir / "ptx2.poct").string(), "--depth", "8"});
+    EXPECT_NE(text.out.find("each point's from its own scan (3 scans, column scan_index)"), std::string::npos)
+        << text.out;
 }
 
 TEST(CliBuild, BadInputExitsWithOneNamingTheFile)

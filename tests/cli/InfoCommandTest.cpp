@@ -121,6 +121,11 @@ TEST(CliInfo, E57AndPtxScansWithTheirPoses)
     const auto one = runCli({"info", (formats / "e57" / "A_B.e57").string(), "--scan", "1", "--json"});
     ASSERT_EQ(one.exitCode, 0) << one.err;
     EXPECT_EQ(nlohmann::json::parse(one.out)["points"], 4);
+    EXPECT_EQ(nlohmann::json::parse(one.out)["scan_read"], 1);
+    EXPECT_FALSE(j.contains("scan_read")); // every scan read
+    const auto oneText = runCli({"info", (formats / "e57" / "A_B.e57").string(), "--scan", "1"});
+    EXPECT_NE(oneText.out.find("scans:      2 (only scan 1 read: the points, bounds and attributes above are its own)"),
+              std::string::npos) << oneText.out;
     const auto none = runCli({"info", (formats / "e57" / "A_B.e57").string(), "--scan", "2"});
     EXPECT_EQ(none.exitCode, 1);
     EXPECT_NE(none.err.find("scan 2 does not exist"), std::string::npos) << none.err;

@@ -237,7 +237,8 @@ TEST(E57Reader, GeneratedScansWithPoseSphericalAndInvalidStates)
     EXPECT_EQ((*reader)->header().declaredPoints, 7u);
     // Scan 1 has no colour: only the attributes common to both are kept.
     EXPECT_FALSE((*reader)->header().schema.hasColors);
-    EXPECT_EQ((*reader)->header().schema.scalarNames, std::vector<std::string>{"intensity"});
+    // Two scans read: each point also carries its scan's number.
+    EXPECT_EQ((*reader)->header().schema.scalarNames, (std::vector<std::string>{"intensity", "scan_index"}));
     ASSERT_EQ((*reader)->scans().size(), 2u);
     EXPECT_EQ((*reader)->scans()[0].name, "posed");
     EXPECT_EQ((*reader)->scans()[0].guid, "{A}");
@@ -254,8 +255,9 @@ TEST(E57Reader, GeneratedScansWithPoseSphericalAndInvalidStates)
     ASSERT_EQ(all->positions.size(), expected.size());
     for (std::size_t i = 0; i < expected.size(); ++i) EXPECT_NEAR(all->positions[i], expected[i], 1e-12) << i;
     const std::vector<double> intensity = {0, 0.25, 0.5, 0.1, 0.9};
-    ASSERT_EQ(all->scalars.size(), 1u);
+    ASSERT_EQ(all->scalars.size(), 2u);
     for (std::size_t i = 0; i < intensity.size(); ++i) EXPECT_DOUBLE_EQ(all->scalars[0][i], intensity[i]) << i;
+    EXPECT_EQ(all->scalars[1], (std::vector<double>{0, 0, 0, 1, 1}));
 }
 
 TEST(E57Reader, OneScanKeepsItsColours)
@@ -272,6 +274,8 @@ TEST(E57Reader, OneScanKeepsItsColours)
     const PointBatch b = readAll(dir / "two.e57", second);
     ASSERT_EQ(b.size(), 2u);
     EXPECT_NEAR(b.positions[1], 2.0, 1e-12);
+    ASSERT_EQ(b.scalars.size(), 1u); // intensity only: one scan read has no scan column
+    EXPECT_EQ(b.scalars[0], (std::vector<double>{0.1, 0.9}));
     ReadOptions none;
     none.scan = 2;
     auto missing = openPointReader(dir / "two.e57", none);

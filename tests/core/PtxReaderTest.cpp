@@ -57,6 +57,10 @@ TEST(PtxReader, TransformIsRowVectorAndZeroPointsAreMissing)
     EXPECT_EQ(all->positions, (std::vector<double>{98, 201, 303, 7, 8, 9, -1, -2, -3}));
     EXPECT_EQ(all->colors, (std::vector<std::uint8_t>{10, 20, 30, 1, 2, 3, 4, 5, 6}));
     EXPECT_EQ(all->scalars[0], (std::vector<double>{0.5, 0.25, 1}));
+    // Each point's scan, for what keeps the scans apart (normals estimated scan by scan).
+    EXPECT_EQ((*reader)->header().schema.scalarNames, (std::vector<std::string>{"intensity", "scan_index"}));
+    ASSERT_EQ(all->scalars.size(), 2u);
+    EXPECT_EQ(all->scalars[1], (std::vector<double>{0, 1, 1}));
     EXPECT_EQ((*reader)->pointsMissing(), 2u);
     EXPECT_EQ((*reader)->header().declaredPoints, 5u);
     ASSERT_EQ((*reader)->scans().size(), 2u);
@@ -67,6 +71,7 @@ TEST(PtxReader, TransformIsRowVectorAndZeroPointsAreMissing)
     auto one = summarizePointFile(dir / "a.ptx", second);
     ASSERT_TRUE(one) << one.error().message;
     EXPECT_EQ(one->points, 2u);
+    EXPECT_EQ(one->attributes, (std::vector<std::string>{"color", "intensity"})); // one scan: no scan column
     EXPECT_EQ(one->missing, 1u);
     EXPECT_EQ(one->declaredPoints, 3u);
     ReadOptions third;
@@ -124,5 +129,5 @@ TEST(PtxReader, SharedFixtures)
     ASSERT_TRUE(colour) << colour.error().message;
     EXPECT_EQ(colour->declaredPoints, 15u * 71u);
     EXPECT_EQ(colour->points + colour->missing, 15u * 71u);
-    EXPECT_EQ(colour->attributes, (std::vector<std::string>{"color", "intensity"}));
+    EXPECT_EQ(colour->attributes, (std::vector<std::string>{"color", "intensity", "scan_index"}));
 }

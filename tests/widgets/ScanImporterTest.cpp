@@ -39,6 +39,7 @@ private Q_SLOTS:
     void twoWorkbenchesImportingOneNameTakeTwoFiles();
     void aBrokenFileIsNamedAndNothingIsAdded();
     void skippedPointsAreSaid();
+    void mergedScansAreSaid();
     void cancelLeavesNothing();
     void dialogsAndDropsUseTheCoreListOfExtensions();
 
@@ -402,6 +403,45 @@ void ScanImporterTest::skippedPointsAreSaid()
                  note.endsWith(QStringLiteral(" with NaN or infinite coordinates skipped")),
              qPrintable(note));
     QCOMPARE(doc.octree(imported.at(0).at(0).toULongLong())->description().points, 64u);
+}
+
+void ScanImporterTest::mergedScansAreSaid()
+{
+    // A PTX of two scans becomes one fragment, and the Log says so (it said only "Imported"), with the normals
+    // estimated scan by scan; a file of one scan, or a cloud without scans, says nothing of scans.
+    const QString folder = freshFolder("scans");
+    const auto scanText = [](int scans) {
+        QByteArray text;
+        for (int s = 0; s < scans; ++s) {
+            text += "1\n64\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n1 0 0 0\n0 1 0 0\n0 0 1 0\n0 0 0 1\n";
+            for (int i = 0; i < 8; ++i)
+                for (int j = 0; j < 8; ++j)
+                    text += QByteArray::number(0.1 + i * 0.01 + s * 0.003) + ' ' + QByteArray::number(j * 0.01) + ' ' +
+                            QByteArray::number(0.001 * s) + " 0.5\n";
+        }
+        return text;
+    };
+    const QString two = stylos::test::writeFile(folder, "stations.ptx", scanText(2));
+    const QString one = stylos::test::writeFile(folder, "single.ptx", scanText(1));
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    ScanImporter importer(doc, tasks);
+    importer.setBuildOptions(m_options);
+    importer.setCacheDirectory(freshFolder("cache-scans"));
+    QSignalSpy imported(&importer, &ScanImporter::fragmentImported);
+    QSignalSpy notes(&importer, &ScanImporter::importNote);
+    QCOMPARE(importer.importFiles({two, one}), 2);
+    QVERIFY(tasks.waitForIdle(30000));
+    QCOMPARE(imported.size(), 2);
+    QCOMPARE(notes.size(), 1);
+    const quint64 id = notes.at(0).at(0).toULongLong();
+    QCOMPARE(QString::fromStdString(doc.fragment(id)->name), QStringLiteral("stations"));
+    QCOMPARE(doc.octree(id)->description().points, 128u);
+    const QString note = notes.at(0).at(1).toString(); // "scan(s)": the English plural comes with the translator
+    QVERIFY2(note.startsWith(QStringLiteral("stations.ptx holds 2 scan")) &&
+                 note.endsWith(QStringLiteral(" merged into one fragment; each point's normal was estimated from its "
+                                              "own scan's points")),
+             qPrintable(note));
 }
 
 void ScanImporterTest::cancelLeavesNothing()

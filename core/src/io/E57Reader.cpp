@@ -26,7 +26,7 @@ std::pair<double, double> rangeOf(std::optional<std::pair<double, double>> limit
 } // namespace
 
 E57Reader::E57Reader(fs::path path, E57PagedFile file, E57FileHeader header, std::vector<E57Scan> scans,
-                     std::vector<ScanPlan> plans)
+                     std::vector<ScanPlan> plans, bool scanColumn)
     : PointReader(std::move(path), file.size()),
       m_file(std::move(file)),
       m_fileHeader(header),
@@ -38,7 +38,15 @@ E57Reader::E57Reader(fs::path path, E57PagedFile file, E57FileHeader header, std
     for (const ScanPlan& p : m_plans) declared += m_scanList[p.scan].recordCount;
     m_header.declaredPoints = declared;
     m_header.schema.hasColors = !m_plans.empty() && m_plans.front().color >= 0;
-    if (!m_plans.empty() && m_plans.front().intensity >= 0) m_header.schema.scalarNames.push_back("intensity");
+    auto& scalars = m_header.schema.scalarNames;
+    if (!m_plans.empty() && m_plans.front().intensity >= 0) {
+        m_intensityColumn = int(scalars.size());
+        scalars.push_back("intensity");
+    }
+    if (scanColumn) {
+        m_scanColumn = int(scalars.size());
+        scalars.push_back(kScanIndexColumn);
+    }
     for (const E57Scan& s : m_scanList) m_scans.push_back(s.info);
 }
 
@@ -137,8 +145,9 @@ Result<std::unique_ptr<PointReader>> E57Reader::open(const fs::path& path, const
         if (!allIntensity) p.intensity = -1;
     }
 
+    const bool scanColumn = plans.size() >= 2;
     std::unique_ptr<E57Reader> reader(
-        new E57Reader(path, std::move(file).value(), *header, std::move(scans).value(), std::move(plans)));
+        new E57Reader(path, std::move(file).value(), *header, std::move(scans).value(), std::move(plans), scanColumn));
     // Every scan's section header is checked now, so that a damaged one is refused before any point.
     for (const ScanPlan& p : reader->m_plans) {
         auto vector = E57VectorReader::open(reader->m_file, reader->m_scanList[p.scan], p.fields, reader->label(p.scan));
@@ -204,7 +213,8 @@ void E57Reader::convert(const ScanPlan& plan, std::size_t n, PointBatch& batch)
                 batch.colors.push_back(static_cast<std::uint8_t>(std::clamp(std::lround(v), 0L, 255L)));
             }
         if (plan.intensity >= 0)
-            batch.scalars[0].push_back((c[plan.intensity][i] - plan.intensityMin) / plan.intensityRange);
+            batch.scalars[m_intensityColumn].push_back((c[plan.intensity][i] - plan.intensityMin) / plan.intensityRange);
+        if (m_scanColumn >= 0) batch.scalars[m_scanColumn].push_back(double(plan.scan));
     }
 }
 

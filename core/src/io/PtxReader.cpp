@@ -16,6 +16,7 @@ PtxReader::PtxReader(fs::path path, BufferedFile file, std::optional<std::size_t
 {
     m_header.format = "ptx";
     m_header.schema.scalarNames = {"intensity"};
+    if (!scan) m_header.schema.scalarNames.push_back(kScanIndexColumn); // column 1
 }
 
 Error PtxReader::lineError(ErrorCode code, const std::string& problem) const
@@ -154,6 +155,7 @@ Result<std::size_t> PtxReader::read(PointBatch& batch, std::size_t maxPoints)
         }
         batch.positions.insert(batch.positions.end(), {x, y, z});
         batch.scalars[0].push_back(v[3]);
+        if (!m_wanted) batch.scalars[1].push_back(double(m_scans.size() - 1));
     }
     m_pointsRead += batch.size();
     return batch.size();

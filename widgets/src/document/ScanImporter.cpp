@@ -26,6 +26,7 @@ struct ImportResult {
     SceneDocument::OctreePtr octree;
     std::optional<core::Error> error;
     std::uint64_t skippedPoints = 0; ///< non-finite points the reader dropped
+    std::uint32_t scans = 0;         ///< scans whose points' normals were estimated apart (0: one cloud)
 };
 
 bool isPoct(const QString& path)
@@ -111,6 +112,7 @@ int ScanImporter::importFiles(const QStringList& paths)
                         return;
                     }
                     result.skippedPoints = built->skippedPoints;
+                    result.scans = built->normalsEstimated ? built->normalScans : 0;
                 }
                 auto opened = core::octree::PackedOctree::open(direct ? in : out);
                 if (progress.isCancelRequested()) return; // the GUI side removes the file
@@ -185,6 +187,10 @@ void ScanImporter::importEnded(const QString& input, const QString& output, cons
         if (result.skippedPoints > 0) // said, as stylos-cli says it: no point dropped silently
             Q_EMIT importNote(id, tr("%1: %Ln point(s) with NaN or infinite coordinates skipped", nullptr,
                                      int(std::min<std::uint64_t>(result.skippedPoints, std::uint64_t(INT_MAX))))
+                                      .arg(QFileInfo(input).fileName()));
+        if (result.scans >= 2) // an E57 or PTX of several scans, or a cloud with a scan column: not merged unsaid
+            Q_EMIT importNote(id, tr("%1 holds %Ln scan(s), merged into one fragment; each point's normal was "
+                                     "estimated from its own scan's points", nullptr, int(result.scans))
                                       .arg(QFileInfo(input).fileName()));
     }
     if (m_pending.isEmpty()) Q_EMIT importsFinished(std::exchange(m_errors, {}));

@@ -10,7 +10,8 @@
  *        2 (invalid) are skipped and counted in pointsMissing(); NaN or infinite ones in pointsSkipped().
  *        Attributes, kept when every scan read has them: colour (colorRed/Green/Blue mapped from the
  *        scan's colorLimits, else the fields' ranges, to 0–255) and the scalar "intensity" (mapped from
- *        intensityLimits, else the field's range, to 0–1). Other fields are not decoded.
+ *        intensityLimits, else the field's range, to 0–1). Other fields are not decoded. When two scans or
+ *        more are read, the points also carry kScanIndexColumn, their scan's number in the file.
  *        Only the bitpack codec exists in E57 1.0; String prototype fields are refused.
  *
  *        Failures at open: E57FileHeader::parse(), parseE57Xml(), a page whose CRC-32C fails (every page
@@ -54,7 +55,7 @@ private:
     };
 
     E57Reader(std::filesystem::path path, E57PagedFile file, E57FileHeader header, std::vector<E57Scan> scans,
-              std::vector<ScanPlan> plans);
+              std::vector<ScanPlan> plans, bool scanColumn);
     std::string label(std::size_t scan) const;
     /** Converts @p n decoded records of the current scan, appending the kept points to @p batch. */
     void convert(const ScanPlan& plan, std::size_t n, PointBatch& batch);
@@ -63,6 +64,8 @@ private:
     E57FileHeader m_fileHeader;
     std::vector<E57Scan> m_scanList;
     std::vector<ScanPlan> m_plans;     ///< the scans to read, in file order
+    int m_intensityColumn = -1;        ///< scalar column of "intensity", or -1
+    int m_scanColumn = -1;             ///< scalar column of kScanIndexColumn, or -1 (one scan read)
     std::size_t m_current = 0;         ///< index in m_plans
     std::optional<E57VectorReader> m_vector;
     std::vector<std::vector<double>> m_columns;

@@ -18,6 +18,14 @@
 namespace stylos::core::io {
 
 /**
+ * @brief The scalar column that a multi-scan reader adds when it may read several scans (E57: two or
+ *        more read; PTX: no ReadOptions::scan): each point's scan, numbered from 0 in file order as scans() lists them, so
+ *        that what follows the reader can keep the scans apart (normals::estimateNormalsForFile takes
+ *        each point's neighbours from its own scan, as for a PLY's scan column).
+ */
+inline constexpr const char* kScanIndexColumn = "scan_index";
+
+/**
  * @brief One scan of a file that holds several (an E57 `data3D` child, a PTX scan): its name and the pose
  *        the reader applies to its points (p' = R p + t, in the file's frame and units).
  */

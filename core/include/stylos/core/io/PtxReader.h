@@ -8,7 +8,9 @@
  *        [x' y' z' 1] = [x y z 1] · M (the translation is M's last row). Points at (0, 0, 0) before the
  *        transform are the scanner's "no return" and are skipped and counted in pointsMissing().
  *        Attributes: the scalar "intensity" (as written, usually 0–1) and, when the first point line has
- *        seven values, colour (0–255). ReadOptions::scan keeps one scan (the others are skipped unparsed).
+ *        seven values, colour (0–255). ReadOptions::scan keeps one scan (the others are skipped unparsed);
+ *        without it the points also carry kScanIndexColumn, their scan's number in the file (a PTX file's
+ *        scans are known only as it is read, so even a file of one scan has the column, all 0).
  *        declaredPoints (Σ rows × columns) and scans() are complete once the file is read.
  *
  *        Failures: Malformed "FILE: line N: ..." for a header line that is not the expected numbers, a
