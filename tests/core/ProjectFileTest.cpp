@@ -46,6 +46,7 @@ Scene sampleScene(const fs::path& folder)
     piece.colour = {1, 2, 3};
     scene.add(piece);
     scene.remove(scene.add(Fragment{}));  // nextId 4 while the largest id is 2
+    EXPECT_TRUE(scene.setDockingDrum(1)); // what fragments outside an assembly dock against
     // An assembly holding the piece, docked against the drum; a removed one leaves nextAssemblyId at 3.
     Assembly assembly;
     assembly.name = "Drum 1 reconstruction";
@@ -75,6 +76,7 @@ TEST(ProjectFileTest, SaveThenLoadGivesAnEqualSceneAndTheSameBytes)
     EXPECT_TRUE(loaded->problems.empty());
     EXPECT_EQ(loaded->scene, scene);
     EXPECT_EQ(loaded->scene.nextId(), 4u);
+    EXPECT_EQ(loaded->scene.dockingDrum(), 1u); // a reopened project unrolls its fragments about the same axis
     EXPECT_EQ(loaded->scene.fragments()[0].pose.rowMajor(), scene.fragments()[0].pose.rowMajor());
 
     const std::string first = contents(path);
@@ -93,6 +95,7 @@ TEST(ProjectFileTest, TheFileHoldsFormatVersionAndRelativePaths)
     EXPECT_EQ(json["format"], "stylos-project");
     EXPECT_EQ(json["version"], 2);
     EXPECT_EQ(json["nextId"], 4);
+    EXPECT_EQ(json["dockingDrum"], 1);
     const auto& drum = json["fragments"][0];
     EXPECT_EQ(drum["octree"], "octrees/drum 1.poct");
     EXPECT_EQ(drum["source"], "../scans/drum1.ply");
@@ -223,6 +226,8 @@ TEST(ProjectFileTest, EveryBadKeyIsNamed)
          "fragments[0].assembly: no assembly has id 5"},
         {"assembly drum", [](J& j) { j["version"] = 2; j["assemblies"] = J::parse(R"([{"id": 1, "name": "r", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1], "drum": 9}])"); },
          ErrorCode::Malformed, "assemblies[0].drum: no fragment has id 9"},
+        {"docking drum", [](J& j) { j["dockingDrum"] = 7; }, ErrorCode::Malformed, "dockingDrum: no fragment has id 7"},
+        {"docking drum type", [](J& j) { j["dockingDrum"] = "1"; }, ErrorCode::Malformed, "dockingDrum: is not a fragment id"},
         {"assembly pose", [](J& j) { j["version"] = 2; j["assemblies"] = J::parse(R"([{"id": 1, "name": "r", "pose": [2,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])"); },
          ErrorCode::Malformed, "assemblies[0].pose: is not a rigid transform"},
         {"duplicate assembly", [](J& j) { j["version"] = 2; j["assemblies"] = J::parse(R"([{"id": 1, "name": "r", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}, {"id": 1, "name": "s", "pose": [1,0,0,0, 0,1,0,0, 0,0,1,0, 0,0,0,1]}])"); },
@@ -353,6 +358,7 @@ TEST(ProjectFileTest, OptionalKeysTakeTheirDefaults)
     EXPECT_TRUE(f.guides.empty());
     EXPECT_EQ(f.annotationLayer, "");
     EXPECT_EQ(result->scene.nextId(), 2u);
+    EXPECT_EQ(result->scene.dockingDrum(), NoFragment); // no "dockingDrum": none
     EXPECT_EQ(result->scene.legend(), annotation::Legend::defaults()); // no "legend": the default vocabulary
     // /projects/a.poct does not exist: reported, still loaded.
     EXPECT_TRUE(f.octreeMissing);

@@ -1,5 +1,6 @@
 // Scene and Fragment: stable ids never reused, order, insert/take round trips; colours and guide kinds.
 #include "stylos/core/scene/Scene.h"
+#include "stylos/core/scene/SceneEigen.h"
 
 #include <gtest/gtest.h>
 
@@ -191,6 +192,35 @@ TEST(SceneTest, AssembliesHoldFragmentsWhosePosesAreRelativeToThem)
     EXPECT_EQ(scene.addAssembly(Assembly{}), 2u); // ids never reused
     EXPECT_FALSE(scene.setNextAssemblyId(2));
     EXPECT_TRUE(scene.setNextAssemblyId(5));
+}
+
+TEST(SceneTest, TheDockingDrumIsAFragmentOfTheSceneAndAnAssemblysDrumComesFirst)
+{
+    Scene scene;
+    const FragmentId drum = scene.add(named("drum")), other = scene.add(named("other")), piece = scene.add(named("piece"));
+    EXPECT_EQ(scene.dockingDrum(), NoFragment);
+    EXPECT_FALSE(scene.setDockingDrum(99)); // not in the scene: refused, nothing changed
+    EXPECT_EQ(scene.dockingDrum(), NoFragment);
+    ASSERT_TRUE(scene.setDockingDrum(drum));
+    EXPECT_EQ(drumFor(scene, piece), drum);
+    // In an assembly with a drum, the assembly's drum; in one without, the docking drum.
+    Assembly withDrum;
+    withDrum.drum = other;
+    const AssemblyId a = scene.addAssembly(withDrum);
+    ASSERT_TRUE(scene.moveToAssembly(piece, a));
+    EXPECT_EQ(drumFor(scene, piece), other);
+    scene.findAssembly(a)->drum = NoFragment;
+    EXPECT_EQ(drumFor(scene, piece), drum);
+    EXPECT_EQ(drumFor(scene, 99), drum);
+    // Taking the drum out unsets it; taking another fragment does not; clear() unsets it.
+    ASSERT_TRUE(scene.remove(other));
+    EXPECT_EQ(scene.dockingDrum(), drum);
+    ASSERT_TRUE(scene.remove(drum));
+    EXPECT_EQ(scene.dockingDrum(), NoFragment);
+    EXPECT_EQ(drumFor(scene, piece), NoFragment);
+    ASSERT_TRUE(scene.setDockingDrum(piece));
+    scene.clear();
+    EXPECT_EQ(scene.dockingDrum(), NoFragment);
 }
 
 TEST(SceneTest, AFragmentNamingAMissingAssemblyIsInsertedAtTheTop)

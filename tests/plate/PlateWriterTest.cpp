@@ -522,3 +522,52 @@ TEST(PlateSources, AFlutedDrumUnrollsAtItsGuidesRadius)
     EXPECT_NEAR(plate->imageMm[0], 2 * std::numbers::pi * guides->radius * 1000 / 10, 1e-6);
     EXPECT_NE(plate->imageMm[0], unguided->imageMm[0]);
 }
+
+// A piece docked against the drum without an assembly (Fragment › Dock against this drum, saved with the project):
+// its plate unrolls it about the drum's axis guide at the drum guides' radius, as the dock does. Before, the saved
+// project did not hold the docking drum and the piece's plate fitted an axis of its own.
+TEST(PlateSources, APieceUnrollsAboutTheSavedDockingDrumsAxis)
+{
+    test::TempDir dir;
+    auto o = test::coarse(0.02, 3);
+    const auto ply = dir / "drum.ply";
+    test::generate(core::synth::SyntheticKind::Drum, o, ply);
+    core::octree::BuildOptions build;
+    build.depth = 6;
+    const fs::path octree = dir / "drum.poct";
+    ASSERT_TRUE(core::octree::buildOctreeFile(ply, octree, build).ok());
+
+    core::scene::Scene scene;
+    core::scene::Fragment drum;
+    drum.name = "drum";
+    drum.octreePath = octree;
+    drum.guides.push_back({"axis", core::scene::GuideKind::Axis, {0.1, 0.2, 0.3}, {0, 0, 1}});
+    for (int k = 0; k < 3; ++k) // three flute lines at least: the dock fits the guides' radius with their count
+        drum.guides.push_back({"flute", core::scene::GuideKind::Groove, {0.6, 0.2 + 0.1 * k, 0.3}, {0, 0, 1}});
+    const auto drumId = scene.add(drum);
+    core::scene::Fragment piece;
+    piece.name = "piece";
+    piece.octreePath = octree;
+    piece.pose = core::scene::Pose::fromTranslationAngles({{1.0, 0.0, 0.0}, {0.0, 0.0, 0.0}});
+    scene.add(piece);
+    const fs::path project = dir / "docked.stylos";
+    ASSERT_TRUE(core::scene::ProjectFile::save(scene, project).ok());
+    auto alone = cp::readPlateSources(project);
+    ASSERT_TRUE(alone.ok()) << alone.error().message;
+    EXPECT_FALSE(alone->fragments[1].unrolling); // no drum: an axis of its own
+    EXPECT_FALSE(alone->fragments[1].drumGuides);
+
+    ASSERT_TRUE(scene.setDockingDrum(drumId));
+    ASSERT_TRUE(core::scene::ProjectFile::save(scene, project).ok());
+    auto docked = cp::readPlateSources(project);
+    ASSERT_TRUE(docked.ok()) << docked.error().message;
+    const auto& unrolling = docked->fragments[1].unrolling;
+    ASSERT_TRUE(unrolling);
+    // The drum's axis in the piece's frame: the piece sits 1 m along x from the drum.
+    EXPECT_NEAR(unrolling->axis->point.x(), 0.1 - 1.0, 1e-12);
+    EXPECT_NEAR(unrolling->axis->point.y(), 0.2, 1e-12);
+    EXPECT_NEAR(unrolling->axis->direction.z(), 1.0, 1e-12);
+    ASSERT_TRUE(docked->fragments[1].drumGuides);
+    EXPECT_EQ(docked->fragments[1].drumGuides->octree, octree);
+    EXPECT_EQ(docked->fragments[1].drumGuides->options.flutes, 3);
+}

@@ -39,6 +39,7 @@ private Q_SLOTS:
     void undoingARemovalDuringLoadingReopensTheOctree();
     void assembliesMoveTheirFragmentsAndUndoExactly();
     void anAssemblySurvivesSaveAndReopen();
+    void theDockingDrumSurvivesSaveAndReopen();
     void savingCopiesTheOctreesIntoTheFolderSoItTravels();
 
 private:
@@ -475,6 +476,48 @@ void SceneDocumentTest::anAssemblySurvivesSaveAndReopen()
     QCOMPARE(reopened.scene(), doc.scene());
     QCOMPARE(reopened.worldPose(a), doc.worldPose(a));
     QCOMPARE(reopened.drumFor(a), drum);
+}
+
+void SceneDocumentTest::theDockingDrumSurvivesSaveAndReopen()
+{
+    // Docked against a drum without an assembly: the drum whose axis the fragment unrolls about was not saved, so the
+    // reopened project unrolled the fragment about an axis of its own (other radius, turned upside down).
+    TaskManager tasks;
+    SceneDocument doc(tasks);
+    const FragmentId drum = doc.addFragment(fragment("drum"), m_octree);
+    const FragmentId piece = doc.addFragment(fragment("piece"), m_octree);
+    const QString path = m_dir.filePath("docking-drum.stylos");
+    QString error;
+    QVERIFY2(doc.saveAs(path, &error), qPrintable(error));
+    QVERIFY(!doc.isModified());
+    QSignalSpy modified(&doc, &SceneDocument::modifiedChanged);
+    QVERIFY(doc.setDockingDrum(drum));
+    QVERIFY(doc.isModified()); // the file no longer holds it: saving is asked for
+    QCOMPARE(modified.size(), 1);
+    QCOMPARE(modified.at(0).at(0).toBool(), true);
+    QVERIFY2(doc.save(&error), qPrintable(error));
+    QVERIFY(!doc.isModified());
+
+    SceneDocument reopened(tasks);
+    QSignalSpy drumChanged(&reopened, &SceneDocument::dockingDrumChanged);
+    QVERIFY2(reopened.open(path, &error), qPrintable(error));
+    QCOMPARE(reopened.dockingDrum(), drum);
+    QCOMPARE(reopened.drumFor(piece), drum);
+    QVERIFY(!drumChanged.isEmpty());
+    QCOMPARE(drumChanged.last().at(0).toULongLong(), quint64(drum));
+    QVERIFY(!reopened.isModified());
+
+    // Removing the drum unsets it, and undoing the removal does not bring the setting back: still modified.
+    QVERIFY(reopened.removeFragment(drum));
+    QCOMPARE(reopened.dockingDrum(), stylos::core::scene::NoFragment);
+    reopened.undoStack()->undo();
+    QVERIFY(reopened.fragment(drum));
+    QCOMPARE(reopened.dockingDrum(), stylos::core::scene::NoFragment);
+    QVERIFY(reopened.isModified());
+    // A new project has none.
+    QVERIFY(doc.setDockingDrum(drum));
+    doc.newProject();
+    QCOMPARE(doc.dockingDrum(), stylos::core::scene::NoFragment);
 }
 
 

@@ -234,8 +234,7 @@ Result<PlateSources> readPlateSources(const fs::path& path)
         out.legend = s.legend();
         for (const scene::Fragment& f : s.fragments()) {
             out.fragments.push_back({f.name, f.octreePath, true, f.octreeMissing, s.worldPose(f.id), f.visible, {}, {}, {}});
-            const scene::Assembly* assembly = s.findAssembly(f.assembly);
-            unrollAsTheDock(out.fragments.back(), s, f.id, assembly ? assembly->drum : scene::NoFragment);
+            unrollAsTheDock(out.fragments.back(), s, f.id, scene::drumFor(s, f.id)); // the saved docking drum too
         }
         if (out.fragments.empty()) return Error::at(ErrorCode::InvalidArgument, path.string(), {}, "the project has no fragment");
         return out;

@@ -148,7 +148,8 @@ Result<LoadedProject> SceneReader::read(const json& root)
     if (!fragments->is_array()) return bad("fragments", "is not an array");
 
     LoadedProject project;
-    noteUnknown(root, "", {"format", "version", "nextId", "nextAssemblyId", "assemblies", "fragments", "legend", "plate"});
+    noteUnknown(root, "", {"format", "version", "nextId", "nextAssemblyId", "dockingDrum", "assemblies", "fragments", "legend",
+                        "plate"});
     // Version 2: the assemblies, before the fragments that refer to them.
     if (const json* assemblies = versionNumber >= 2 ? member(root, "assemblies") : nullptr) {
         if (!assemblies->is_array()) return bad("assemblies", "is not an array");
@@ -185,6 +186,11 @@ Result<LoadedProject> SceneReader::read(const json& root)
         const FragmentId drum = project.scene.assemblies()[i].drum;
         if (drum != NoFragment && !project.scene.find(drum))
             return bad("assemblies[" + std::to_string(i) + "].drum", "no fragment has id " + std::to_string(drum));
+    }
+    if (const json* drum = member(root, "dockingDrum")) {
+        if (!drum->is_number_unsigned()) return bad("dockingDrum", "is not a fragment id");
+        if (!project.scene.setDockingDrum(drum->get<FragmentId>()))
+            return bad("dockingDrum", "no fragment has id " + std::to_string(drum->get<FragmentId>()));
     }
     if (const json* nextAssemblyId = versionNumber >= 2 ? member(root, "nextAssemblyId") : nullptr) {
         if (!nextAssemblyId->is_number_unsigned() || !project.scene.setNextAssemblyId(nextAssemblyId->get<AssemblyId>()))
@@ -357,6 +363,7 @@ std::string ProjectFile::toJson(const Scene& scene, const std::filesystem::path&
     root["version"] = ProjectFormatVersion;
     root["nextId"] = scene.nextId();
     root["nextAssemblyId"] = scene.nextAssemblyId();
+    root["dockingDrum"] = scene.dockingDrum();
     OrderedJson assemblies = OrderedJson::array();
     for (const Assembly& a : scene.assemblies()) assemblies.push_back(assemblyJson(a));
     root["assemblies"] = std::move(assemblies);

@@ -33,7 +33,15 @@ std::optional<Fragment> Scene::take(FragmentId id)
     auto it = m_fragments.begin() + static_cast<std::ptrdiff_t>(*at);
     Fragment fragment = std::move(*it);
     m_fragments.erase(it);
+    if (id == m_dockingDrum) m_dockingDrum = NoFragment;
     return fragment;
+}
+
+bool Scene::setDockingDrum(FragmentId id)
+{
+    if (id != NoFragment && !find(id)) return false;
+    m_dockingDrum = id;
+    return true;
 }
 
 const Fragment* Scene::find(FragmentId id) const
@@ -156,6 +164,13 @@ Pose Scene::localPose(FragmentId id, const Pose& world) const
     const Fragment* f = find(id);
     const Assembly* a = f ? findAssembly(f->assembly) : nullptr;
     return a ? a->pose.rigidInverse() * world : world;
+}
+
+FragmentId drumFor(const Scene& scene, FragmentId fragment)
+{
+    const Fragment* f = scene.find(fragment);
+    const Assembly* a = f ? scene.findAssembly(f->assembly) : nullptr;
+    return a && a->drum != NoFragment ? a->drum : scene.dockingDrum();
 }
 
 FragmentId unrollAxisOwner(const Scene& scene, FragmentId fragment, FragmentId drum)

@@ -3,6 +3,7 @@
 #include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/octree/PackedOctree.h"
 #include "stylos/core/scene/ProjectFile.h"
+#include "stylos/core/scene/SceneEigen.h"
 #include "document/commands/AddFragmentCommand.h"
 #include "document/commands/EditLabelsCommand.h"
 #include "document/commands/SetLegendCommand.h"
@@ -277,18 +278,16 @@ bool SceneDocument::setFragmentGuides(FragmentId id, std::vector<core::scene::Gu
 
 bool SceneDocument::setDockingDrum(FragmentId id)
 {
-    if (id != core::scene::NoFragment && !m_scene.find(id)) return false;
-    if (id == m_dockingDrum) return true;
-    m_dockingDrum = id;
+    if (id == m_scene.dockingDrum()) return true;
+    if (!m_scene.setDockingDrum(id)) return false;
+    m_undo->resetClean(); // saved with the project: the file no longer holds what the scene is
     Q_EMIT dockingDrumChanged(id);
     return true;
 }
 
 core::scene::FragmentId SceneDocument::drumFor(FragmentId id) const
 {
-    const Fragment* f = m_scene.find(id);
-    const core::scene::Assembly* a = f ? m_scene.findAssembly(f->assembly) : nullptr;
-    return a && a->drum != core::scene::NoFragment ? a->drum : m_dockingDrum;
+    return core::scene::drumFor(m_scene, id);
 }
 
 bool SceneDocument::isShown(FragmentId id) const
@@ -648,7 +647,8 @@ std::pair<Fragment, SceneDocument::OctreePtr> SceneDocument::takeFragment(Fragme
 {
     if (!m_scene.find(id)) return {};
     Q_EMIT fragmentAboutToBeRemoved(id);
-    Fragment fragment = m_scene.take(id).value();
+    const bool wasDrum = id == m_scene.dockingDrum();
+    Fragment fragment = m_scene.take(id).value(); // unsets the docking drum when it is this fragment
     m_developpees.erase(id);
     OctreePtr octree;
     if (const auto it = m_octrees.find(id); it != m_octrees.end()) {
@@ -662,7 +662,10 @@ std::pair<Fragment, SceneDocument::OctreePtr> SceneDocument::takeFragment(Fragme
         loadDropped = true;
     }
     Q_EMIT fragmentRemoved(id);
-    if (id == m_dockingDrum) setDockingDrum(core::scene::NoFragment);
+    if (wasDrum) {
+        m_undo->resetClean(); // undoing the removal brings the fragment back, not the docking drum
+        Q_EMIT dockingDrumChanged(core::scene::NoFragment);
+    }
     if (loadDropped && m_loads.empty()) Q_EMIT loadingFinished(std::exchange(m_loadErrors, {}));
     return {std::move(fragment), std::move(octree)};
 }
@@ -678,7 +681,7 @@ void SceneDocument::resetScene(core::scene::Scene scene)
     m_labels->clear();
     Q_EMIT sceneReset();
     Q_EMIT legendChanged();
-    setDockingDrum(core::scene::NoFragment);
+    Q_EMIT dockingDrumChanged(m_scene.dockingDrum()); // the project's, or none
 }
 
 void SceneDocument::setProjectPath(const QString& path)

@@ -2,7 +2,7 @@
 /** @file
  * @brief The project file (`.stylos`): the scene as JSON,
  *
- *     {"format": "stylos-project", "version": 2, "nextId": 3, "nextAssemblyId": 2,
+ *     {"format": "stylos-project", "version": 2, "nextId": 3, "nextAssemblyId": 2, "dockingDrum": 2,
  *      "assemblies": [{"id": 1, "name": "Drum 1 reconstruction", "pose": [16 numbers, row-major],
  *                      "drum": 2, "visible": true}],
  *      "fragments": [{"id": 1, "name": "Drum 1", "octree": "drum1.poct", "source": "scans/drum1.ply",
@@ -13,7 +13,8 @@
  *      "legend": {"format": "stylos-legend", "version": 1, "layers": {…}}}
  *
  * A fragment's "pose" is relative to its "assembly" (0 or absent: the scene's top level); an assembly's
- * "drum" is the fragment whose guides its members dock against (0: none). Version 1 files (no
+ * "drum" is the fragment whose guides its members dock against (0: none); "dockingDrum" the one that fragments
+ * outside such an assembly dock against (Scene::dockingDrum, 0: none). Version 1 files (no
  * assemblies, every fragment at the top level) are still read; files are written as version 2.
  *
  * Paths are stored relative to the project file's folder ('/' separators; absolute only when no relative
@@ -21,7 +22,7 @@
  * Doubles are written with enough digits to read back bit for bit: save then load gives an equal Scene.
  * Saving is atomic (util/AtomicTextFile.h). Every key listed is written, even when empty; unknown keys
  * are ignored (a later writer may add some). Optional on load (defaults in brackets): "nextId"
- * [above the largest id], "nextAssemblyId" [above the largest], "assemblies" [[]], "source" [""], "colour"
+ * [above the largest id], "nextAssemblyId" [above the largest], "dockingDrum" [0], "assemblies" [[]], "source" [""], "colour"
  * [#c8c8c8], "visible" [true], "guides" [[]], "annotations" [""], "assembly" [0], "up" ["+Z"], "unit" ["m"], "offset" [[0, 0, 0]] (the
  * fragment's import frame, io/ImportFrame.h: a record of how its octree was built from its source; an
  * "up" or "unit" outside the lists is Malformed, naming the value and the choices), an assembly's "drum"
@@ -32,7 +33,7 @@
  *
  * Load failures name the file and the key: NotFound, Unreadable, Empty; Malformed (not JSON: "line L,
  * column C"; a key of the wrong type or out of range: its path, e.g. "fragments[1].pose"; a duplicate
- * id; a fragment's "assembly" or an assembly's "drum" that names nothing); UnknownFormat (no "format":
+ * id; a fragment's "assembly", an assembly's "drum" or the "dockingDrum" that names nothing); UnknownFormat (no "format":
  * "stylos-project"); Unsupported (a "version" other than 1 or 2).
  * A fragment whose octree file does not exist is not a failure: the project loads with that fragment's
  * octreeMissing set and one NotFound problem naming the octree file.

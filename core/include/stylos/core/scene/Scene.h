@@ -50,11 +50,13 @@ public:
     std::optional<Fragment> take(FragmentId id);
     /** @brief Removes the fragment; false when there is none with @p id. */
     bool remove(FragmentId id) { return take(id).has_value(); }
-    /** @brief Removes every fragment and assembly; the next ids are kept (ids are never reused). */
+    /** @brief Removes every fragment and assembly (the docking drum too); the next ids are kept (ids are never
+     *  reused). */
     void clear()
     {
         m_fragments.clear();
         m_assemblies.clear();
+        m_dockingDrum = NoFragment;
     }
 
     /** @brief The fragment with @p id, or nullptr. Pointers are invalidated by insert and take. */
@@ -91,6 +93,16 @@ public:
     /** @brief The pose, relative to fragment @p id's assembly, that puts it at @p world in the scene. */
     Pose localPose(FragmentId id, const Pose& world) const;
 
+    /**
+     * @brief The drum that fragments outside an assembly with a drum dock against (Fragment › Dock against this
+     *        drum): its guides place them, and a fragment without an axis guide of its own unrolls about its
+     *        axis (unrollAxisOwner). NoFragment when none; taking that fragment out unsets it. Saved in the
+     *        project, so that a reopened project unrolls and plates its fragments as they were painted.
+     */
+    FragmentId dockingDrum() const { return m_dockingDrum; }
+    /** @brief Sets the docking drum (NoFragment: none); false, nothing changed, for an id not in the scene. */
+    bool setDockingDrum(FragmentId id);
+
     /** @brief The project's annotation legend (its classes, colours and hatches); the default vocabulary
      *  until changed. clear() keeps it. */
     const annotation::Legend& legend() const { return m_legend; }
@@ -115,6 +127,7 @@ private:
     std::vector<Assembly> m_assemblies;
     FragmentId m_nextId = 1;
     AssemblyId m_nextAssemblyId = 1;
+    FragmentId m_dockingDrum = NoFragment;
     annotation::Legend m_legend = annotation::Legend::defaults();
     std::optional<plate::PlateSpec> m_plate;
     std::string m_unreadPlate;

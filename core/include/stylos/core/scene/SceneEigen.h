@@ -56,6 +56,9 @@ inline std::optional<GuideLine> firstGuide(const Fragment& fragment, GuideKind k
     return std::nullopt;
 }
 
+/** @brief The drum @p fragment docks against: its assembly's drum, else the scene's docking drum (NoFragment: none). */
+FragmentId drumFor(const Scene& scene, FragmentId fragment);
+
 /** @brief The fragment whose axis guide @p fragment unrolls about: itself when it has one, else @p drum (another
  *         fragment of @p scene) when that has one; NoFragment otherwise. */
 FragmentId unrollAxisOwner(const Scene& scene, FragmentId fragment, FragmentId drum);

@@ -149,13 +149,15 @@ public:
     bool setAssemblyDrum(AssemblyId id, FragmentId drum);
     bool setAssemblyVisible(AssemblyId id, bool visible);
 
-    // The docking drum: the fragment whose guides the gizmo's Drum frame follows. Runtime only (not saved, not
-    // undoable), cleared when that fragment is removed or the project replaced; assemblies will replace it.
+    // The docking drum (core::scene::Scene::dockingDrum): the fragment whose guides the gizmo's Drum frame follows
+    // and about whose axis a fragment without its own unrolls. Saved in the project, not undoable (a setting, as a
+    // view's): choosing another marks the project modified. Cleared when that fragment is removed.
     /** @brief The docking drum; NoFragment when none. */
-    FragmentId dockingDrum() const { return m_dockingDrum; }
+    FragmentId dockingDrum() const { return m_scene.dockingDrum(); }
     /** @brief The drum fragment @p id docks against: its assembly's drum when it has one, else the docking drum. */
     FragmentId drumFor(FragmentId id) const;
-    /** @brief Sets the docking drum (NoFragment: none); false for an unknown fragment. Emits dockingDrumChanged(). */
+    /** @brief Sets the docking drum (NoFragment: none); false for an unknown fragment. Emits dockingDrumChanged() and,
+     *  when it changed, modifiedChanged(true) (QUndoStack::resetClean: no undo step returns to the saved state). */
     bool setDockingDrum(FragmentId id);
 
     // Annotation: the legend (part of the scene, saved in the project file) and the labels of each fragment's
@@ -328,7 +330,6 @@ private:
     QStringList m_importedOctrees;                 ///< built by imports (or copied by saves) in this session
     QStringList m_reservedOctrees;                 ///< being built by imports (reserveOctreePath())
     std::map<QString, QStringList> m_projectFiles; ///< per project file saved or opened: the octrees it references
-    FragmentId m_dockingDrum = core::scene::NoFragment;
     LabelStore* m_labels;
     quint64 m_lastStroke = 0;
 };
