@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 using namespace stylos::core;
@@ -212,4 +213,45 @@ TEST(ShadingHoleFilling, EmptyFieldAndFullyEmptyField)
     EXPECT_EQ(report->holes, 1u);
     EXPECT_EQ(report->borderPixels, 24u);
     EXPECT_EQ(blank.count(PixelState::Empty), 24u);
+}
+
+// The gaps between samples at a pixel near the spacing: one-pixel lines joined into a network larger than the
+// largest hole filled (and reaching the border), which fillHoles() leaves and which read as cracks, are filled
+// inside the footprint; a region wider than the footprint's closing (a broken face) stays empty.
+TEST(ShadingHoleFilling, GapsInsideTheFootprintAreFilledWhateverTheirExtent)
+{
+    auto field = measuredField(70, 40);
+    const HeightField original = field;
+    // A grid of one-pixel gaps every 4 pixels over columns 2 … 42 and rows 2 … 38, one line reaching the top border.
+    for (int r = 2; r <= 38; ++r)
+        for (int c = 2; c <= 42; ++c)
+            if (r % 4 == 2 || c % 4 == 2) field.clear(c, r);
+    for (int r = 0; r < 2; ++r) field.clear(10, r);
+    clearRect(field, 48, 8, 18, 18); // a broken region: 18 × 18, more than the 256 pixels fillHoles() fills
+    const auto small = fillHoles(field);
+    ASSERT_TRUE(small.ok());
+    EXPECT_EQ(small->filledPixels, 0u); // the network is one hole of > 256 pixels, and touches the border
+    const int holes = int(std::count(field.states().begin(), field.states().end(), PixelState::Empty));
+
+    const auto gaps = fillFootprintGaps(field, 1);
+    ASSERT_TRUE(gaps.ok()) << gaps.error().message;
+    EXPECT_EQ(gaps->holes, 2u);
+    EXPECT_EQ(gaps->filledHoles, 1u);
+    EXPECT_EQ(gaps->largeHolePixels, 324u);
+    EXPECT_EQ(gaps->filledPixels, std::size_t(holes - 324));
+    for (int r = 8; r < 26; ++r)
+        for (int c = 48; c < 66; ++c) EXPECT_EQ(field.stateAt(c, r), PixelState::Empty) << c << "," << r;
+    // A gap pixel between measured ones has their exact average: (10, 0) lies between (9, 0) and (11, 0) and over
+    // (9, 1)…(11, 1) of which (10, 1) is a gap too (depth 2 is filled after it): first round, depth 1.
+    EXPECT_EQ(field.stateAt(10, 0), PixelState::Filled);
+    EXPECT_EQ(field.heightAt(10, 0), float((81.0 + 121.0 + (81.0 + 7) + (121.0 + 7)) / 4.0));
+    // A crossing of two gap lines (6, 6): its 8 neighbours are gaps but the diagonals (5, 5), (7, 5), (5, 7), (7, 7).
+    EXPECT_EQ(field.stateAt(6, 6), PixelState::Filled);
+    EXPECT_EQ(field.heightAt(6, 6), float((double(original.heightAt(5, 5)) + original.heightAt(7, 5) +
+                                           original.heightAt(5, 7) + original.heightAt(7, 7)) / 4.0));
+    for (int r = 0; r < 40; ++r)
+        for (int c = 0; c < 70; ++c)
+            if (original.stateAt(c, r) == PixelState::Measured && field.stateAt(c, r) == PixelState::Measured)
+                EXPECT_EQ(field.heightAt(c, r), original.heightAt(c, r));
+    EXPECT_FALSE(fillFootprintGaps(field, 0).ok());
 }

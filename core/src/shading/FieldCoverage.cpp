@@ -36,26 +36,31 @@ void boxPass(const std::vector<std::uint8_t>& in, std::vector<std::uint8_t>& out
 
 } // namespace
 
-FieldCoverage measureCoverage(const HeightField& field, int radius)
+std::vector<std::uint8_t> footprintMask(const HeightField& field, int radius)
 {
-    assert(radius >= 0 && "measureCoverage(): the radius must be >= 0");
-    FieldCoverage coverage;
+    assert(radius >= 0 && "footprintMask(): the radius must be >= 0");
     const int width = field.width(), height = field.height();
-    if (width <= 0 || height <= 0) return coverage;
     const auto states = field.states();
     std::vector<std::uint8_t> mask(states.size()), scratch(states.size());
-    for (std::size_t i = 0; i < states.size(); ++i) {
-        mask[i] = states[i] != PixelState::Empty;
-        coverage.withHeight += mask[i];
-    }
-    if (coverage.withHeight == 0) return coverage;
+    bool any = false;
+    for (std::size_t i = 0; i < states.size(); ++i) any |= (mask[i] = states[i] != PixelState::Empty) != 0;
+    if (!any || width <= 0 || height <= 0) return mask;
     // Closing = dilation then erosion, each separable into a horizontal and a vertical pass.
     boxPass(mask, scratch, width, height, radius, false, true);
     boxPass(scratch, mask, width, height, radius, false, false);
     boxPass(mask, scratch, width, height, radius, true, true);
     boxPass(scratch, mask, width, height, radius, true, false);
-    for (std::size_t i = 0; i < states.size(); ++i)
-        coverage.footprint += (mask[i] != 0 || states[i] != PixelState::Empty) ? 1 : 0;
+    for (std::size_t i = 0; i < states.size(); ++i) mask[i] |= std::uint8_t(states[i] != PixelState::Empty);
+    return mask;
+}
+
+FieldCoverage measureCoverage(const HeightField& field, int radius)
+{
+    assert(radius >= 0 && "measureCoverage(): the radius must be >= 0");
+    FieldCoverage coverage;
+    for (const PixelState s : field.states()) coverage.withHeight += s != PixelState::Empty ? 1 : 0;
+    if (coverage.withHeight == 0) return coverage;
+    for (const std::uint8_t in : footprintMask(field, radius)) coverage.footprint += in;
     return coverage;
 }
 

@@ -1,5 +1,7 @@
 #include "stylos/core/shading/HoleFilling.h"
 
+#include "stylos/core/shading/FieldCoverage.h"
+
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -42,7 +44,15 @@ public:
         }
     }
 
+    /** Keeps only the pixels where @p keep is set (call before layer()). */
+    void restrictTo(const std::vector<std::uint8_t>& keep)
+    {
+        std::erase_if(m_pixels, [&keep](std::uint32_t p) { return keep[p] == 0; });
+    }
+
     std::size_t area() const { return m_pixels.size(); }
+    /** Pixels that fill() gives a value: those layer() reached from a pixel with a height. */
+    std::size_t reached() const { return m_order.size(); }
     bool touchesBorder() const { return m_touchesBorder; }
 
     /** Depth of every pixel (1 = next to a non-empty pixel), by breadth-first search; the largest. */
@@ -53,7 +63,7 @@ public:
         m_order.clear();
         for (std::uint32_t i = 0; i < m_pixels.size(); ++i) {
             bool nearData = false;
-            forNeighbours(m_pixels[i], [&](std::uint32_t, std::int64_t local) { nearData |= local < 0; });
+            forNeighbours(m_pixels[i], [&](std::uint32_t n, std::int64_t local) { nearData |= local < 0 && hasHeight(n); });
             if (nearData) {
                 m_depth[i] = 1;
                 m_order.push_back(i);
@@ -83,6 +93,7 @@ public:
             int count = 0;
             forNeighbours(m_pixels[i], [&](std::uint32_t n, std::int64_t local) {
                 if (local < 0) {
+                    if (!hasHeight(n)) return; // a pixel of the hole left out by restrictTo()
                     sum += heights[n];
                     ++count;
                 } else if (m_depth[std::size_t(local)] < m_depth[i]) {
@@ -96,6 +107,9 @@ public:
     }
 
 private:
+    /** Whether pixel @p n has a height (a whole hole's outside neighbours all do; a restricted one's may not). */
+    bool hasHeight(std::uint32_t n) const { return m_field.states()[n] != PixelState::Empty; }
+
     /** Calls f(element index, local index or −1 when the neighbour is not in this hole). */
     template <typename F>
     void forNeighbours(std::uint32_t pixel, F&& f) const
@@ -164,6 +178,51 @@ Result<HoleFillReport> fillHoles(HeightField& field, const HoleFillOptions& opti
             hole.fill(pending);
             ++report.filledHoles;
             report.filledPixels += hole.area();
+            report.deepestFill = std::max(report.deepestFill, depth);
+        }
+    }
+    std::span<float> heights = field.heights();
+    std::span<PixelState> writable = field.states();
+    for (const auto& [i, value] : pending) {
+        heights[i] = value;
+        writable[i] = PixelState::Filled;
+    }
+    if (progress) progress->update(1.0);
+    return report;
+}
+
+Result<HoleFillReport> fillFootprintGaps(HeightField& field, int radius, Connectivity connectivity, ProgressSink* progress)
+{
+    if (radius < 1) return Error{ErrorCode::InvalidArgument, "gap filling: the footprint radius must be at least 1 pixel"};
+    if (connectivity != Connectivity::Four && connectivity != Connectivity::Eight)
+        return Error{ErrorCode::InvalidArgument, "gap filling: connectivity must be 4 or 8"};
+    const std::vector<std::uint8_t> footprint = footprintMask(field, radius);
+    HoleFillReport report;
+    const std::span<const PixelState> states = field.states();
+    std::vector<std::uint8_t> visited(field.pixelCount(), 0);
+    std::vector<std::pair<std::uint32_t, float>> pending;
+    Hole hole(field, int(connectivity));
+    for (int r = 0; r < field.height(); ++r) {
+        if (progress && r % 64 == 0) {
+            if (progress->isCancelRequested()) return Error{ErrorCode::Cancelled, "gap filling: cancelled"};
+            progress->update(double(r) / field.height());
+        }
+        for (int c = 0; c < field.width(); ++c) {
+            const std::uint32_t i = std::uint32_t(field.index(c, r));
+            if (visited[i] || states[i] != PixelState::Empty) continue;
+            hole.collect(i, visited);
+            ++report.holes;
+            const std::size_t area = hole.area();
+            hole.restrictTo(footprint);
+            if (hole.area() == 0) {
+                report.largeHolePixels += area;
+                continue;
+            }
+            const int depth = hole.layer();
+            hole.fill(pending);
+            ++report.filledHoles;
+            report.filledPixels += hole.reached();
+            report.largeHolePixels += area - hole.reached();
             report.deepestFill = std::max(report.deepestFill, depth);
         }
     }

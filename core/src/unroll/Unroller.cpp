@@ -212,7 +212,17 @@ Result<Unroller::Attempt> Unroller::rasterise(const PointStats& stats, double cu
     }
     if (m_progress && m_progress->isCancelRequested()) return cancelled();
     const double closing = spacing > 0.0 ? std::ceil(2.0 * spacing / pixel) : 2.0;
-    const auto coverage = shading::measureCoverage(*field, int(std::clamp(closing, 1.0, 64.0)));
+    const int radius = int(std::clamp(closing, 1.0, 64.0));
+    const auto coverage = shading::measureCoverage(*field, radius); // before the gaps are filled: the pixel rule's
+    if (m_options.fillHoles) {
+        // The gaps between samples inside the footprint, whatever their extent: at a pixel near the spacing they
+        // join into networks larger than the holes filled above, which read as cracks.
+        auto gaps = shading::fillFootprintGaps(*field, radius, m_options.holes.connectivity);
+        if (!gaps) {
+            if (gaps.error().code == ErrorCode::Cancelled) return cancelled();
+            return invalid(gaps.error().message);
+        }
+    }
     return Attempt{std::move(*field), std::move(map), raster.pointsAveraged(), raster.pointsOutsideArc(), tolerance,
                    coverage};
 }

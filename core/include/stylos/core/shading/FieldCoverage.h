@@ -15,6 +15,7 @@
 #include "stylos/core/shading/HeightField.h"
 
 #include <cstdint>
+#include <vector>
 
 namespace stylos::core::shading {
 
@@ -27,5 +28,8 @@ struct FieldCoverage {
 
 /** @brief The coverage of @p field's footprint closed by a square of half-side @p radius (≥ 0) pixels. */
 FieldCoverage measureCoverage(const HeightField& field, int radius);
+
+/** @brief The footprint itself: 1 for the pixels of the closing of those with a height (and those with one), row-major. */
+std::vector<std::uint8_t> footprintMask(const HeightField& field, int radius);
 
 } // namespace stylos::core::shading

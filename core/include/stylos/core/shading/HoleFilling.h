@@ -65,4 +65,19 @@ struct HoleFillReport {
 Result<HoleFillReport> fillHoles(HeightField& field, const HoleFillOptions& options = {},
                                  ProgressSink* progress = nullptr);
 
+/**
+ * @brief Fills the gaps between samples that fillHoles() leaves: the Empty pixels inside the object's footprint
+ *        (footprintMask(): the closing of the pixels with a height by a square of half-side @p radius ≥ 1), whatever
+ *        the size of the empty region they belong to or whether it reaches the border. A pixel near the sampling
+ *        spacing leaves one-pixel gaps that join into networks larger than maxArea, which read as cracks; a gap
+ *        narrower than about 2 · radius belongs to the object (the coverage's rule), a wider region (a broken face,
+ *        the air beside the object) keeps its Empty pixels beyond the footprint. Filled as fillHoles() fills, from
+ *        the rim inward in rounds, each pixel the average of its neighbours with a height; the pixels of a region
+ *        that no round reaches stay Empty. Report: holes = empty regions met, filledHoles = those with a pixel filled,
+ *        largeHolePixels = pixels left Empty. Deterministic; InvalidArgument (radius < 1) and Cancelled leave the
+ *        field unchanged.
+ */
+Result<HoleFillReport> fillFootprintGaps(HeightField& field, int radius, Connectivity connectivity = Connectivity::Eight,
+                                         ProgressSink* progress = nullptr);
+
 } // namespace stylos::core::shading
