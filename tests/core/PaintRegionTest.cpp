@@ -135,3 +135,27 @@ TEST(PixelLeafIndex, BothDirectionsAndTheMajority)
     EXPECT_EQ(crowd.majorityLabels(manyLabels), labelRasterFromLeaves(manyLabels, many, 2, 1).ids);
     EXPECT_EQ(crowd.majorityLabel(1, manyLabels), 5);
 }
+
+TEST(PixelLeafIndex, PixelsWithAHeightButNoLeafShowTheirNearestLeaves)
+{
+    // A 6 × 2 grid: leaves on pixels 0 (label 3) and 5 (label 8); pixel 3 is empty, every other pixel has a height but
+    // no leaf. Each shows the leaves nearest in 8-connected steps through pixels with a height: 1, 2, 6, 7, 8 are
+    // nearer 0 (2 and 8 two steps away, three from 5); 4, 9, 10, 11 nearer 5; the empty pixel 3 shows nothing.
+    using S = stylos::core::shading::PixelState;
+    const std::vector<std::int64_t> leafPixels{0, 5};
+    PixelLeafIndex index = PixelLeafIndex::build(leafPixels, 6, 2);
+    const std::vector<std::uint8_t> labels{3, 8};
+    // Before any lending: unpainted specks (0) beside the painted pixels.
+    EXPECT_EQ(index.majorityLabels(labels), (std::vector<std::uint8_t>{3, 0, 0, 0, 0, 8, 0, 0, 0, 0, 0, 0}));
+    const std::vector<S> states{S::Measured, S::Filled, S::Filled, S::Empty, S::Filled, S::Measured,
+                                S::Filled,   S::Filled, S::Filled, S::Filled, S::Filled, S::Filled};
+    index.lendLeaves(states);
+    EXPECT_EQ(index.majorityLabels(labels), (std::vector<std::uint8_t>{3, 3, 3, 0, 8, 8, 3, 3, 3, 8, 8, 8}));
+    EXPECT_EQ(index.shownPixel(2), 0);
+    EXPECT_EQ(index.shownPixel(3), -1);
+    EXPECT_EQ(index.shownPixel(9), 5);
+    // Painting takes a pixel's own leaves only; a change of leaf 1 (pixel 5) redraws its borrowers too.
+    EXPECT_TRUE(index.leavesOf(Pixels{1, 2, 4}).empty());
+    EXPECT_EQ(index.pixelsOf(Pixels{1}), (Pixels{4, 5, 9, 10, 11}));
+    EXPECT_EQ(index.pixelsOf(Pixels{0}), (Pixels{0, 1, 2, 6, 7, 8}));
+}

@@ -201,6 +201,15 @@ void DeveloppeeJobTest::aPixelMapsOntoTheDrum()
         QVERIFY(std::binary_search(at.begin(), at.end(), std::uint32_t(leaf)));
     }
     QCOMPARE(r.leafIndex->mappedLeafCount(), mapped);
+    // Every pixel with a height shows some leaves' class (its own or its nearest ones'), none an unpainted speck; an
+    // empty pixel shows none.
+    std::size_t borrowers = 0;
+    for (std::uint32_t p = 0; p < r.leafIndex->pixelCount(); ++p) {
+        const bool height = r.heights->states()[p] != stylos::core::shading::PixelState::Empty;
+        QCOMPARE(r.leafIndex->shownPixel(p) >= 0, height);
+        borrowers += height && r.leafIndex->leavesAt(p).empty() ? 1 : 0;
+    }
+    QVERIFY(borrowers > 0); // filled pixels, and gaps of the leaves' grid
     // The lateral surface (about half the leaves of this drum, its two bed faces the other half) is painted.
     QVERIFY2(mapped > pixels->size() / 3 && hidden > pixels->size() / 4,
              qPrintable(QString("%1 mapped, %2 hidden of %3").arg(mapped).arg(hidden).arg(pixels->size())));

@@ -2,6 +2,7 @@
 #include "stylos/core/annotation/PixelLeafIndex.h"
 
 #include <algorithm>
+#include <cstdlib>
 #include <array>
 #include <cassert>
 #include <limits>
@@ -60,14 +61,70 @@ std::vector<std::uint32_t> PixelLeafIndex::pixelsOf(std::span<const std::uint32_
         if (const std::int64_t p = pixelOf(leaf); p >= 0) out.push_back(std::uint32_t(p));
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
+    if (m_lender.empty() || out.empty()) return out;
+    // The borrowers of these pixels lie within m_lendReach of them.
+    const std::size_t owners = out.size();
+    for (std::size_t k = 0; k < owners; ++k) {
+        const int c = int(out[k] % std::uint32_t(m_width)), r = int(out[k] / std::uint32_t(m_width));
+        for (int dr = -m_lendReach; dr <= m_lendReach; ++dr)
+            for (int dc = -m_lendReach; dc <= m_lendReach; ++dc) {
+                const int nc = c + dc, nr = r + dr;
+                if (nc < 0 || nr < 0 || nc >= m_width || nr >= m_height) continue;
+                const std::size_t n = std::size_t(nr) * std::size_t(m_width) + std::size_t(nc);
+                if (m_lender[n] == std::int32_t(out[k]) && n != out[k]) out.push_back(std::uint32_t(n));
+            }
+    }
+    std::sort(out.begin(), out.end());
+    out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
+}
+
+void PixelLeafIndex::lendLeaves(std::span<const shading::PixelState> states)
+{
+    assert(states.size() == pixelCount() && "PixelLeafIndex::lendLeaves(): one state per pixel");
+    const std::size_t pixels = pixelCount();
+    m_lender.assign(pixels, -1);
+    m_lendReach = 0;
+    std::vector<std::uint8_t> steps(pixels, 0);
+    std::vector<std::uint32_t> queue;
+    for (std::size_t p = 0; p < pixels; ++p)
+        if (m_offsets[p + 1] != m_offsets[p]) {
+            m_lender[p] = std::int32_t(p);
+            queue.push_back(std::uint32_t(p));
+        }
+    constexpr int kSteps[8][2] = {{-1, 0}, {1, 0}, {0, -1}, {0, 1}, {-1, -1}, {1, -1}, {-1, 1}, {1, 1}};
+    for (std::size_t head = 0; head < queue.size(); ++head) {
+        const std::uint32_t p = queue[head];
+        if (steps[p] >= kMaxLendSteps) continue;
+        const int c = int(p % std::uint32_t(m_width)), r = int(p / std::uint32_t(m_width));
+        for (const auto& d : kSteps) {
+            const int nc = c + d[0], nr = r + d[1];
+            if (nc < 0 || nr < 0 || nc >= m_width || nr >= m_height) continue;
+            const std::size_t n = std::size_t(nr) * std::size_t(m_width) + std::size_t(nc);
+            if (m_lender[n] >= 0 || states[n] == shading::PixelState::Empty) continue;
+            m_lender[n] = m_lender[p];
+            steps[n] = std::uint8_t(steps[p] + 1);
+            const int lc = int(std::uint32_t(m_lender[n]) % std::uint32_t(m_width));
+            const int lr = int(std::uint32_t(m_lender[n]) / std::uint32_t(m_width));
+            m_lendReach = std::max({m_lendReach, std::abs(nc - lc), std::abs(nr - lr)});
+            queue.push_back(std::uint32_t(n));
+        }
+    }
+}
+
+std::int64_t PixelLeafIndex::shownPixel(std::uint32_t pixel) const
+{
+    assert(pixel < pixelCount() && "PixelLeafIndex::shownPixel(): pixel outside the grid");
+    if (m_offsets[pixel + 1] != m_offsets[pixel]) return pixel;
+    return m_lender.empty() ? -1 : m_lender[pixel];
 }
 
 std::uint8_t PixelLeafIndex::majorityLabel(std::uint32_t pixel, std::span<const std::uint8_t> labels) const
 {
     assert(labels.size() == m_leafPixel.size() && "PixelLeafIndex::majorityLabel(): one label per leaf");
-    const auto leaves = leavesAt(pixel);
-    if (leaves.empty()) return 0;
+    const std::int64_t shown = shownPixel(pixel);
+    if (shown < 0) return 0;
+    const auto leaves = leavesAt(std::uint32_t(shown));
     if (leaves.size() > 16) { // many (a bed face seen edge-on): a table
         std::array<std::uint32_t, 256> counts{};
         for (std::uint32_t leaf : leaves) ++counts[labels[leaf]];
@@ -92,7 +149,7 @@ std::vector<std::uint8_t> PixelLeafIndex::majorityLabels(std::span<const std::ui
 {
     std::vector<std::uint8_t> out(pixelCount(), 0);
     for (std::size_t p = 0; p < out.size(); ++p)
-        if (m_offsets[p + 1] != m_offsets[p]) out[p] = majorityLabel(std::uint32_t(p), labels);
+        if (shownPixel(std::uint32_t(p)) >= 0) out[p] = majorityLabel(std::uint32_t(p), labels);
     return out;
 }
 

@@ -4,6 +4,7 @@
 
 #include "stylos/core/annotation/LabelRaster.h"
 #include "stylos/core/annotation/LeafLabels.h"
+#include "stylos/core/annotation/PixelLeafIndex.h"
 #include "stylos/core/cloud/LoadPointCloud.h"
 #include "stylos/core/developpee/Developpee.h"
 #include "stylos/core/octree/OctreeBuild.h"
@@ -125,7 +126,10 @@ Result<RenderedPanel> renderDeveloppee(const PlateSources& sources, const PlateF
         // The classes of the surface the développée shows, as painting labels it (annotation::paintDepth).
         auto pixels = annotation::leafPixels(*octree, dev.map, nullptr, annotation::paintDepth(dev.map.pixelSize()));
         if (!pixels) return pixels.error();
-        field.classes = annotation::labelRasterFromLeaves(*labels, *pixels, field.width, field.height).ids;
+        // Each pixel shows its leaves' class, a filled pixel its nearest leaves' (as the Développée dock shows them).
+        auto index = annotation::PixelLeafIndex::build(*pixels, field.width, field.height);
+        if (dev.field.states().size() == index.pixelCount()) index.lendLeaves(dev.field.states());
+        field.classes = index.majorityLabels(*labels);
     }
     const double natural = dev.map.pixelSize();
     const double p = printPixelSize(panel.scale, options.dpi);

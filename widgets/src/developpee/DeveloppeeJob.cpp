@@ -98,9 +98,12 @@ core::Result<DeveloppeeResult> DeveloppeeJob::run(core::ProgressSink* progress) 
         if (auto octree = core::octree::PackedOctree::open(source)) {
             auto pixels = core::annotation::leafPixels(*octree, *result.map, nullptr, core::annotation::paintDepth(result.map->pixelSize()));
             if (!pixels && pixels.error().code == core::ErrorCode::Cancelled) return pixels.error();
-            if (pixels)
-                result.leafIndex = std::make_shared<const core::annotation::PixelLeafIndex>(
-                    core::annotation::PixelLeafIndex::build(*pixels, result.map->width(), result.map->height()));
+            if (pixels) {
+                auto index = core::annotation::PixelLeafIndex::build(*pixels, result.map->width(), result.map->height());
+                // Filled pixels and gaps of the leaves' grid show their nearest leaves' class, not unpainted specks.
+                if (result.heights->states().size() == index.pixelCount()) index.lendLeaves(result.heights->states());
+                result.leafIndex = std::make_shared<const core::annotation::PixelLeafIndex>(std::move(index));
+            }
         }
     }
     if (progress) progress->update(1.0);

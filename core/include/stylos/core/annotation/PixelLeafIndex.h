@@ -7,11 +7,16 @@
  *        some leaves' labels finds the pixels to redraw, without touching the rest of the image.
  *
  * The pixel's shown label (majorityLabel) is the one labelRasterFromLeaves() gives: the most frequent label of
- * its leaves, 0 counting as a label, a tie going to the smaller id; 0 for a pixel without leaves. Nearest
- * neighbour only: no id is ever blended.
- * Memory: 4 bytes per leaf twice and 4 bytes per pixel. Limits: fewer than 2³² leaves and pixels (asserted).
+ * its leaves, 0 counting as a label, a tie going to the smaller id; 0 for a pixel without leaves — unless
+ * lendLeaves() gave it a lender: a pixel with a height but no leaf (filled from its neighbours, or a gap of the
+ * leaves' grid) then shows the label of the nearest pixel with leaves, as its height came from its neighbours;
+ * without it such pixels showed as unpainted specks inside every painted region. Painting (leavesAt, leavesOf)
+ * still takes a pixel's own leaves only. Nearest neighbour only: no id is ever blended.
+ * Memory: 4 bytes per leaf twice and 4 bytes per pixel (8 once leaves are lent). Limits: fewer than 2³² leaves and pixels (asserted).
  * Thread-safety: a value; const members are reentrant.
  */
+#include "stylos/core/shading/HeightField.h"
+
 #include <cstdint>
 #include <span>
 #include <vector>
@@ -38,8 +43,21 @@ public:
     std::span<const std::uint32_t> leavesAt(std::uint32_t pixel) const;
     /** @brief The leaves of every pixel in @p pixels (any order; duplicates allowed): ascending, unique. */
     std::vector<std::uint32_t> leavesOf(std::span<const std::uint32_t> pixels) const;
-    /** @brief The pixels of @p leaves (any order): ascending, unique, leaves off the image left out. */
+    /** @brief The pixels of @p leaves (any order) and the pixels they lend them to: ascending, unique, leaves off the
+     *         image left out. */
     std::vector<std::uint32_t> pixelsOf(std::span<const std::uint32_t> leaves) const;
+
+    /**
+     * @brief Gives each pixel without leaves but with a height in @p states (row-major, pixelCount() of them, asserted;
+     *        Measured or Filled) the pixel with leaves nearest to it, through pixels with a height (8-connected steps, at
+     *        most kMaxLendSteps; a tie goes to the one met first in a breadth-first search seeded in pixel order:
+     *        deterministic). majorityLabel() then shows that pixel's label there, and pixelsOf() includes the borrowers.
+     */
+    void lendLeaves(std::span<const shading::PixelState> states);
+    /** Steps a pixel's leaves are lent at most: a filled hole's depth (256 pixels: 8 steps) with room to spare. */
+    static constexpr int kMaxLendSteps = 16;
+    /** @brief The pixel whose leaves @p pixel shows: itself, its lender, or −1 (no leaf near it). */
+    std::int64_t shownPixel(std::uint32_t pixel) const;
 
     /** @brief The label pixel @p pixel shows for per-leaf @p labels (leafCount() of them, asserted). */
     std::uint8_t majorityLabel(std::uint32_t pixel, std::span<const std::uint8_t> labels) const;
@@ -52,6 +70,8 @@ private:
     std::vector<std::int32_t> m_leafPixel; ///< per leaf; −1 off the image
     std::vector<std::uint32_t> m_offsets;  ///< pixelCount() + 1
     std::vector<std::uint32_t> m_leaves;   ///< leaves grouped by pixel
+    std::vector<std::int32_t> m_lender;    ///< per pixel without leaves, once lent: the pixel it shows, or −1
+    int m_lendReach = 0;                   ///< the most steps (Chebyshev) from a borrower to its lender
 };
 
 } // namespace stylos::core::annotation
