@@ -233,6 +233,17 @@ std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vec
 
 int legendColumns(double widthMm) { return std::max(1, int(widthMm / kLegendColumnMm)); }
 
+/** legendEntries()' layers, each its number of classes (its title first in the entries). */
+std::vector<int> classesPerLayer(const std::vector<LegendEntry>& entries)
+{
+    std::vector<int> counts;
+    for (const LegendEntry& e : entries) {
+        if (!e.cls) counts.push_back(0);
+        else ++counts.back();
+    }
+    return counts;
+}
+
 void drawSwatch(QPainter& p, const QRectF& r, const ann::LegendClass& c, bool hatched)
 {
     if (!hatched) {
@@ -271,8 +282,7 @@ int legendRows(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& 
     const auto entries = legendEntries(spec, panels, legend, PlateTexts::english());
     if (entries.empty()) return 0;
     const double width = spec.orientedPage().widthMm - 2 * spec.marginMm;
-    const int columns = legendColumns(width);
-    return int((entries.size() + std::size_t(columns) - 1) / std::size_t(columns));
+    return cp::legendGridRows(classesPerLayer(entries), legendColumns(width));
 }
 
 double captionHeightMm(const QString& caption, double widthMm)
@@ -331,11 +341,10 @@ void paintPlate(QPainter& p, const PlateContent& plate)
     }
     const auto entries = legendEntries(plate.spec, plate.panels, plate.legend, plate.texts);
     if (!entries.empty() && layout.legend.h > 0) {
-        const int columns = legendColumns(layout.legend.w);
-        const int rows = int((entries.size() + std::size_t(columns) - 1) / std::size_t(columns));
+        const std::vector<cp::LegendCell> cells = cp::legendGrid(classesPerLayer(entries), legendColumns(layout.legend.w));
         for (std::size_t k = 0; k < entries.size(); ++k) {
-            const int col = int(k) / rows, row = int(k) % rows;
-            const double x = layout.legend.x + col * kLegendColumnMm, y = layout.legend.y + row * cp::kLegendRowMm;
+            const double x = layout.legend.x + cells[k].column * kLegendColumnMm;
+            const double y = layout.legend.y + cells[k].row * cp::kLegendRowMm;
             const LegendEntry& e = entries[k];
             if (!e.cls) {
                 text(p, QPointF(x, y + 3.8), e.title, 8, true);

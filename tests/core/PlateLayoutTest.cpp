@@ -399,3 +399,21 @@ TEST(PlateSpec, TheProjectKeepsItsPlate)
     json["legend"] = 3;
     EXPECT_FALSE(ProjectFile::fromJson(json.dump(), "/p/a.stylos").ok());
 }
+
+TEST(PlateLayout, EachLayersClassesFollowItsOwnTitle)
+{
+    // Material with 2 classes and tool marks with 1, on 3 columns: each title starts a row, its classes beside it.
+    // Before, the entries flowed down the columns: "claw chisel" beside "Material / condition", "Tool marks" under.
+    const std::vector<int> two{2, 1};
+    EXPECT_EQ(legendGrid(two, 3), (std::vector<LegendCell>{{0, 0}, {1, 0}, {2, 0}, {0, 1}, {1, 1}}));
+    EXPECT_EQ(legendGridRows(two, 3), 2);
+    // More classes than columns: they go on under the first class, never under the title.
+    const std::vector<int> many{5};
+    EXPECT_EQ(legendGrid(many, 3), (std::vector<LegendCell>{{0, 0}, {1, 0}, {2, 0}, {1, 1}, {2, 1}, {1, 2}}));
+    EXPECT_EQ(legendGridRows(many, 3), 3);
+    // One column: the title, then a class a row; a layer without classes takes no row.
+    const std::vector<int> narrow{1, 0, 2};
+    EXPECT_EQ(legendGrid(narrow, 1), (std::vector<LegendCell>{{0, 0}, {0, 1}, {0, 2}, {0, 3}, {0, 4}}));
+    EXPECT_EQ(legendGridRows(narrow, 1), 5);
+    EXPECT_EQ(legendGridRows(std::vector<int>{}, 3), 0);
+}

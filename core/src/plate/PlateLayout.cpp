@@ -234,4 +234,28 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
 
 } // namespace
 
+std::vector<LegendCell> legendGrid(std::span<const int> classesPerLayer, int columns)
+{
+    columns = std::max(columns, 1);
+    const int first = columns > 1 ? 1 : 0; // the classes' first column
+    std::vector<LegendCell> cells;
+    int row = -1;
+    for (const int classes : classesPerLayer) {
+        if (classes <= 0) continue;
+        cells.push_back({0, ++row}); // the layer's title starts a row
+        int column = first == 0 ? columns : first;
+        for (int k = 0; k < classes; ++k) {
+            if (column >= columns) ++row, column = first;
+            cells.push_back({column++, row});
+        }
+    }
+    return cells;
+}
+
+int legendGridRows(std::span<const int> classesPerLayer, int columns)
+{
+    const auto cells = legendGrid(classesPerLayer, columns);
+    return cells.empty() ? 0 : cells.back().row + 1;
+}
+
 } // namespace stylos::core::plate

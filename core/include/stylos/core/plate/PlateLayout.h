@@ -50,6 +50,22 @@ struct PanelBox {
     double rulerDegrees = 360; ///< the angle the ruler spans, from the image's left edge (a fragment's arc: less)
 };
 
+/** @brief Where a legend entry goes: its column (0 = the first) and row. */
+struct LegendCell {
+    int column = 0, row = 0;
+    bool operator==(const LegendCell&) const = default;
+};
+
+/**
+ * @brief The legend's grid for layers of @p classesPerLayer classes each (a layer of 0 is left out), on @p columns
+ *        columns (≥ 1): each layer's title in the first column of a row of its own, its classes in the columns after
+ *        it, row after row (one column: the title, then a class a row), so that a layer's classes never sit beside
+ *        another layer's title. Entries in order: a layer's title, then its classes, layer after layer.
+ */
+std::vector<LegendCell> legendGrid(std::span<const int> classesPerLayer, int columns);
+/** @brief The rows legendGrid() uses. */
+int legendGridRows(std::span<const int> classesPerLayer, int columns);
+
 struct PlateLayout {
     PageSize page;
     RectMm printArea;
