@@ -190,3 +190,39 @@ TEST(AnnotationArea, MatchesTheFlutedSurfaceOfAPatch)
     // Measured −0.33 % (seeds 3 and 5: −0.60 %, −0.55 %; at depth 8, one sample a leaf: −0.5 % to −1.35 %).
     EXPECT_NEAR(measured / truePatch, 1.0, 0.01);
 }
+
+// A sparse fragment (4 mm samples, 3.53 mm pixels): a pixel that no leaf of the outer surface lands in holds only
+// leaves of the inner break face, 17 cm down; its own top kept them, so a painted region showed them unpainted, as
+// specks. Every leaf painting takes lies within twice the paint depth of the height the développée shows there.
+TEST(AnnotationArea, ASparseFragmentsInnerFaceIsNotPainted)
+{
+    namespace synth = stylos::core::synth;
+    stylos::test::TempDir dir;
+    const auto ply = dir / "fragment.ply";
+    stylos::test::generate(synth::SyntheticKind::Fragment, stylos::test::coarse(0.004, 5), ply);
+    oct::BuildOptions build;
+    build.depth = 9;
+    ASSERT_TRUE(oct::buildOctreeFile(ply, dir / "fragment.poct", build).ok());
+    auto octree = oct::PackedOctree::open(dir / "fragment.poct");
+    ASSERT_TRUE(octree.ok());
+    stylos::core::developpee::DeveloppeeOptions options;
+    options.pixelSize = 0.00353;
+    options.shading = stylos::core::developpee::Shading::Height;
+    auto dev = stylos::core::developpee::computeDeveloppee(dir / "fragment.poct", options);
+    ASSERT_TRUE(dev.ok()) << dev.error().message;
+    const double depth = paintDepth(dev->map.pixelSize());
+    auto pixels = leafPixels(*octree, dev->map, nullptr, depth);
+    ASSERT_TRUE(pixels.ok());
+    std::size_t mapped = 0, deep = 0;
+    octree->forEachCell(octree->depth(), [&](const oct::CellView& cell) {
+        const std::int64_t p = (*pixels)[cell.index];
+        if (p < 0) return true;
+        ++mapped;
+        const auto hit = dev->map.pixelOf(Eigen::Vector3d(cell.centre[0], cell.centre[1], cell.centre[2]));
+        const int c = int(p % dev->map.width()), r = int(p / dev->map.width());
+        if (hit && dev->field.hasHeight(c, r) && hit->h < double(dev->field.heightAt(c, r)) - 2 * depth) ++deep;
+        return true;
+    });
+    EXPECT_GT(mapped, 1000u);
+    EXPECT_EQ(deep, 0u);
+}

@@ -46,10 +46,30 @@ Result<std::vector<std::int64_t>> posedLeafPixels(const octree::PackedOctree& oc
         return true;
     });
     if (cancelled) return Error::at(ErrorCode::Cancelled, octree.path().string(), {}, "cancelled");
-    if (hide) // under the surface the pixel shows (a fragment's inner break face)
-        for (std::size_t leaf = 0; leaf < pixels.size(); ++leaf)
-            if (pixels[leaf] >= 0 && double(heights[leaf]) < double(top[std::size_t(pixels[leaf])]) - visibleDepth)
-                pixels[leaf] = -1;
+    if (hide) {
+        // Under the surface the pixel shows (a fragment's inner break face): below its own top by more than the depth,
+        // or below its neighbours' top (2 pixels around) by more than twice it — a pixel that no outer leaf of a sparse scan lands in
+        // has only the inner face's leaves, which its own top would keep (shown as unpainted specks in a painted
+        // region); twice the depth keeps a flute's wall beside its fillet.
+        constexpr int kNear = 2; // a 5 × 5 window: a gap of the outer surface's leaves up to 3 pixels wide
+        const int width = map.width(), height = map.height();
+        std::vector<float> near(top.size(), -std::numeric_limits<float>::infinity());
+        for (int r = 0; r < height; ++r)
+            for (int c = 0; c < width; ++c) {
+                float highest = -std::numeric_limits<float>::infinity();
+                for (int dr = -kNear; dr <= kNear; ++dr)
+                    for (int dc = -kNear; dc <= kNear; ++dc)
+                        if (c + dc >= 0 && c + dc < width && r + dr >= 0 && r + dr < height)
+                            highest = std::max(highest, top[std::size_t(r + dr) * std::size_t(width) + std::size_t(c + dc)]);
+                near[std::size_t(r) * std::size_t(width) + std::size_t(c)] = highest;
+            }
+        for (std::size_t leaf = 0; leaf < pixels.size(); ++leaf) {
+            if (pixels[leaf] < 0) continue;
+            const std::size_t p = std::size_t(pixels[leaf]);
+            const double h = heights[leaf];
+            if (h < double(top[p]) - visibleDepth || h < double(near[p]) - 2.0 * visibleDepth) pixels[leaf] = -1;
+        }
+    }
     return pixels;
 }
 
