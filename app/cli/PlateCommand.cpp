@@ -63,8 +63,26 @@ bool panelLayerHeld(const cp::PlateSources& sources, const cp::PanelSpec& panel)
     return false;
 }
 
+/**
+ * A statement's problem in the words of the options that made it: PlateSpec::validate names the layout file's keys
+ * ("the command line: margin_mm: must be 0..70 mm"), which a plate stated by options has not written.
+ */
+std::string inOptionWords(std::string message)
+{
+    static const std::pair<const char*, const char*> kKeys[] = {
+        {"page: ", "--page: "},       {"margin_mm: ", "--margin: "}, {"dpi: ", "--dpi: "},
+        {"bits: ", "--bits: "},       {"panels[0].scale: ", "--scale: "}, {"panels[0].shading: ", "--shading: "},
+        {"panels[0].layer: ", "--layer: "}, {"panels[0].fragment: ", "--fragment: "}, {"panels[0].view: ", "--view: "}};
+    const std::string prefix = "the command line: ";
+    if (message.rfind(prefix, 0) != 0) return message;
+    message.erase(0, prefix.size());
+    for (const auto& [key, option] : kKeys)
+        if (message.rfind(key, 0) == 0) return option + message.substr(std::string(key).size());
+    return message;
+}
+
 /** The one-panel plate of the command line; false with @p problem on a usage error. */
-bool parseOnePanel(CommandLine& cl, cp::PlateSpec& spec, bool& shadingGiven, std::string& problem)
+bool parseOnePanel(CommandLine& cl, cp::PlateSpec& spec, std::string& problem)
 {
     cp::PanelSpec panel;
     const auto view = cp::panelViewFromName(cl.value("view").value_or("developpee"));
@@ -73,8 +91,8 @@ bool parseOnePanel(CommandLine& cl, cp::PlateSpec& spec, bool& shadingGiven, std
     if (!cl.value("scale")) return problem = "plate needs --scale N (the panel at 1:N)", false;
     if (!cl.number("scale", panel.scale)) return problem = cl.error(), false;
     if (!(panel.scale >= 1 && panel.scale <= 1e6)) return problem = "--scale must be a number in 1..1000000 (the panel at 1:N)", false;
-    shadingGiven = cl.value("shading").has_value();
-    if (shadingGiven) {
+    panel.shadingStated = cl.value("shading").has_value() || panel.view == cp::PanelView::Developpee;
+    if (cl.value("shading")) {
         const auto s = cp::panelShadingFromName(*cl.value("shading"));
         if (!s) return problem = "unknown shading \"" + *cl.value("shading") + "\" (skydome, light, height or headlight)", false;
         panel.shading = *s;
@@ -181,7 +199,6 @@ int runPlate(const std::vector<std::string>& args)
     if (!cl.integer("threads", threads) || threads < 0 || threads > 1024) return usageError(cl, "--threads must be 0..1024");
 
     cp::PlateSpec spec;
-    bool shadingGiven = true;
     std::string problem;
     const auto layoutFile = cl.value("layout");
     if (layoutFile) {
@@ -191,26 +208,32 @@ int runPlate(const std::vector<std::string>& args)
         if (!read) return fail(read.error());
         spec = std::move(read).value();
         if (cl.value("caption")) spec.caption = *cl.value("caption");
-    } else if (!parseOnePanel(cl, spec, shadingGiven, problem)) {
+    } else if (!parseOnePanel(cl, spec, problem)) {
         return usageError(cl, problem);
     }
     if (!layoutFile || cl.value("page") || cl.value("dpi") || cl.flag("landscape") || cl.value("bits") || cl.value("margin"))
         if (!parsePage(cl, spec, problem)) return usageError(cl, problem);
 
     // Check what can be checked before reading anything (a 3D view's default shading waits for its octrees).
-    if (shadingGiven || spec.panels[0].view == cp::PanelView::Developpee)
-        if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s) return usageError(cl, s.error().message);
+    if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s)
+        return usageError(cl, inOptionWords(s.error().message));
     // Usage checked: an output that cannot be written is found before the work.
     if (const std::string problem = outputProblem(output); !problem.empty()) return failure(problem);
     const auto start = core::Clock::now();
     auto sources = cp::readPlateSources(input);
     if (!sources) return fail(sources.error());
-    if (!shadingGiven && spec.panels[0].view != cp::PanelView::Developpee) {
-        spec.panels[0].shading = defaultShading3d(*sources, spec.panels[0].fragment);
-        if (spec.panels[0].shading == cp::PanelShading::Headlight)
-            std::cerr << "stylos-cli: " << input << " has no skydome layer: the 3D view is lit from the viewer (headlight)\n";
+    for (std::size_t i = 0; i < spec.panels.size(); ++i) { // a 3D panel that states no shading: skydome where there is one
+        cp::PanelSpec& panel = spec.panels[i];
+        if (panel.shadingStated || panel.view == cp::PanelView::Developpee) continue;
+        panel.shading = defaultShading3d(*sources, panel.fragment);
+        panel.shadingStated = true;
+        if (panel.shading == cp::PanelShading::Headlight)
+            std::cerr << "stylos-cli: " << input << " has no skydome layer: "
+                      << (spec.panels.size() > 1 ? "panel " + std::to_string(i + 1) + "'s" : std::string("the"))
+                      << " 3D view is lit from the viewer (headlight)\n";
     }
-    if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s) return usageError(cl, s.error().message);
+    if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s)
+        return usageError(cl, inOptionWords(s.error().message));
     for (std::size_t i = 0; i < spec.panels.size() && !sources->isProject; ++i)
         if (spec.panels[i].layer && !panelLayerHeld(*sources, spec.panels[i]))
             std::cerr << "stylos-cli: " << input << " has no " << core::annotation::layerName(*spec.panels[i].layer)

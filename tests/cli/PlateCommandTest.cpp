@@ -82,6 +82,19 @@ TEST(PlateCommand, FrontViewOfAPointFileAndALayoutFile)
     ASSERT_EQ(k["panels"].size(), 2u);
     EXPECT_EQ(k["panels"][1]["view"], "top");
     EXPECT_EQ(k["page_mm"], nlohmann::json({420.0, 297.0}));
+
+    // A layout's 3D panel that states no shading is lit from the viewer where there is no skydome, as the options'
+    // panel is (it failed: "has no skydome"); a custom page already landscape stays so with --landscape.
+    const auto unstated = (dir / "unstated.json").string();
+    std::ofstream(unstated) << R"({"format": "stylos-plate", "version": 1, "page": [300, 200], "dpi": 100,
+        "panels": [{"view": "front", "scale": 10}]})";
+    const auto lit = runCli({"plate", in, "--layout", unstated, "-o", (dir / "lit.png").string(), "--json"});
+    ASSERT_EQ(lit.exitCode, 0) << lit.err;
+    EXPECT_NE(lit.err.find("has no skydome layer: the 3D view is lit from the viewer (headlight)"), std::string::npos)
+        << lit.err;
+    const auto wide = runCli({"plate", in, "--layout", unstated, "--landscape", "-o", (dir / "wide.png").string(), "--json"});
+    ASSERT_EQ(wide.exitCode, 0) << wide.err;
+    EXPECT_EQ(nlohmann::json::parse(wide.out)["page_mm"], nlohmann::json({300.0, 200.0}));
 }
 
 TEST(PlateCommand, UsageErrorsAndBadInput)
@@ -106,6 +119,14 @@ TEST(PlateCommand, UsageErrorsAndBadInput)
             << small.err;
     }
     EXPECT_EQ(runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--view", "front", "--shading", "light"}).exitCode, 2);
+    // Said in the options' words, not the layout file's keys ("margin_mm", "panels[0].shading").
+    const auto margin = runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--margin", "200"});
+    EXPECT_EQ(margin.exitCode, 2);
+    EXPECT_NE(margin.err.find("--margin: must be 0..70 mm"), std::string::npos) << margin.err;
+    const auto shading = runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--view", "front", "--shading", "height"});
+    EXPECT_EQ(shading.exitCode, 2);
+    EXPECT_NE(shading.err.find("--shading: a 3D view takes skydome or headlight"), std::string::npos) << shading.err;
+    EXPECT_EQ(shading.err.find("panels[0]"), std::string::npos) << shading.err;
     const auto bits = runCli({"plate", "x.ply", "-o", out, "--scale", "10", "--bits", "16"}); // a PDF: not taken
     EXPECT_EQ(bits.exitCode, 2);
     EXPECT_NE(bits.err.find("--bits applies to TIFF and PNG plates"), std::string::npos) << bits.err;

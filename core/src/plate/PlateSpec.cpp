@@ -81,9 +81,10 @@ std::optional<PageSize> pageFromName(std::string_view name)
 PageSize PlateSpec::orientedPage() const
 {
     const double shorter = std::min(page.widthMm, page.heightMm), longer = std::max(page.widthMm, page.heightMm);
-    // A named page is portrait unless asked; a "WxH" page keeps its stated orientation, swapped by landscape.
+    // A named page is portrait unless asked; a "WxH" page keeps its stated orientation, and landscape puts its
+    // longer side across (300x200 --landscape is 300 × 200, not turned to portrait).
     if (pageFromName(pageName) && pageName.find_first_of("xX") != std::string::npos)
-        return landscape ? PageSize{page.heightMm, page.widthMm} : page;
+        return landscape ? PageSize{longer, shorter} : page;
     return landscape ? PageSize{longer, shorter} : PageSize{shorter, longer};
 }
 
@@ -220,6 +221,7 @@ Result<PlateSpec> PlateSpec::fromJson(const nlohmann::json& json, const std::str
             panel.shading = *k;
         } else if (panel.view != PanelView::Developpee) {
             panel.shading = PanelShading::Skydome;
+            panel.shadingStated = false;
         }
         if (const auto l = p.find("layer"); l != p.end()) {
             const auto layer = l->is_string() ? annotation::layerFromName(l->get<std::string>()) : std::nullopt;

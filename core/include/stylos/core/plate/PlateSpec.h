@@ -59,6 +59,10 @@ struct PanelSpec {
     PanelView view = PanelView::Developpee;
     double scale = 10;                                  ///< 1:N, N ≥ 1
     PanelShading shading = PanelShading::Skydome;
+    /** False for a 3D panel whose statement left the shading out (a layout file without "shading", stylos-cli plate
+     *  without --shading): `shading` is then the skydome, which stylos-cli plate turns into the headlight where a
+     *  fragment drawn has no skydome layer. Not written: a written panel states its shading. */
+    bool shadingStated = true;
     std::optional<annotation::AnnotationLayer> layer;   ///< annotation drawn over the panel
     bool hatches = false;                               ///< classes as black-and-white hatches, not colours
     std::string fragment;                               ///< a project's fragment by name (see the file comment)
@@ -83,7 +87,8 @@ struct PlateSpec {
     bool legend = true;            ///< draw the legend of the annotation layers in use
     std::vector<PanelSpec> panels;
 
-    /** @brief The page as drawn (width and height swapped in landscape). */
+    /** @brief The page as drawn: a named page portrait, or landscape (its longer side across); a W×H page as
+     *  stated, or with its longer side across in landscape. */
     PageSize orientedPage() const;
     /** @brief InvalidArgument naming @p source and the key when a value is out of range (see the fields). */
     Status validate(const std::string& source) const;
