@@ -85,6 +85,19 @@ int runAnnotate(const std::vector<std::string>& args)
         auto pixels = ann::leafPixels(octree, *map, &progress, ann::paintDepth(map->pixelSize()));
         if (!pixels) return fail(pixels.error());
         changed = ann::applyLabelRaster(*raster, *pixels, *labels);
+        // A map made from another object (the drum's, given with a fragment's octree) leaves most painted pixels
+        // without a leaf of this octree under them: said, since the labels written are then mostly not the painting.
+        std::vector<std::uint8_t> under(raster->ids.size(), 0);
+        for (const std::int64_t p : *pixels)
+            if (p >= 0) under[std::size_t(p)] = 1;
+        std::uint64_t painted = 0, covered = 0;
+        for (std::size_t i = 0; i < under.size(); ++i)
+            if (raster->ids[i] != 0) ++painted, covered += under[i];
+        if (painted > 0 && 2 * covered < painted)
+            std::fprintf(stderr, "stylos-cli: warning: only %llu of the %llu painted pixels of %s have leaves of %s under "
+                         "them (%.0f %%): was %s made from this octree's développée?\n",
+                         static_cast<unsigned long long>(covered), static_cast<unsigned long long>(painted),
+                         rasterPath.c_str(), input.c_str(), 100.0 * double(covered) / double(painted), mapPath.c_str());
     }
     auto areas = ann::leafAreas(octree);
     if (!areas) return fail(areas.error());

@@ -65,6 +65,16 @@ TEST(CliAnnotate, LabelsTheRectangleAndReportsTheContractKeys)
     EXPECT_EQ(j["classes"][0]["cells"], 0);
     EXPECT_NEAR(j["classes"][1]["area_m2"].get<double>() / d.rectangleArea(), 1.0, 0.02);
     EXPECT_EQ(j["changed"].get<std::uint64_t>(), twos);
+    EXPECT_EQ(run.err.find("warning"), std::string::npos) << run.err; // the drum's own map: nothing to say
+    // A map made elsewhere (the same drum's, moved 2 m along x: another object's) is said to be one.
+    nlohmann::json moved = nlohmann::json::parse(std::ifstream(d.sidecar));
+    moved["surface"]["axis_point"][0] = moved["surface"]["axis_point"][0].get<double>() + 2.0;
+    std::ofstream(dir / "moved.json") << moved.dump();
+    const auto other = runCli(annotateArgs(d.poct, raster, dir / "moved.json", dir / "other.poct"));
+    ASSERT_EQ(other.exitCode, 0) << other.err;
+    EXPECT_NE(other.err.find("warning: only 16 of the 144 painted pixels"), std::string::npos) << other.err;
+    EXPECT_NE(other.err.find("was " + (dir / "moved.json").string() + " made from this octree's développée?"),
+              std::string::npos) << other.err;
     // The input is untouched.
     const auto before = labelsOf(d.poct, ann::AnnotationLayer::Material);
     EXPECT_EQ(std::count(before.begin(), before.end(), 0), std::ptrdiff_t(before.size()));
