@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <chrono>
+#include <cstdio>
 #include <iostream>
 
 namespace stylos::cli {
@@ -69,8 +70,8 @@ int runGenerate(const std::vector<std::string>& args)
                          {"spacing", options.spacing}, {"seed", options.seed}, {"seconds", seconds}};
         std::cout << j.dump() << "\n";
     } else {
-        std::cout << "wrote " << report->points << " points to " << *output << " (truth: " << report->truthPath.string()
-                  << ") in " << seconds << " s\n";
+        std::printf("wrote %llu points to %s (truth: %s) in %.2f s\n", static_cast<unsigned long long>(report->points),
+                    output->c_str(), report->truthPath.string().c_str(), seconds);
     }
     return ExitOk;
 }

@@ -20,8 +20,18 @@ TEST(CliGenerate, WritesTheScanAndItsTruthReproducibly)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
     EXPECT_EQ(j["truth"], (dir / "a.truth.json").string());
-    ASSERT_EQ(runCli({"generate", "drum", "-o", b, "--spacing", "0.01", "--seed", "7"}).exitCode, 0);
+    const auto text = runCli({"generate", "drum", "-o", b, "--spacing", "0.01", "--seed", "7"});
+    ASSERT_EQ(text.exitCode, 0);
     EXPECT_EQ(stylos::test::readBytes(a), stylos::test::readBytes(b));
+    // The time to the hundredth of a second ("in 0.05 s"), not every digit ("in 0.0456435 s").
+    const std::string points = std::to_string(j["points"].get<std::uint64_t>());
+    const auto in = text.out.rfind(") in ");
+    ASSERT_NE(in, std::string::npos) << text.out;
+    EXPECT_EQ(text.out.rfind("wrote " + points + " points to " + b, 0), 0u) << text.out;
+    const std::string time = text.out.substr(in + 5);
+    ASSERT_GE(time.size(), 7u) << time; // "0.05 s\n"
+    EXPECT_EQ(time.substr(time.size() - 3), " s\n") << time;
+    EXPECT_EQ(time[time.size() - 6], '.') << time;
 
     const auto info = runCli({"info", a, "--json"});
     ASSERT_EQ(info.exitCode, 0) << info.err;
