@@ -174,7 +174,7 @@ bool ProjectActions::saveAs()
     if (!m_prompts) return false;
     QSettings settings;
     QString path = QFileDialog::getSaveFileName(&m_window, tr("Save project"),
-                                                settings.value(LastDirKey).toString(),
+                                                rememberedFolder(),
                                                 tr("Stylos projects (*.stylos)"));
     if (path.isEmpty()) return false;
     if (QFileInfo(path).suffix().isEmpty()) path += QStringLiteral(".stylos");
@@ -265,7 +265,7 @@ void ProjectActions::chooseProject()
 {
     if (!maybeSave()) return;
     QSettings settings;
-    const QString folder = settings.value(LastDirKey).toString();
+    const QString folder = rememberedFolder();
     const QString path = m_chooseProject ? m_chooseProject(m_window, folder)
                                          : QFileDialog::getOpenFileName(&m_window, tr("Open project"), folder,
                                                                         tr("Stylos projects (*.stylos)"));
@@ -274,11 +274,23 @@ void ProjectActions::chooseProject()
     openProject(path, false); // asked above: Discard there is not asked again (a Save then saved what was discarded)
 }
 
+QString ProjectActions::rememberedFolder()
+{
+    QString folder = QSettings().value(LastDirKey).toString();
+    if (folder.isEmpty()) return {};
+    while (!QFileInfo(folder).isDir() && !folder.isEmpty()) {
+        const QString parent = QFileInfo(folder).path();
+        if (parent == folder) break;
+        folder = parent;
+    }
+    return QFileInfo(folder).isDir() ? QFileInfo(folder).absoluteFilePath() : QString();
+}
+
 void ProjectActions::importScans()
 {
     QSettings settings;
     const QStringList files = QFileDialog::getOpenFileNames(&m_window, tr("Import scans"),
-                                                            settings.value(LastDirKey).toString(),
+                                                            rememberedFolder(),
                                                             widgets::ScanImporter::fileFilter());
     if (files.isEmpty()) return;
     settings.setValue(LastDirKey, QFileInfo(files.first()).absolutePath());

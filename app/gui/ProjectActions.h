@@ -74,6 +74,10 @@ public:
 
     /** @brief Recent projects, most recent first (existing or not). */
     static QStringList recentProjects();
+    /** @brief Where the file choosers open: the folder last chosen in one, or its nearest folder that still exists
+     *         (a project folder moved or deleted since: given as it was, Qt's chooser took its last name for a file
+     *         name, "proj", in the name box); empty when none was remembered. */
+    static QString rememberedFolder();
 
     /** @brief Saving asks before copying more than this many bytes of octrees from outside the cache into the
      *         project's folder (the cache's octrees are always copied: the cache is cleaned). */

@@ -62,6 +62,7 @@ private Q_SLOTS:
     void removesTheSelectionInOneUndoStep();
     void assembliesFromTheSelectionMoveAsOneInTheView();
     void savesAndReopensTheProject();
+    void theFileChoosersOpenInAFolderThatExists();
     void theDemosProjectIsNeverSavedOver();
     void developpeeClickMarksThe3dPointAndBack();
     void computesTheSkydomeOfTheSelection();
@@ -445,6 +446,21 @@ void MainWindowTest::savesAndReopensTheProject()
     QVERIFY(window->document().octree(f.id) != nullptr);
     QVERIFY(!window->isWindowModified());
     QCOMPARE(app::ProjectActions::recentProjects().value(0), QFileInfo(path).absoluteFilePath());
+}
+
+void MainWindowTest::theFileChoosersOpenInAFolderThatExists()
+{
+    // The folder last chosen, moved or deleted since: the choosers open in its nearest existing parent (given as it
+    // was, Qt's chooser put its last name, "proj", in the file-name box of Import scans).
+    QTemporaryDir base;
+    QVERIFY(QDir(base.path()).mkpath(QStringLiteral("site/proj")));
+    const QString proj = base.path() + QStringLiteral("/site/proj");
+    QSettings().setValue(QStringLiteral("files/lastDirectory"), proj);
+    QCOMPARE(app::ProjectActions::rememberedFolder(), QFileInfo(proj).absoluteFilePath());
+    QVERIFY(QDir(proj).removeRecursively());
+    QCOMPARE(app::ProjectActions::rememberedFolder(), QFileInfo(base.path() + QStringLiteral("/site")).absoluteFilePath());
+    QSettings().remove(QStringLiteral("files/lastDirectory"));
+    QCOMPARE(app::ProjectActions::rememberedFolder(), QString());
 }
 
 void MainWindowTest::theDemosProjectIsNeverSavedOver()
