@@ -403,6 +403,13 @@ void GizmoToolTest::theHoveredHandleIsHighlighted()
     move(onX + QPointF(0, 40), {}, Qt::NoButton);
     QVERIFY(!tool()->hovered());
     QCOMPARE(m_view->grabFramebuffer().pixel(device), qRgb(235, 70, 60));
+    // The mouse leaving the view over a handle leaves it unlit (it stayed lit).
+    move(onX, {}, Qt::NoButton);
+    QCOMPARE(tool()->hovered(), std::optional(HandleRole::MoveX));
+    QEvent leave(QEvent::Leave);
+    QCoreApplication::sendEvent(m_view.get(), &leave);
+    QVERIFY(!tool()->hovered());
+    QCOMPARE(m_view->grabFramebuffer().pixel(device), qRgb(235, 70, 60));
     // Without the tool, nothing of the gizmo is drawn.
     m_gizmo->setEnabled(false);
     QVERIFY(m_view->tool() == nullptr);

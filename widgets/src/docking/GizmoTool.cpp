@@ -137,6 +137,13 @@ bool GizmoTool::hover(ViewportWidget& view, QMouseEvent& event)
     return false; // navigation still reports the 3D point under the cursor
 }
 
+void GizmoTool::leave(ViewportWidget& view)
+{
+    if (!m_hovered) return;
+    m_hovered.reset();
+    showState(&view);
+}
+
 bool GizmoTool::keyPress(ViewportWidget& view, QKeyEvent& event)
 {
     if (event.key() == Qt::Key_Escape && m_drag) {

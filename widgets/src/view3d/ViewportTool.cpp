@@ -9,6 +9,7 @@ bool ViewportTool::mousePress(ViewportWidget&, QMouseEvent&) { return false; }
 bool ViewportTool::mouseMove(ViewportWidget&, QMouseEvent&) { return false; }
 bool ViewportTool::mouseRelease(ViewportWidget&, QMouseEvent&) { return false; }
 bool ViewportTool::hover(ViewportWidget&, QMouseEvent&) { return false; }
+void ViewportTool::leave(ViewportWidget&) {}
 bool ViewportTool::wheel(ViewportWidget&, QWheelEvent&) { return false; }
 bool ViewportTool::keyPress(ViewportWidget&, QKeyEvent&) { return false; }
 QCursor ViewportTool::cursor() const { return QCursor(Qt::ArrowCursor); }

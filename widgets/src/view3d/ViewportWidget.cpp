@@ -440,6 +440,13 @@ void ViewportWidget::mouseMoveEvent(QMouseEvent* event)
     if (!consumed) event->ignore();
 }
 
+void ViewportWidget::leaveEvent(QEvent* event)
+{
+    if (m_tool) m_tool->leave(*this);
+    m_navigation.leave(*this);
+    QWidget::leaveEvent(event);
+}
+
 void ViewportWidget::mouseReleaseEvent(QMouseEvent* event)
 {
     if (!offer([&](ViewportTool& tool) { return tool.mouseRelease(*this, *event); })) event->ignore();

@@ -63,6 +63,8 @@ public:
     bool mouseMove(ViewportWidget& view, QMouseEvent& event) override;
     bool mouseRelease(ViewportWidget& view, QMouseEvent& event) override;
     bool hover(ViewportWidget& view, QMouseEvent& event) override;
+    /** No handle is under the mouse once it left the view: none stays highlighted (a drag keeps its own). */
+    void leave(ViewportWidget& view) override;
     bool keyPress(ViewportWidget& view, QKeyEvent& event) override;
     QCursor cursor() const override;
 

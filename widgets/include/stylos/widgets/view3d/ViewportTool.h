@@ -41,6 +41,8 @@ public:
     virtual bool mouseRelease(ViewportWidget& view, QMouseEvent& event);
     /** @brief The mouse moved with no button held. */
     virtual bool hover(ViewportWidget& view, QMouseEvent& event);
+    /** @brief The mouse left the view (what it pointed at is pointed at no more). */
+    virtual void leave(ViewportWidget& view);
     virtual bool wheel(ViewportWidget& view, QWheelEvent& event);
     virtual bool keyPress(ViewportWidget& view, QKeyEvent& event);
 
