@@ -444,3 +444,27 @@ TEST(LasReader, ReadsRealFixtures)
         EXPECT_NE(laz.error().message.find("autzen_trim.laz"), std::string::npos);
     }
 }
+
+TEST(LasReader, ExtraBytesDescriptorsGiveNamedScaledColumns)
+{
+    // Two descriptors: 3 undocumented bytes (type 0, their count in the options), then a signed 16-bit "temp" with
+    // scale 0.1 and offset 20 (options bits 3 and 4); a third, a deprecated array type, ends the list.
+    std::vector<char> d(3 * 192, 0);
+    d[2] = 0, d[3] = 3;
+    char* t = d.data() + 192;
+    t[2] = 4, t[3] = 0x18;
+    std::memcpy(t + 4, "temp", 4);
+    const double scale = 0.1, offset = 20.0;
+    std::memcpy(t + 112, &scale, 8);
+    std::memcpy(t + 136, &offset, 8);
+    d[2 * 192 + 2] = 11;
+    const auto fields = stylos::core::io::lasExtraBytesFields(d.data(), d.size(), 30, 40);
+    ASSERT_EQ(fields.size(), 1u);
+    EXPECT_EQ(fields[0].name, "temp");
+    EXPECT_EQ(fields[0].kind, stylos::core::io::LasScalarField::Kind::I16);
+    EXPECT_EQ(fields[0].offset, 33);
+    EXPECT_EQ(fields[0].scale, 0.1);
+    EXPECT_EQ(fields[0].add, 20.0);
+    // A field past the record's end is left out.
+    EXPECT_TRUE(stylos::core::io::lasExtraBytesFields(d.data(), d.size(), 30, 34).empty());
+}

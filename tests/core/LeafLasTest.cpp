@@ -8,11 +8,13 @@
 
 #include "stylos/core/annotation/LeafLabels.h"
 #include "stylos/core/annotation/LeafLas.h"
+#include "stylos/core/io/PointFileFormat.h"
 #include "stylos/core/io/PointFileSummary.h"
 #include "stylos/core/octree/OctreeBuild.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -117,6 +119,18 @@ TEST(LeafLas, HeaderPointsAndClassesAreExact)
     auto summary = io::summarizePointFile(las);
     ASSERT_TRUE(summary.ok()) << summary.error().message;
     EXPECT_EQ(summary->points, leaves);
+    // Its extra bytes too, as the Extra Bytes VLR names them: the tool-mark byte of every point (it listed none).
+    ASSERT_FALSE(summary->attributes.empty());
+    EXPECT_EQ(summary->attributes.back(), "toolmark");
+    auto reader = io::openPointReader(las);
+    ASSERT_TRUE(reader.ok()) << reader.error().message;
+    auto all = stylos::test::readAllPoints(**reader, 1000);
+    ASSERT_TRUE(all.ok()) << all.error().message;
+    const auto& names = (*reader)->header().schema.scalarNames;
+    const auto column = std::size_t(std::find(names.begin(), names.end(), "toolmark") - names.begin());
+    ASSERT_LT(column, names.size());
+    ASSERT_EQ(all->scalars[column].size(), leaves);
+    for (std::uint64_t i = 0; i < leaves; ++i) ASSERT_EQ(all->scalars[column][i], double(i % 3)) << i;
     const auto again = *p.dir / "again.las";
     ASSERT_TRUE(annotation::exportLeafLas(*octree, {"material", "toolmark"}, annotation::Legend::defaults(), again).ok());
     EXPECT_EQ(stylos::test::readBytes(again), bytes);

@@ -184,6 +184,46 @@ std::optional<LasPointLayout> LasPointLayout::forFormat(unsigned format)
     return l;
 }
 
+std::vector<LasScalarField> lasExtraBytesFields(const char* descriptors, std::size_t bytes, std::size_t firstOffset,
+                                                std::size_t recordLength)
+{
+    using K = LasScalarField::Kind;
+    struct Type {
+        K kind;
+        std::size_t size;
+    };
+    static constexpr Type kTypes[11] = {{K::U8, 0},  {K::U8, 1},  {K::I8, 1},  {K::U16, 2}, {K::I16, 2}, {K::U32, 4},
+                                        {K::I32, 4}, {K::U64, 8}, {K::I64, 8}, {K::F32, 4}, {K::F64, 8}};
+    constexpr std::size_t kDescriptor = 192;
+    std::vector<LasScalarField> fields;
+    std::size_t offset = firstOffset;
+    for (std::size_t at = 0; at + kDescriptor <= bytes; at += kDescriptor) {
+        const char* d = descriptors + at;
+        const auto type = std::uint8_t(d[2]);
+        const auto options = std::uint8_t(d[3]);
+        std::size_t size = 0;
+        if (type == 0) size = options; // undocumented bytes: their count in the options
+        else if (type <= 10) size = kTypes[type].size;
+        else break;                    // the deprecated arrays (11–30) and unknown types: stop reading fields
+        if (size == 0 || offset + size > recordLength) break;
+        if (type != 0) {
+            LasScalarField f;
+            const char* name = d + 4;
+            f.name = std::string(name, std::find(name, name + 32, '\0'));
+            if (f.name.empty()) f.name = "extra_" + std::to_string(fields.size());
+            f.kind = kTypes[type].kind;
+            f.offset = std::uint16_t(offset);
+            if (options & 0x08) f.scale = loadLittleEndian<double>(d + 4 + 32 + 4 + 24 * 3);
+            if (options & 0x10) f.add = loadLittleEndian<double>(d + 4 + 32 + 4 + 24 * 4);
+            if (!std::isfinite(f.scale) || f.scale == 0.0) f.scale = 1.0;
+            if (!std::isfinite(f.add)) f.add = 0.0;
+            fields.push_back(std::move(f));
+        }
+        offset += size;
+    }
+    return fields;
+}
+
 std::vector<LasScalarField> lasScalarFields(const LasPointLayout& layout)
 {
     using K = LasScalarField::Kind;

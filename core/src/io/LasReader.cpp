@@ -20,7 +20,8 @@ std::string byteAt(std::uint64_t offset) { return "byte " + std::to_string(offse
 
 } // namespace
 
-LasReader::LasReader(fs::path path, BufferedFile file, LasHeader las, LasPointLayout layout)
+LasReader::LasReader(fs::path path, BufferedFile file, LasHeader las, LasPointLayout layout,
+                     std::vector<LasScalarField> extraBytes)
     : PointReader(std::move(path), file.size()),
       m_file(std::move(file)),
       m_las(std::move(las)),
@@ -28,6 +29,11 @@ LasReader::LasReader(fs::path path, BufferedFile file, LasHeader las, LasPointLa
       m_fields(lasScalarFields(layout)),
       m_recordsLeft(m_las.pointCount)
 {
+    for (LasScalarField& f : extraBytes) {
+        const bool taken = std::any_of(m_fields.begin(), m_fields.end(), [&f](const LasScalarField& g) { return g.name == f.name; });
+        if (taken) f.name = "extra_" + f.name; // a column name appears once
+        m_fields.push_back(std::move(f));
+    }
     m_header.format = m_las.formatName();
     m_header.declaredPoints = m_las.pointCount;
     m_header.declaredBounds = m_las.bounds;
@@ -53,12 +59,32 @@ Result<std::unique_ptr<PointReader>> LasReader::open(const fs::path& path)
     if (!las) return las.error();
     const auto layout = LasPointLayout::forFormat(las->pointFormat);
     assert(layout && "LasReader::open(): LasHeader::parse() accepted an unknown point format");
+    // The Extra Bytes VLR's descriptors, if any (the VLRs lie between the header and the point data).
+    std::vector<LasScalarField> extra;
+    if (las->recordLength > layout->standardLength && las->offsetToPointData > las->headerSize &&
+        las->offsetToPointData - las->headerSize <= (std::uint32_t(1) << 20) && file->seek(las->headerSize)) {
+        const std::size_t span = las->offsetToPointData - las->headerSize;
+        if (file->fill(span) >= span) {
+            const char* vlrs = file->data();
+            constexpr std::size_t kVlrHeader = 54;
+            for (std::size_t at = 0; at + kVlrHeader <= span;) {
+                const char* v = vlrs + at;
+                const std::string user(v + 2, std::find(v + 2, v + 18, '\0'));
+                const auto record = loadLittleEndian<std::uint16_t>(v + 18);
+                const std::size_t length = loadLittleEndian<std::uint16_t>(v + 20);
+                if (at + kVlrHeader + length > span) break;
+                if (user == "LASF_Spec" && record == 4)
+                    extra = lasExtraBytesFields(v + kVlrHeader, length, layout->standardLength, las->recordLength);
+                at += kVlrHeader + length;
+            }
+        }
+    }
     // Skips the VLRs (and any user data after the header) in one move.
     if (!file->seek(las->offsetToPointData))
         return Error::at(ErrorCode::Unreadable, path.string(), byteAt(las->offsetToPointData),
                          "cannot seek to the point data");
     std::unique_ptr<PointReader> reader(
-        new LasReader(path, std::move(file).value(), std::move(las).value(), *layout));
+        new LasReader(path, std::move(file).value(), std::move(las).value(), *layout, std::move(extra)));
     return reader;
 }
 
@@ -180,7 +206,30 @@ void LasReader::decode(const char* records, std::size_t count, PointBatch& batch
         case K::F64:
             for (std::size_t i = 0; i < count; ++i) column[i] = loadLittleEndian<double>(in + i * length);
             break;
+        case K::I8:
+            for (std::size_t i = 0; i < count; ++i) column[i] = static_cast<std::int8_t>(in[i * length]);
+            break;
+        case K::I16:
+            for (std::size_t i = 0; i < count; ++i) column[i] = loadLittleEndian<std::int16_t>(in + i * length);
+            break;
+        case K::U32:
+            for (std::size_t i = 0; i < count; ++i) column[i] = loadLittleEndian<std::uint32_t>(in + i * length);
+            break;
+        case K::I32:
+            for (std::size_t i = 0; i < count; ++i) column[i] = loadLittleEndian<std::int32_t>(in + i * length);
+            break;
+        case K::U64:
+            for (std::size_t i = 0; i < count; ++i) column[i] = double(loadLittleEndian<std::uint64_t>(in + i * length));
+            break;
+        case K::I64:
+            for (std::size_t i = 0; i < count; ++i) column[i] = double(loadLittleEndian<std::int64_t>(in + i * length));
+            break;
+        case K::F32:
+            for (std::size_t i = 0; i < count; ++i) column[i] = loadLittleEndian<float>(in + i * length);
+            break;
         }
+        if (field.scale != 1.0 || field.add != 0.0)
+            for (std::size_t i = 0; i < count; ++i) column[i] = column[i] * field.scale + field.add;
     }
 }
 

@@ -84,7 +84,7 @@ struct LasPointLayout {
     int gpsTime = -1;                 ///< offset of the GPS time (double), or -1
     int rgb = -1;                     ///< offset of red, green, blue (uint16 each), or -1
     int nir = -1;                     ///< offset of near infrared (uint16), or -1
-    // Wave packet descriptors (formats 4, 5, 9, 10) and extra bytes are not decoded.
+    // Wave packet descriptors (formats 4, 5, 9, 10) are not decoded; extra bytes are (lasExtraBytesFields).
 
     /** The layout of @p format, or nothing for a format above 10. */
     static std::optional<LasPointLayout> forFormat(unsigned format);
@@ -99,13 +99,28 @@ struct LasScalarField {
         Angle8,   ///< signed 8-bit scan angle rank, already in degrees (formats 0–5)
         Angle16,  ///< signed 16-bit scan angle in units of 0.006 degree (formats 6–10)
         F64,      ///< double as is (GPS time)
+        // Extra bytes (LAS 1.4 data types 1–10), then × scale + offset:
+        I8, I16, U32, I32, U64, I64, F32,
     };
     std::string name;
     Kind kind = Kind::U8;
-    std::uint8_t offset = 0;
+    std::uint16_t offset = 0;
     std::uint8_t shift = 0;
     std::uint8_t mask = 0xFF;
+    double scale = 1.0;  ///< extra bytes: value × scale + offset (1 and 0 unless the descriptor says)
+    double add = 0.0;
 };
+
+/**
+ * @brief The extra bytes of each point record that the Extra Bytes VLR (user "LASF_Spec", record 4) describes:
+ *        @p descriptors is that VLR's payload (192 bytes a field), the fields laid out from @p firstOffset (the
+ *        format's standard record length) in order. A field of a documented type (1–10: integers, float, double;
+ *        one value, not the deprecated arrays) becomes a scalar column named as the descriptor names it, with its
+ *        scale and offset applied when its options say so; an undocumented one (type 0, its byte count in the
+ *        options) only moves the offset on. Fields past @p recordLength are left out.
+ */
+std::vector<LasScalarField> lasExtraBytesFields(const char* descriptors, std::size_t bytes, std::size_t firstOffset,
+                                                std::size_t recordLength);
 
 /**
  * @brief The scalar columns a LAS point of @p layout yields, in schema order: intensity,

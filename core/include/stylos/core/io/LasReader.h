@@ -45,7 +45,8 @@ public:
     bool colorsStored8Bit() const { return m_colors8Bit; }
 
 private:
-    LasReader(std::filesystem::path path, BufferedFile file, LasHeader las, LasPointLayout layout);
+    LasReader(std::filesystem::path path, BufferedFile file, LasHeader las, LasPointLayout layout,
+              std::vector<LasScalarField> extraBytes);
     bool sampleColorsAre8Bit() const;
     /** Decodes @p count records at @p records into the batch's points [first, first + count). */
     void decode(const char* records, std::size_t count, PointBatch& batch, std::size_t first) const;
