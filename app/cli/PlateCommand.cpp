@@ -78,7 +78,7 @@ std::string inOptionWords(std::string message)
     message.erase(0, prefix.size());
     for (const auto& [key, option] : kKeys)
         if (message.rfind(key, 0) == 0) return option + message.substr(std::string(key).size());
-    return message;
+    return prefix + message; // a key no option states: the message as it was
 }
 
 /** The one-panel plate of the command line; false with @p problem on a usage error. */
@@ -120,7 +120,11 @@ bool parsePage(CommandLine& cl, cp::PlateSpec& spec, std::string& problem)
         spec.page = *size;
         if (page->find_first_of("xX") != std::string::npos && !cl.value("margin")) spec.marginMm = 0;
     }
-    if (cl.flag("landscape")) spec.landscape = true;
+    // --landscape: the longer side across. A WxH page already so stays as stated (its spec turns it otherwise).
+    if (cl.flag("landscape")) {
+        const bool custom = spec.pageName.find_first_of("xX") != std::string::npos;
+        spec.landscape = !custom || spec.page.widthMm < spec.page.heightMm;
+    }
     long long dpi = spec.dpi, bits = spec.bits;
     double margin = spec.marginMm;
     if (!cl.integer("dpi", dpi) || !cl.integer("bits", bits) || !cl.number("margin", margin)) return problem = cl.error(), false;

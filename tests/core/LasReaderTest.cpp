@@ -453,14 +453,14 @@ TEST(LasReader, ExtraBytesDescriptorsGiveNamedScaledColumns)
     d[2] = 0, d[3] = 3;
     char* t = d.data() + 192;
     t[2] = 4, t[3] = 0x18;
-    std::memcpy(t + 4, "temp", 4);
+    std::memcpy(t + 4, "temp (C)", 8); // a name made fit for a column: "temp__C_"
     const double scale = 0.1, offset = 20.0;
     std::memcpy(t + 112, &scale, 8);
     std::memcpy(t + 136, &offset, 8);
     d[2 * 192 + 2] = 11;
     const auto fields = stylos::core::io::lasExtraBytesFields(d.data(), d.size(), 30, 40);
     ASSERT_EQ(fields.size(), 1u);
-    EXPECT_EQ(fields[0].name, "temp");
+    EXPECT_EQ(fields[0].name, "temp__C_");
     EXPECT_EQ(fields[0].kind, stylos::core::io::LasScalarField::Kind::I16);
     EXPECT_EQ(fields[0].offset, 33);
     EXPECT_EQ(fields[0].scale, 0.1);

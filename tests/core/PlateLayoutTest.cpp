@@ -75,14 +75,9 @@ TEST(PlateSpec, PageNamesAndOrientation)
     s.page = *pageFromName(s.pageName);
     s.landscape = false;
     EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 170); // a print area keeps its stated orientation
-    s.landscape = true; // already landscape: stays so (it was turned to portrait, 105 × 170)
-    EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 170);
-    EXPECT_DOUBLE_EQ(s.orientedPage().heightMm, 105);
-    s.pageName = "200x300";
-    s.page = *pageFromName(s.pageName);
-    EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 300); // landscape: the longer side across
-    s.landscape = false;
-    EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 200); // as stated
+    s.landscape = true; // turned (the plate dialog's "Turned")
+    EXPECT_DOUBLE_EQ(s.orientedPage().widthMm, 105);
+    EXPECT_DOUBLE_EQ(s.orientedPage().heightMm, 170);
 }
 
 TEST(PlateSpec, LayoutFileRoundTripAndErrorsByKey)

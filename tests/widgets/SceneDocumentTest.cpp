@@ -514,6 +514,19 @@ void SceneDocumentTest::theDockingDrumSurvivesSaveAndReopen()
     QVERIFY(reopened.fragment(drum));
     QCOMPARE(reopened.dockingDrum(), stylos::core::scene::NoFragment);
     QVERIFY(reopened.isModified());
+    // Removed with another fragment in one step (a macro): the project is said modified at its end.
+    QVERIFY2(reopened.save(&error), qPrintable(error));
+    QVERIFY(reopened.setDockingDrum(drum));
+    QVERIFY2(reopened.save(&error), qPrintable(error));
+    QVERIFY(!reopened.isModified());
+    QSignalSpy told(&reopened, &SceneDocument::modifiedChanged);
+    reopened.beginMacro([] { return QStringLiteral("Remove 2 fragments"); });
+    QVERIFY(reopened.removeFragment(drum));
+    QVERIFY(reopened.removeFragment(piece));
+    reopened.endMacro();
+    QVERIFY(reopened.isModified());
+    QVERIFY(!told.isEmpty());
+    QCOMPARE(told.last().at(0).toBool(), true);
     // A new project has none.
     QVERIFY(doc.setDockingDrum(drum));
     doc.newProject();

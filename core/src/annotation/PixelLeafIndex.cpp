@@ -61,19 +61,11 @@ std::vector<std::uint32_t> PixelLeafIndex::pixelsOf(std::span<const std::uint32_
         if (const std::int64_t p = pixelOf(leaf); p >= 0) out.push_back(std::uint32_t(p));
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
-    if (m_lender.empty() || out.empty()) return out;
-    // The borrowers of these pixels lie within m_lendReach of them.
+    if (m_borrowerOffsets.empty() || out.empty()) return out;
     const std::size_t owners = out.size();
-    for (std::size_t k = 0; k < owners; ++k) {
-        const int c = int(out[k] % std::uint32_t(m_width)), r = int(out[k] / std::uint32_t(m_width));
-        for (int dr = -m_lendReach; dr <= m_lendReach; ++dr)
-            for (int dc = -m_lendReach; dc <= m_lendReach; ++dc) {
-                const int nc = c + dc, nr = r + dr;
-                if (nc < 0 || nr < 0 || nc >= m_width || nr >= m_height) continue;
-                const std::size_t n = std::size_t(nr) * std::size_t(m_width) + std::size_t(nc);
-                if (m_lender[n] == std::int32_t(out[k]) && n != out[k]) out.push_back(std::uint32_t(n));
-            }
-    }
+    for (std::size_t k = 0; k < owners; ++k) // and the pixels they lend their leaves to
+        out.insert(out.end(), m_borrowers.begin() + m_borrowerOffsets[out[k]],
+                   m_borrowers.begin() + m_borrowerOffsets[out[k] + 1]);
     std::sort(out.begin(), out.end());
     out.erase(std::unique(out.begin(), out.end()), out.end());
     return out;
@@ -84,7 +76,6 @@ void PixelLeafIndex::lendLeaves(std::span<const shading::PixelState> states)
     assert(states.size() == pixelCount() && "PixelLeafIndex::lendLeaves(): one state per pixel");
     const std::size_t pixels = pixelCount();
     m_lender.assign(pixels, -1);
-    m_lendReach = 0;
     std::vector<std::uint8_t> steps(pixels, 0);
     std::vector<std::uint32_t> queue;
     for (std::size_t p = 0; p < pixels; ++p)
@@ -104,12 +95,18 @@ void PixelLeafIndex::lendLeaves(std::span<const shading::PixelState> states)
             if (m_lender[n] >= 0 || states[n] == shading::PixelState::Empty) continue;
             m_lender[n] = m_lender[p];
             steps[n] = std::uint8_t(steps[p] + 1);
-            const int lc = int(std::uint32_t(m_lender[n]) % std::uint32_t(m_width));
-            const int lr = int(std::uint32_t(m_lender[n]) / std::uint32_t(m_width));
-            m_lendReach = std::max({m_lendReach, std::abs(nc - lc), std::abs(nr - lr)});
             queue.push_back(std::uint32_t(n));
         }
     }
+    // Each lender's borrowers (CSR), so that a change of its leaves redraws them without a search.
+    m_borrowerOffsets.assign(pixels + 1, 0);
+    for (std::size_t p = 0; p < pixels; ++p)
+        if (m_lender[p] >= 0 && std::size_t(m_lender[p]) != p) ++m_borrowerOffsets[std::size_t(m_lender[p]) + 1];
+    for (std::size_t p = 0; p < pixels; ++p) m_borrowerOffsets[p + 1] += m_borrowerOffsets[p];
+    m_borrowers.resize(m_borrowerOffsets[pixels]);
+    std::vector<std::uint32_t> cursor(m_borrowerOffsets.begin(), m_borrowerOffsets.end() - 1);
+    for (std::size_t p = 0; p < pixels; ++p)
+        if (m_lender[p] >= 0 && std::size_t(m_lender[p]) != p) m_borrowers[cursor[std::size_t(m_lender[p])]++] = std::uint32_t(p);
 }
 
 std::int64_t PixelLeafIndex::shownPixel(std::uint32_t pixel) const

@@ -1,6 +1,7 @@
 #include "stylos/core/io/LasHeader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <limits>
@@ -209,7 +210,10 @@ std::vector<LasScalarField> lasExtraBytesFields(const char* descriptors, std::si
         if (type != 0) {
             LasScalarField f;
             const char* name = d + 4;
-            f.name = std::string(name, std::find(name, name + 32, '\0'));
+            // A column name as every writer takes it: letters, digits and '_' ("Original cloud index" →
+            // "Original_cloud_index"); none: extra_N.
+            for (const char* c = name; c < name + 32 && *c != '\0'; ++c)
+                f.name += std::isalnum(static_cast<unsigned char>(*c)) && static_cast<unsigned char>(*c) < 128 ? *c : '_';
             if (f.name.empty()) f.name = "extra_" + std::to_string(fields.size());
             f.kind = kTypes[type].kind;
             f.offset = std::uint16_t(offset);

@@ -29,9 +29,17 @@ LasReader::LasReader(fs::path path, BufferedFile file, LasHeader las, LasPointLa
       m_fields(lasScalarFields(layout)),
       m_recordsLeft(m_las.pointCount)
 {
+    // Each extra column's name once, and never a name the points' other properties take (a normal estimated for
+    // them, "nx", would appear twice in the file it is written to).
+    const auto taken = [this](const std::string& name) {
+        static const char* kReserved[] = {"x", "y", "z", "nx", "ny", "nz", "red", "green", "blue", "alpha"};
+        for (const char* r : kReserved)
+            if (name == r) return true;
+        return std::any_of(m_fields.begin(), m_fields.end(), [&name](const LasScalarField& g) { return g.name == name; });
+    };
     for (LasScalarField& f : extraBytes) {
-        const bool taken = std::any_of(m_fields.begin(), m_fields.end(), [&f](const LasScalarField& g) { return g.name == f.name; });
-        if (taken) f.name = "extra_" + f.name; // a column name appears once
+        const std::string base = f.name;
+        for (int n = 2; taken(f.name); ++n) f.name = base + "_" + std::to_string(n);
         m_fields.push_back(std::move(f));
     }
     m_header.format = m_las.formatName();

@@ -81,10 +81,10 @@ std::optional<PageSize> pageFromName(std::string_view name)
 PageSize PlateSpec::orientedPage() const
 {
     const double shorter = std::min(page.widthMm, page.heightMm), longer = std::max(page.widthMm, page.heightMm);
-    // A named page is portrait unless asked; a "WxH" page keeps its stated orientation, and landscape puts its
-    // longer side across (300x200 --landscape is 300 × 200, not turned to portrait).
+    // A named page is portrait unless asked; a "WxH" page keeps its stated orientation, swapped by landscape
+    // (the plate dialog's "Turned"; stylos-cli plate --landscape turns such a page only when it is upright).
     if (pageFromName(pageName) && pageName.find_first_of("xX") != std::string::npos)
-        return landscape ? PageSize{longer, shorter} : page;
+        return landscape ? PageSize{page.heightMm, page.widthMm} : page;
     return landscape ? PageSize{longer, shorter} : PageSize{shorter, longer};
 }
 

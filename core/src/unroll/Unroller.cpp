@@ -217,7 +217,8 @@ Result<Unroller::Attempt> Unroller::rasterise(const PointStats& stats, double cu
     if (m_options.fillHoles) {
         // The gaps between samples inside the footprint, whatever their extent: at a pixel near the spacing they
         // join into networks larger than the holes filled above, which read as cracks.
-        auto gaps = shading::fillFootprintGaps(*field, radius, m_options.holes.connectivity);
+        SubProgress gapStage(m_progress, to, to); // quick: no share of the bar, but it can be cancelled
+        auto gaps = shading::fillFootprintGaps(*field, radius, m_options.holes.connectivity, &gapStage);
         if (!gaps) {
             if (gaps.error().code == ErrorCode::Cancelled) return cancelled();
             return invalid(gaps.error().message);

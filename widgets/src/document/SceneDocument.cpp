@@ -158,6 +158,10 @@ void SceneDocument::beginMacro(const CommandText& text)
 void SceneDocument::endMacro()
 {
     m_undo->endMacro();
+    // A clean state left inside the macro (resetClean: the docking drum removed with its fragment) is said now:
+    // QUndoStack says nothing of it while a macro is open, nor at its end (its clean index is −1 throughout).
+    if (m_cleanReset && isModified()) Q_EMIT modifiedChanged(true);
+    m_cleanReset = false;
 }
 
 void SceneDocument::retranslate()
@@ -664,6 +668,7 @@ std::pair<Fragment, SceneDocument::OctreePtr> SceneDocument::takeFragment(Fragme
     Q_EMIT fragmentRemoved(id);
     if (wasDrum) {
         m_undo->resetClean(); // undoing the removal brings the fragment back, not the docking drum
+        m_cleanReset = true;  // said at the end of a macro that holds the removal (endMacro)
         Q_EMIT dockingDrumChanged(core::scene::NoFragment);
     }
     if (loadDropped && m_loads.empty()) Q_EMIT loadingFinished(std::exchange(m_loadErrors, {}));

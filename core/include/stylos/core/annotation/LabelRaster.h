@@ -65,7 +65,7 @@ Status checkLabelRaster(const LabelRaster& raster, const std::string& rasterName
  * @param visibleDepth metres, finite: only the surface the développée shows — a leaf seen edge-on (its normal
  *        within 17° of the surface's plane, |n · outward| < 0.3: a fracture or bed face) is left out (−1), and so
  *        is one lower (in the map's height) than the highest leaf of its pixel that is not, by more than this (a
- *        fragment's inner break face), or lower than the highest of its pixel's and its 8 neighbours' by more than
+ *        fragment's inner break face), or lower than the highest of the pixels within two of its own by more than
  *        twice this (a pixel of a sparse scan that no outer leaf lands in). Infinite (the default): every leaf,
  *        whatever its height and facing.
  */

@@ -12,7 +12,7 @@
  * leaves' grid) then shows the label of the nearest pixel with leaves, as its height came from its neighbours;
  * without it such pixels showed as unpainted specks inside every painted region. Painting (leavesAt, leavesOf)
  * still takes a pixel's own leaves only. Nearest neighbour only: no id is ever blended.
- * Memory: 4 bytes per leaf twice and 4 bytes per pixel (8 once leaves are lent). Limits: fewer than 2³² leaves and pixels (asserted).
+ * Memory: 4 bytes per leaf twice and 4 bytes per pixel (12 once leaves are lent, and 4 per borrower). Limits: fewer than 2³² leaves and pixels (asserted).
  * Thread-safety: a value; const members are reentrant.
  */
 #include "stylos/core/shading/HeightField.h"
@@ -54,8 +54,9 @@ public:
      *        deterministic). majorityLabel() then shows that pixel's label there, and pixelsOf() includes the borrowers.
      */
     void lendLeaves(std::span<const shading::PixelState> states);
-    /** Steps a pixel's leaves are lent at most: a filled hole's depth (256 pixels: 8 steps) with room to spare. */
-    static constexpr int kMaxLendSteps = 16;
+    /** Steps a pixel's leaves are lent at most: as deep as filling reaches (a 256-pixel hole: 8 steps; gaps inside
+     *  the footprint, shading::fillFootprintGaps, up to its closing radius, 64 pixels). */
+    static constexpr int kMaxLendSteps = 64;
     /** @brief The pixel whose leaves @p pixel shows: itself, its lender, or −1 (no leaf near it). */
     std::int64_t shownPixel(std::uint32_t pixel) const;
 
@@ -71,7 +72,8 @@ private:
     std::vector<std::uint32_t> m_offsets;  ///< pixelCount() + 1
     std::vector<std::uint32_t> m_leaves;   ///< leaves grouped by pixel
     std::vector<std::int32_t> m_lender;    ///< per pixel without leaves, once lent: the pixel it shows, or −1
-    int m_lendReach = 0;                   ///< the most steps (Chebyshev) from a borrower to its lender
+    std::vector<std::uint32_t> m_borrowerOffsets; ///< once lent: pixelCount() + 1, into m_borrowers
+    std::vector<std::uint32_t> m_borrowers;       ///< the pixels each pixel lends its leaves to, grouped by lender
 };
 
 } // namespace stylos::core::annotation

@@ -12,8 +12,9 @@
  *        would only be misjudged if all its sampled colours were darker than 1/256 of full scale.
  *        Scalars (double columns, see lasScalarFields()): intensity, return_number, number_of_returns,
  *        classification, scan_angle (degrees: the rank for formats 0–5, 0.006° units for 6–10),
- *        user_data, point_source_id, gps_time (formats 1, 3–10), nir (formats 8, 10).
- *        VLRs, extra bytes after the standard record, wave packet descriptors (formats 4, 5, 9, 10),
+ *        user_data, point_source_id, gps_time (formats 1, 3–10), nir (formats 8, 10), then the extra bytes
+ *        that an Extra Bytes VLR describes (lasExtraBytesFields; names made unique, never x y z nx ny nz or a
+ *        colour's). Other VLRs, undescribed extra bytes, wave packet descriptors (formats 4, 5, 9, 10),
  *        waveform data and EVLRs are skipped. Points whose position overflows to infinity (an absurd
  *        scale) are skipped and counted.
  *

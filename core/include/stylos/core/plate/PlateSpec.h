@@ -70,7 +70,13 @@ struct PanelSpec {
     /** View "camera": the camera's orientation (unit quaternion w, x, y, z; camera axes → scene axes, as
      *  core/view/Camera.h: the camera looks along its −Z with +Y up). Required for that view, ignored otherwise. */
     std::optional<std::array<double, 4>> camera;
-    bool operator==(const PanelSpec&) const = default;
+    /** What the panel states; shadingStated, a reading's note that is never written, is left out (a plate read
+     *  from a project equals itself read again after a save). */
+    bool operator==(const PanelSpec& o) const
+    {
+        return view == o.view && scale == o.scale && shading == o.shading && layer == o.layer && hatches == o.hatches &&
+               fragment == o.fragment && atMm == o.atMm && camera == o.camera;
+    }
 };
 
 struct PlateSpec {
@@ -88,7 +94,7 @@ struct PlateSpec {
     std::vector<PanelSpec> panels;
 
     /** @brief The page as drawn: a named page portrait, or landscape (its longer side across); a W×H page as
-     *  stated, or with its longer side across in landscape. */
+     *  stated, or turned (width and height swapped) in landscape. */
     PageSize orientedPage() const;
     /** @brief InvalidArgument naming @p source and the key when a value is out of range (see the fields). */
     Status validate(const std::string& source) const;

@@ -41,7 +41,8 @@
  *  7. shading::fillHoles with options.holes (small holes Filled, large ones and regions open to the
  *     border stay Empty) unless fillHoles is false; filledFraction = Filled / (Measured + Filled).
  *  8. The coverage (shading::measureCoverage, closing radius ⌈2 d / s⌉ pixels, at most 64): the share of
- *     the object's footprint that has a height. A given pixel size whose image covers less than
+ *     the object's footprint that has a height. Then, unless fillHoles is false, the gaps inside that
+ *     footprint are Filled whatever their extent (shading::fillFootprintGaps; the coverage is the one before). A given pixel size whose image covers less than
  *     options.minCoverage of it is refused (InvalidArgument, the coverage and the pixel size that works).
  *     The default pixel (with hole filling on), when its image covers less than kDefaultCoverage — scans
  *     merged from many views, whose density varies, as the Happy Buddha's —, is enlarged by 1.25, 1.5, 2

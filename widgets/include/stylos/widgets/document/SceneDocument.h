@@ -320,6 +320,7 @@ private:
     /** The texts of the macros open or on the stack (QUndoStack makes their commands), by command; kept to
      *  the commands on the stack. */
     std::map<const QUndoCommand*, CommandText> m_macroTexts;
+    bool m_cleanReset = false; ///< resetClean() was called since the last endMacro()
     core::scene::Scene m_scene;
     std::map<FragmentId, OctreePtr> m_octrees;
     QString m_octreeCache = defaultOctreeCacheFolder();
