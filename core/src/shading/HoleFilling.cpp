@@ -134,27 +134,23 @@ private:
     std::vector<float> m_values;         ///< per local pixel, once filled
 };
 
-} // namespace
-
-Result<HoleFillReport> fillHoles(HeightField& field, const HoleFillOptions& options, ProgressSink* progress)
+/**
+ * Visits every component of Empty pixels of @p field once, in row order (cancel checked every 64 rows, named
+ * @p what), calling fillOne(hole, pending, report) with the component collected; then writes the values it left
+ * in pending as Filled. Nothing is written on a cancel.
+ */
+template <typename FillOne>
+Result<HoleFillReport> forEachHole(HeightField& field, Connectivity connectivity, ProgressSink* progress,
+                                   const char* what, FillOne fillOne)
 {
-    if (options.maxArea == 0)
-        return Error{ErrorCode::InvalidArgument, "hole filling: the largest hole area must be at least 1 pixel"};
-    if (options.maxDepth < 0)
-        return Error{ErrorCode::InvalidArgument,
-                     "hole filling: negative largest hole depth " + std::to_string(options.maxDepth)};
-    if (options.connectivity != Connectivity::Four && options.connectivity != Connectivity::Eight)
-        return Error{ErrorCode::InvalidArgument, "hole filling: connectivity must be 4 or 8"};
-
     HoleFillReport report;
     const std::span<const PixelState> states = field.states();
     std::vector<std::uint8_t> visited(field.pixelCount(), 0);
     std::vector<std::pair<std::uint32_t, float>> pending;
-    Hole hole(field, int(options.connectivity));
+    Hole hole(field, int(connectivity));
     for (int r = 0; r < field.height(); ++r) {
         if (progress && r % 64 == 0) {
-            if (progress->isCancelRequested())
-                return Error{ErrorCode::Cancelled, "hole filling: cancelled"};
+            if (progress->isCancelRequested()) return Error{ErrorCode::Cancelled, std::string(what) + ": cancelled"};
             progress->update(double(r) / field.height());
         }
         for (int c = 0; c < field.width(); ++c) {
@@ -162,23 +158,7 @@ Result<HoleFillReport> fillHoles(HeightField& field, const HoleFillOptions& opti
             if (visited[i] || states[i] != PixelState::Empty) continue;
             hole.collect(i, visited);
             ++report.holes;
-            if (hole.touchesBorder()) {
-                report.borderPixels += hole.area();
-                continue;
-            }
-            if (hole.area() > options.maxArea) {
-                report.largeHolePixels += hole.area();
-                continue;
-            }
-            const int depth = hole.layer();
-            if (options.maxDepth > 0 && depth > options.maxDepth) {
-                report.largeHolePixels += hole.area();
-                continue;
-            }
-            hole.fill(pending);
-            ++report.filledHoles;
-            report.filledPixels += hole.area();
-            report.deepestFill = std::max(report.deepestFill, depth);
+            fillOne(hole, pending, report);
         }
     }
     std::span<float> heights = field.heights();
@@ -191,49 +171,62 @@ Result<HoleFillReport> fillHoles(HeightField& field, const HoleFillOptions& opti
     return report;
 }
 
+using Pending = std::vector<std::pair<std::uint32_t, float>>;
+
+} // namespace
+
+Result<HoleFillReport> fillHoles(HeightField& field, const HoleFillOptions& options, ProgressSink* progress)
+{
+    if (options.maxArea == 0)
+        return Error{ErrorCode::InvalidArgument, "hole filling: the largest hole area must be at least 1 pixel"};
+    if (options.maxDepth < 0)
+        return Error{ErrorCode::InvalidArgument,
+                     "hole filling: negative largest hole depth " + std::to_string(options.maxDepth)};
+    if (options.connectivity != Connectivity::Four && options.connectivity != Connectivity::Eight)
+        return Error{ErrorCode::InvalidArgument, "hole filling: connectivity must be 4 or 8"};
+    return forEachHole(field, options.connectivity, progress, "hole filling",
+                       [&options](Hole& hole, Pending& pending, HoleFillReport& report) {
+        if (hole.touchesBorder()) {
+            report.borderPixels += hole.area();
+            return;
+        }
+        if (hole.area() > options.maxArea) {
+            report.largeHolePixels += hole.area();
+            return;
+        }
+        const int depth = hole.layer();
+        if (options.maxDepth > 0 && depth > options.maxDepth) {
+            report.largeHolePixels += hole.area();
+            return;
+        }
+        hole.fill(pending);
+        ++report.filledHoles;
+        report.filledPixels += hole.area();
+        report.deepestFill = std::max(report.deepestFill, depth);
+    });
+}
+
 Result<HoleFillReport> fillFootprintGaps(HeightField& field, int radius, Connectivity connectivity, ProgressSink* progress)
 {
     if (radius < 1) return Error{ErrorCode::InvalidArgument, "gap filling: the footprint radius must be at least 1 pixel"};
     if (connectivity != Connectivity::Four && connectivity != Connectivity::Eight)
         return Error{ErrorCode::InvalidArgument, "gap filling: connectivity must be 4 or 8"};
     const std::vector<std::uint8_t> footprint = footprintMask(field, radius);
-    HoleFillReport report;
-    const std::span<const PixelState> states = field.states();
-    std::vector<std::uint8_t> visited(field.pixelCount(), 0);
-    std::vector<std::pair<std::uint32_t, float>> pending;
-    Hole hole(field, int(connectivity));
-    for (int r = 0; r < field.height(); ++r) {
-        if (progress && r % 64 == 0) {
-            if (progress->isCancelRequested()) return Error{ErrorCode::Cancelled, "gap filling: cancelled"};
-            progress->update(double(r) / field.height());
+    return forEachHole(field, connectivity, progress, "gap filling",
+                       [&footprint](Hole& hole, Pending& pending, HoleFillReport& report) {
+        const std::size_t area = hole.area();
+        hole.restrictTo(footprint);
+        if (hole.area() == 0) {
+            report.largeHolePixels += area;
+            return;
         }
-        for (int c = 0; c < field.width(); ++c) {
-            const std::uint32_t i = std::uint32_t(field.index(c, r));
-            if (visited[i] || states[i] != PixelState::Empty) continue;
-            hole.collect(i, visited);
-            ++report.holes;
-            const std::size_t area = hole.area();
-            hole.restrictTo(footprint);
-            if (hole.area() == 0) {
-                report.largeHolePixels += area;
-                continue;
-            }
-            const int depth = hole.layer();
-            hole.fill(pending);
-            ++report.filledHoles;
-            report.filledPixels += hole.reached();
-            report.largeHolePixels += area - hole.reached();
-            report.deepestFill = std::max(report.deepestFill, depth);
-        }
-    }
-    std::span<float> heights = field.heights();
-    std::span<PixelState> writable = field.states();
-    for (const auto& [i, value] : pending) {
-        heights[i] = value;
-        writable[i] = PixelState::Filled;
-    }
-    if (progress) progress->update(1.0);
-    return report;
+        const int depth = hole.layer();
+        hole.fill(pending);
+        ++report.filledHoles;
+        report.filledPixels += hole.reached();
+        report.largeHolePixels += area - hole.reached();
+        report.deepestFill = std::max(report.deepestFill, depth);
+    });
 }
 
 } // namespace stylos::core::shading
