@@ -468,3 +468,39 @@ TEST(LasReader, ExtraBytesDescriptorsGiveNamedScaledColumns)
     // A field past the record's end is left out.
     EXPECT_TRUE(stylos::core::io::lasExtraBytesFields(d.data(), d.size(), 30, 34).empty());
 }
+
+TEST(LasReader, ExtraBytesColumnsAreNamedOnceAndNeverAsANormal)
+{
+    // Format 0 with 3 extra bytes, described as unsigned bytes "nx", "a" and "a" in an Extra Bytes VLR: the columns
+    // come after the standard ones as nx_2 (a normal estimated later takes "nx"), a and a_2, each byte as written.
+    LasSpec spec;
+    std::vector<char> bytes = makeLas([&] { spec.extraBytes = 3; return spec; }(), std::vector<LasPoint>(4));
+    const std::size_t header = LasHeader::minimumHeaderSize(spec.minor);
+    std::vector<char> vlr(54 + 3 * 192, 0);
+    std::memcpy(vlr.data() + 2, "LASF_Spec", 9);
+    put(vlr, 18, std::uint16_t(4));
+    put(vlr, 20, std::uint16_t(3 * 192));
+    const char* names[3] = {"nx", "a", "a"};
+    for (int k = 0; k < 3; ++k) {
+        char* d = vlr.data() + 54 + 192 * k;
+        d[2] = 1; // unsigned char
+        std::memcpy(d + 4, names[k], std::strlen(names[k]));
+    }
+    bytes.insert(bytes.begin() + std::ptrdiff_t(header), vlr.begin(), vlr.end());
+    put(bytes, 96, std::uint32_t(header + vlr.size()));
+    put(bytes, 100, std::uint32_t(1));
+    const std::size_t first = header + vlr.size();
+    const std::size_t length = kStandardLength[0] + 3;
+    for (std::size_t i = 0; i < 4; ++i)
+        for (std::size_t k = 0; k < 3; ++k) bytes[first + i * length + kStandardLength[0] + k] = char(10 * k + i);
+    stylos::test::TempDir dir;
+    auto reader = openBytes(dir, bytes);
+    ASSERT_TRUE(reader.ok()) << reader.error().message;
+    const auto& names_ = (*reader)->header().schema.scalarNames;
+    ASSERT_GE(names_.size(), 3u);
+    EXPECT_EQ(std::vector<std::string>(names_.end() - 3, names_.end()), (std::vector<std::string>{"nx_2", "a", "a_2"}));
+    const PointBatch all = readAll(**reader);
+    ASSERT_EQ(all.size(), 4u);
+    for (std::size_t k = 0; k < 3; ++k)
+        for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(all.scalars[names_.size() - 3 + k][i], double(10 * k + i)) << k << "," << i;
+}
