@@ -207,6 +207,7 @@ void MainWindow::createMenus()
         const Eigen::Quaterniond q = m_viewport->camera().orientation();
         return std::array<double, 4>{q.w(), q.x(), q.y(), q.z()};
     });
+    m_plates->setFragmentSource([this] { return m_sceneDock->currentFragment(); });
 
     // Two toolbars: the project and its undo steps; the view and the tools. Short labels (the full text and the
     // shortcut in each tooltip); on one row while they fit the window, on two when they do not (ToolBarRows).

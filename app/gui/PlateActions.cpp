@@ -106,12 +106,16 @@ void PlateActions::choosePlate()
 {
     const auto sources = sourcesOf(m_document);
     const auto kept = m_document.scene().plate();
-    // Without a kept plate, one sized by the first visible fragment's octree (the one the document holds open).
+    // Without a kept plate, the current fragment's développée (else the first visible one's), sized by its octree
+    // (the one the document holds open), with the layer painted on it.
+    std::string current;
+    if (m_fragment)
+        if (const core::scene::Fragment* f = m_document.scene().find(m_fragment())) current = f->name;
     const cp::PlateSpec start = kept ? *kept : widgets::PlateDialog::defaultSpec(*sources, [this](const cp::PlateFragment& f) {
         for (const core::scene::Fragment& g : m_document.scene().fragments())
             if (g.octreePath == f.path) return m_document.octree(g.id);
         return std::shared_ptr<const core::octree::PackedOctree>();
-    });
+    }, current);
     widgets::PlateDialog dialog(sources, cp::PlateSpec{}, &m_window);
     if (m_camera) dialog.setCurrentCamera(m_camera());
     dialog.setSpec(start);

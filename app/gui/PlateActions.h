@@ -46,6 +46,9 @@ public:
 
     /** @brief Where the dialog reads the 3D view's camera from (offered as "Current view"); none by default. */
     void setCameraSource(std::function<std::optional<std::array<double, 4>>()> camera) { m_camera = std::move(camera); }
+    /** @brief Where the dialog reads the fragment the user works on from (the scene's current row): a project with
+     *         no kept plate opens on that fragment's développée. None by default (the first visible fragment). */
+    void setFragmentSource(std::function<core::scene::FragmentId()> fragment) { m_fragment = std::move(fragment); }
 
     /** @brief Draws @p spec into @p path as a background task (no dialog; automation and tests). */
     void exportPlate(const core::plate::PlateSpec& spec, const QString& path);
@@ -76,6 +79,7 @@ private:
     QAction* m_developpee;
     QAction* m_viewImage;
     std::function<std::optional<std::array<double, 4>>()> m_camera;
+    std::function<core::scene::FragmentId()> m_fragment;
 };
 
 } // namespace stylos::app

@@ -59,10 +59,13 @@ private Q_SLOTS:
     void viewImageIsTheChosenWidthAlongTheCamera();
     void aCancelledExportIsNoError();
     void theDefaultPlateFitsItsPage();
+    void theDefaultPlateShowsTheCurrentFragmentAndItsPaint();
     void aPlateUnrollsAsTheDockDoes();
 
 private:
-    core::scene::FragmentId addDrum(widgets::SceneDocument& document) const;
+    /** Adds the drum's octree (@p octree: another copy of it) as fragment @p name. */
+    core::scene::FragmentId addDrum(widgets::SceneDocument& document, const std::string& name = "Drum 2",
+                                    const QString& octree = {}) const;
     static cp::PlateSpec spec(double scale)
     {
         cp::PlateSpec s;
@@ -78,6 +81,7 @@ private:
 
     QTemporaryDir m_dir;
     QString m_octree;
+    QString m_unpainted; ///< a copy of m_octree that no test saves labels into
 };
 
 void PlateExportTest::initTestCase()
@@ -89,15 +93,19 @@ void PlateExportTest::initTestCase()
     options.depth = 8;
     options.threads = 1;
     QVERIFY(core::octree::buildOctreeFile(scan.toStdString(), m_octree.toStdString(), options).ok());
+    m_unpainted = QDir(m_dir.path()).absoluteFilePath(QStringLiteral("unpainted.poct"));
+    QVERIFY(QFile::copy(m_octree, m_unpainted));
 }
 
-core::scene::FragmentId PlateExportTest::addDrum(widgets::SceneDocument& document) const
+core::scene::FragmentId PlateExportTest::addDrum(widgets::SceneDocument& document, const std::string& name,
+                                                 const QString& octree) const
 {
-    auto opened = core::octree::PackedOctree::open(m_octree.toStdString());
+    const QString path = octree.isEmpty() ? m_octree : octree;
+    auto opened = core::octree::PackedOctree::open(path.toStdString());
     if (!opened) return 0;
     core::scene::Fragment f;
-    f.name = "Drum 2";
-    f.octreePath = m_octree.toStdString();
+    f.name = name;
+    f.octreePath = path.toStdString();
     return document.addFragment(f, std::make_shared<const core::octree::PackedOctree>(std::move(opened).value()));
 }
 
@@ -306,6 +314,49 @@ void PlateExportTest::theDefaultPlateFitsItsPage()
     QCOMPARE(spec.panels[0].scale, 20.0);
     auto fits = plate::composePlate(*sources, spec, {});
     QVERIFY2(fits.ok(), fits.ok() ? "" : fits.error().message.c_str());
+}
+
+// The plate offered when a project has none is of the fragment the user works on (the scene's current row), hidden
+// or not, with the layer painted on it; before, always the first visible fragment with no layer, whatever was
+// selected and painted.
+void PlateExportTest::theDefaultPlateShowsTheCurrentFragmentAndItsPaint()
+{
+    widgets::TaskManager tasks;
+    widgets::SceneDocument document(tasks);
+    // The drum's octree as it was built (another test saves labels into m_octree).
+    const auto drum = addDrum(document, "Drum 2", m_unpainted);
+    const auto piece = addDrum(document, "Piece B", m_unpainted);
+    QVERIFY(drum != 0 && piece != 0);
+    QVERIFY(document.setFragmentVisible(piece, false));
+    const auto paint = [&document](core::scene::FragmentId id, AnnotationLayer layer) {
+        std::vector<std::uint32_t> leaves(3000); // a patch: the first leaves in Morton order
+        for (std::uint32_t i = 0; i < leaves.size(); ++i) leaves[i] = i;
+        return document.setLabels(id, layer, leaves, 2, QStringLiteral("Paint"));
+    };
+    QVERIFY(paint(piece, AnnotationLayer::Toolmark));
+
+    auto sources = app::PlateActions::sourcesOf(document);
+    // No fragment preferred, or one that is not there: the first visible one, unnamed, and nothing painted on it.
+    for (const std::string& preferred : {std::string(), std::string("Nowhere")}) {
+        const cp::PlateSpec plain = widgets::PlateDialog::defaultSpec(*sources, {}, preferred);
+        QCOMPARE(plain.panels.size(), std::size_t{1});
+        QCOMPARE(plain.panels[0].fragment, std::string());
+        QVERIFY(!plain.panels[0].layer);
+        QCOMPARE(plain.panels[0].scale, 20.0);
+    }
+    const cp::PlateSpec chosen = widgets::PlateDialog::defaultSpec(*sources, {}, "Piece B");
+    QCOMPARE(chosen.panels[0].fragment, std::string("Piece B"));
+    QCOMPARE(chosen.panels[0].layer, std::optional(AnnotationLayer::Toolmark));
+    QCOMPARE(chosen.panels[0].scale, 20.0);
+    auto drawn = plate::composePlate(*sources, chosen, {});
+    QVERIFY2(drawn.ok(), drawn.ok() ? "" : drawn.error().message.c_str());
+    const auto& classes = drawn->panels[0].image.classes;
+    QVERIFY(std::count(classes.begin(), classes.end(), std::uint8_t(2)) > 0); // the hidden piece's paint is drawn
+
+    // Material painted too: material comes first.
+    QVERIFY(paint(piece, AnnotationLayer::Material));
+    sources = app::PlateActions::sourcesOf(document);
+    QCOMPARE(widgets::PlateDialog::defaultSpec(*sources, {}, "Piece B").panels[0].layer, std::optional(AnnotationLayer::Material));
 }
 
 // The plate's développée of a fragment is the one the Développée dock shows: the dock's last result's settings

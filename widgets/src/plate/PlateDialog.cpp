@@ -379,23 +379,38 @@ void PlateDialog::setSpec(const cp::PlateSpec& spec)
 
 cp::PlateSpec PlateDialog::defaultSpec(
     const cp::PlateSources& sources,
-    const std::function<std::shared_ptr<const core::octree::PackedOctree>(const cp::PlateFragment&)>& opened)
+    const std::function<std::shared_ptr<const core::octree::PackedOctree>(const cp::PlateFragment&)>& opened,
+    const std::string& preferred)
 {
     cp::PlateSpec spec;
     spec.landscape = true;
     cp::PanelSpec panel;
     panel.scale = 10;
-    // The first fragment's développée at the most detailed usual scale that fits the print area, judged from its
-    // octree's occupied box: π × its wider horizontal side (a whole drum's turn; a fragment's arc is less) by its
-    // height, laid out as the plate would be (the preview then checks the page as drawn). The fragment is the one
-    // the composer unrolls, the first visible one; @p opened gives its octree when the caller holds it open.
-    const auto first = std::find_if(sources.fragments.begin(), sources.fragments.end(),
-                                    [](const cp::PlateFragment& f) { return f.visible && !f.missing && f.isOctree; });
+    // The fragment's développée at the most detailed usual scale that fits the print area, judged from its octree's
+    // occupied box: π × its wider horizontal side (a whole drum's turn; a fragment's arc is less) by its height, laid
+    // out as the plate would be (the preview then checks the page as drawn). The fragment is the preferred one, named
+    // in the panel (the composer draws a named fragment, hidden or not), else the one the composer unrolls for a panel
+    // that names none: the first visible one. @p opened gives its octree when the caller holds it open.
+    const auto usable = [](const cp::PlateFragment& f) { return !f.missing && f.isOctree; };
+    auto chosen = std::find_if(sources.fragments.begin(), sources.fragments.end(),
+                               [&](const cp::PlateFragment& f) { return !preferred.empty() && f.name == preferred; });
+    if (chosen != sources.fragments.end() && usable(*chosen)) panel.fragment = chosen->name;
+    else
+        chosen = std::find_if(sources.fragments.begin(), sources.fragments.end(),
+                              [&](const cp::PlateFragment& f) { return f.visible && usable(f); });
     std::shared_ptr<const core::octree::PackedOctree> octree;
-    if (first != sources.fragments.end()) {
-        if (opened) octree = opened(*first);
+    if (chosen != sources.fragments.end()) {
+        // What the user painted shows: the first layer that holds a class (0 is "unlabelled").
+        for (const auto layer : core::annotation::AllAnnotationLayers) {
+            const auto& labels = chosen->labels[static_cast<std::size_t>(layer)];
+            if (labels && std::any_of(labels->begin(), labels->end(), [](std::uint8_t c) { return c != 0; })) {
+                panel.layer = layer;
+                break;
+            }
+        }
+        if (opened) octree = opened(*chosen);
         if (!octree)
-            if (auto read = core::octree::PackedOctree::open(first->path))
+            if (auto read = core::octree::PackedOctree::open(chosen->path))
                 octree = std::make_shared<const core::octree::PackedOctree>(std::move(read).value());
     }
     if (octree) {
