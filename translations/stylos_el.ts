@@ -2123,6 +2123,88 @@ Do you want to delete it anyway?</source>
     </message>
 </context>
 <context>
+    <name>stylos::widgets::GizmoReadout</name>
+    <message>
+        <source>Along the fragment&apos;s X: %1 mm</source>
+        <translation>Κατά τον X του θραύσματος: %1 mm</translation>
+    </message>
+    <message>
+        <source>Along X: %1 mm</source>
+        <translation>Κατά X: %1 mm</translation>
+    </message>
+    <message>
+        <source>Along the fragment&apos;s Y: %1 mm</source>
+        <translation>Κατά τον Y του θραύσματος: %1 mm</translation>
+    </message>
+    <message>
+        <source>Along Y: %1 mm</source>
+        <translation>Κατά Y: %1 mm</translation>
+    </message>
+    <message>
+        <source>Along the fragment&apos;s Z: %1 mm</source>
+        <translation>Κατά τον Z του θραύσματος: %1 mm</translation>
+    </message>
+    <message>
+        <source>Along Z: %1 mm</source>
+        <translation>Κατά Z: %1 mm</translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s X: %1°</source>
+        <translation>Γύρω από τον X του θραύσματος: %1°</translation>
+    </message>
+    <message>
+        <source>About X: %1°</source>
+        <translation>Γύρω από τον X: %1°</translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s Y: %1°</source>
+        <translation>Γύρω από τον Y του θραύσματος: %1°</translation>
+    </message>
+    <message>
+        <source>About Y: %1°</source>
+        <translation>Γύρω από τον Y: %1°</translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s Z: %1°</source>
+        <translation>Γύρω από τον Z του θραύσματος: %1°</translation>
+    </message>
+    <message>
+        <source>About Z: %1°</source>
+        <translation>Γύρω από τον Z: %1°</translation>
+    </message>
+    <message>
+        <source>Along the drum axis: %1 mm</source>
+        <translation>Κατά τον άξονα του σπονδύλου: %1 mm</translation>
+    </message>
+    <message>
+        <source>Radially: %1 mm</source>
+        <translation>Ακτινικά: %1 mm</translation>
+    </message>
+    <message>
+        <source>Tilt about the radial direction: %1°</source>
+        <translation>Κλίση γύρω από την ακτινική διεύθυνση: %1°</translation>
+    </message>
+    <message>
+        <source>Tilt about the tangent: %1°</source>
+        <translation>Κλίση γύρω από την εφαπτομένη: %1°</translation>
+    </message>
+    <message numerus="yes">
+        <source>About the drum axis: %1° (%n flute(s))</source>
+        <translation>
+            <numerusform>Γύρω από τον άξονα του σπονδύλου: %1° (%n ράβδωση)</numerusform>
+            <numerusform>Γύρω από τον άξονα του σπονδύλου: %1° (%n ραβδώσεις)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>About the drum axis: %1°</source>
+        <translation>Γύρω από τον άξονα του σπονδύλου: %1°</translation>
+    </message>
+    <message>
+        <source>%1 · Esc cancels</source>
+        <translation>%1 · Esc ακυρώνει</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::GuideFitJob</name>
     <message>
         <source>Drum guides of %1</source>

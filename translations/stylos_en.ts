@@ -2117,6 +2117,88 @@ Do you want to delete it anyway?</source>
     </message>
 </context>
 <context>
+    <name>stylos::widgets::GizmoReadout</name>
+    <message>
+        <source>Along the fragment&apos;s X: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along X: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along the fragment&apos;s Y: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along Y: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along the fragment&apos;s Z: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along Z: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s X: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About X: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s Y: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About Y: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s Z: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>About Z: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Along the drum axis: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Radially: %1 mm</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tilt about the radial direction: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Tilt about the tangent: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message numerus="yes">
+        <source>About the drum axis: %1° (%n flute(s))</source>
+        <translation>
+            <numerusform>About the drum axis: %1° (%n flute)</numerusform>
+            <numerusform>About the drum axis: %1° (%n flutes)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>About the drum axis: %1°</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>%1 · Esc cancels</source>
+        <translation type="unfinished"></translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::GuideFitJob</name>
     <message>
         <source>Drum guides of %1</source>

@@ -2123,6 +2123,88 @@ Voulez-vous quand même le supprimer ?</translation>
     </message>
 </context>
 <context>
+    <name>stylos::widgets::GizmoReadout</name>
+    <message>
+        <source>Along the fragment&apos;s X: %1 mm</source>
+        <translation>Selon le X du fragment : %1 mm</translation>
+    </message>
+    <message>
+        <source>Along X: %1 mm</source>
+        <translation>Selon X : %1 mm</translation>
+    </message>
+    <message>
+        <source>Along the fragment&apos;s Y: %1 mm</source>
+        <translation>Selon le Y du fragment : %1 mm</translation>
+    </message>
+    <message>
+        <source>Along Y: %1 mm</source>
+        <translation>Selon Y : %1 mm</translation>
+    </message>
+    <message>
+        <source>Along the fragment&apos;s Z: %1 mm</source>
+        <translation>Selon le Z du fragment : %1 mm</translation>
+    </message>
+    <message>
+        <source>Along Z: %1 mm</source>
+        <translation>Selon Z : %1 mm</translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s X: %1°</source>
+        <translation>Autour du X du fragment : %1°</translation>
+    </message>
+    <message>
+        <source>About X: %1°</source>
+        <translation>Autour de X : %1°</translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s Y: %1°</source>
+        <translation>Autour du Y du fragment : %1°</translation>
+    </message>
+    <message>
+        <source>About Y: %1°</source>
+        <translation>Autour de Y : %1°</translation>
+    </message>
+    <message>
+        <source>About the fragment&apos;s Z: %1°</source>
+        <translation>Autour du Z du fragment : %1°</translation>
+    </message>
+    <message>
+        <source>About Z: %1°</source>
+        <translation>Autour de Z : %1°</translation>
+    </message>
+    <message>
+        <source>Along the drum axis: %1 mm</source>
+        <translation>Le long de l’axe du tambour : %1 mm</translation>
+    </message>
+    <message>
+        <source>Radially: %1 mm</source>
+        <translation>Radialement : %1 mm</translation>
+    </message>
+    <message>
+        <source>Tilt about the radial direction: %1°</source>
+        <translation>Inclinaison autour de la direction radiale : %1°</translation>
+    </message>
+    <message>
+        <source>Tilt about the tangent: %1°</source>
+        <translation>Inclinaison autour de la tangente : %1°</translation>
+    </message>
+    <message numerus="yes">
+        <source>About the drum axis: %1° (%n flute(s))</source>
+        <translation>
+            <numerusform>Autour de l’axe du tambour : %1° (%n cannelure)</numerusform>
+            <numerusform>Autour de l’axe du tambour : %1° (%n cannelures)</numerusform>
+        </translation>
+    </message>
+    <message>
+        <source>About the drum axis: %1°</source>
+        <translation>Autour de l’axe du tambour : %1°</translation>
+    </message>
+    <message>
+        <source>%1 · Esc cancels</source>
+        <translation>%1 · Échap annule</translation>
+    </message>
+</context>
+<context>
     <name>stylos::widgets::GuideFitJob</name>
     <message>
         <source>Drum guides of %1</source>

@@ -26,6 +26,7 @@
 #include "stylos/widgets/annotation/LegendWidget.h"
 #include "stylos/widgets/annotation/PaintToolBar.h"
 #include "stylos/widgets/developpee/DeveloppeeView.h"
+#include "stylos/widgets/docking/GizmoController.h"
 #include "stylos/widgets/document/DemoScene.h"
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
 #include "stylos/widgets/developpee/DeveloppeeSettings.h"
@@ -199,6 +200,19 @@ void MainWindow::createMenus()
     connect(m_developpeeLink, &DeveloppeeLink::fragmentPicked, this,
             [this](quint64 id) { m_sceneDock->selectFragment(core::scene::FragmentId(id)); });
     m_propertiesDock->addContactReadout(m_docking->contact());
+    if (widgets::GizmoController* gizmo = m_docking->gizmo()) {
+        // A gizmo drag says what it has done so far in the status bar; its end takes that line away (not a report
+        // that came meanwhile).
+        connect(gizmo, &widgets::GizmoController::dragReadout, this, [this](const QString& text) {
+            if (!text.isEmpty()) {
+                m_message->showMessage(text);
+                m_dragShown = m_message->message();
+                return;
+            }
+            if (!m_dragShown.isEmpty() && m_message->message() == m_dragShown) m_message->clearMessage();
+            m_dragShown.clear();
+        });
+    }
     m_plates = new PlateActions(*m_document, *m_developpeeDock->panel().view(), *this);
     m_plates->populate(*m_fileMenu, m_projectActions->quitAction());
     connect(m_plates, &PlateActions::reported, this, &MainWindow::report);

@@ -146,6 +146,7 @@ private:
     ToolBarRows* m_toolBarRows = nullptr;
     StatusMessage* m_message = nullptr;
     std::pair<quint64, QString> m_picked; ///< the fragment of the point picked last and the line it showed
+    QString m_dragShown;                  ///< the gizmo drag's readout on show, cleared when the drag ends
     QMenu* m_fileMenu = nullptr;
     bool m_errorDialogs = true;
     bool m_demoPending = false;

@@ -81,6 +81,7 @@ private Q_SLOTS:
     void drumThetaSnapsByTheFlutePitch();
     void drumRadialArrowAndTilts();
     void escapeCancelsTheDrag();
+    void aControllerGoneEndsItsDrag();
     void aDragBackToTheStartLeavesNoStep();
     void aPressOffTheHandlesIsNavigation();
     void theHoveredHandleIsHighlighted();
@@ -189,14 +190,19 @@ void GizmoToolTest::worldArrowSnapsByTheMillimetre()
     lookAt(stylos::core::view::StandardView::Top, centre, 1000); // a pixel is a millimetre
     m_gizmo->setFrame(GizmoFrame::World);
     const int steps = m_document->undoStack()->count();
+    QSignalSpy readout(m_gizmo.get(), &GizmoController::dragReadout);
+    const auto said = [&readout] { return readout.isEmpty() ? QStringLiteral("(nothing)") : readout.last().at(0).toString(); };
     const QPointF onX = pixelOf(centre) + QPointF(60, 0);
     press(onX);
     QVERIFY(tool()->isDragging());
+    QCOMPARE(said(), QStringLiteral("Along X: 0.0 mm · Esc cancels"));
     move(onX + QPointF(10, 4));
     move(onX + QPointF(25, -3));
     move(onX + QPointF(37, 2)); // 37 mm along X; the cursor's drift across the arrow does nothing
+    QCOMPARE(said(), QStringLiteral("Along X: +37.0 mm · Esc cancels"));
     release(onX + QPointF(37, 2));
     QVERIFY(!tool()->isDragging());
+    QCOMPARE(said(), QString()); // the drag ended: the readout goes
     const Eigen::Matrix4d expected = translation({0.037, 0, 0}) * m_start;
     QVERIFY2(near(poseOf(m_pieceId), expected), show(poseOf(m_pieceId)));
     QCOMPARE(m_document->undoStack()->count(), steps + 1);
@@ -263,14 +269,18 @@ void GizmoToolTest::drumThetaSnapsByTheFlutePitch()
     };
     press(onRing(-10)); // on the ring, away from the radial arrow
     QVERIFY(tool()->isDragging());
+    QSignalSpy readout(m_gizmo.get(), &GizmoController::dragReadout);
     move(onRing(7)); // 17° → two flutes, 15°
     QVERIFY2(near(poseOf(m_pieceId), rotationAbout(axisPoint, {0, 0, 1}, 15 * Degree) * m_start), show(poseOf(m_pieceId)));
+    QCOMPARE(readout.last().at(0).toString(), QStringLiteral("About the drum axis: +15.00° (2 flute(s)) · Esc cancels")); // "flutes": the English
+                                                                                             // plural comes with the translator
     move(onRing(10)); // 20° → three flutes, 22.5°
     const Eigen::Matrix4d flutes = rotationAbout(axisPoint, {0, 0, 1}, 22.5 * Degree) * m_start;
     QVERIFY2(near(poseOf(m_pieceId), flutes), show(poseOf(m_pieceId)));
     move(onRing(10.3), Qt::ControlModifier); // Ctrl: by degrees → 20°
     QVERIFY2(near(poseOf(m_pieceId), rotationAbout(axisPoint, {0, 0, 1}, 20 * Degree) * m_start),
              show(poseOf(m_pieceId)));
+    QCOMPARE(readout.last().at(0).toString(), QStringLiteral("About the drum axis: +20.00° · Esc cancels")); // not whole flutes
     move(onRing(10.3 + 3.14), Qt::ControlModifier | Qt::ShiftModifier); // a tenth of 3.14°: 20.614° → 20.6°
     QVERIFY2(near(poseOf(m_pieceId), rotationAbout(axisPoint, {0, 0, 1}, 20.6 * Degree) * m_start),
              show(poseOf(m_pieceId)));
@@ -333,18 +343,40 @@ void GizmoToolTest::escapeCancelsTheDrag()
     lookAt(stylos::core::view::StandardView::Top, centre, 1000);
     m_gizmo->setFrame(GizmoFrame::World);
     const QPointF onX = pixelOf(centre) + QPointF(60, 0);
+    QSignalSpy readout(m_gizmo.get(), &GizmoController::dragReadout);
     press(onX);
     move(onX + QPointF(20, 0));
     move(onX + QPointF(30, 0));
     QVERIFY(near(poseOf(m_pieceId), translation({0.03, 0, 0}) * m_start));
+    QCOMPARE(readout.last().at(0).toString(), QStringLiteral("Along X: +30.0 mm · Esc cancels"));
     QTest::keyClick(m_view.get(), Qt::Key_Escape);
     QVERIFY(!tool()->isDragging());
+    QCOMPARE(readout.last().at(0).toString(), QString()); // cancelled: the readout goes
     QVERIFY(poseOf(m_pieceId) == m_start);
     QCOMPARE(m_document->undoStack()->count(), 2); // the drag left no step
     move(onX + QPointF(45, 0));                     // the rest of that drag does nothing
     release(onX + QPointF(45, 0));
     QVERIFY(poseOf(m_pieceId) == m_start);
     QCOMPARE(m_document->undoStack()->count(), 2);
+}
+
+// The view outlives the controller (a test's, or a window's teardown): the controller takes its tool away with it,
+// cancelling a drag under way, so no later event or tool reaches the controller that is gone (it crashed).
+void GizmoToolTest::aControllerGoneEndsItsDrag()
+{
+    const Eigen::Vector3d centre = (m_start * m_localCentre.homogeneous()).head<3>();
+    lookAt(stylos::core::view::StandardView::Top, centre, 1000);
+    m_gizmo->setFrame(GizmoFrame::World);
+    const QPointF onX = pixelOf(centre) + QPointF(60, 0);
+    press(onX);
+    move(onX + QPointF(20, 0));
+    QVERIFY(near(poseOf(m_pieceId), translation({0.02, 0, 0}) * m_start));
+    m_gizmo.reset();
+    QVERIFY(m_view->tool() == nullptr);
+    QVERIFY(poseOf(m_pieceId) == m_start); // the drag was cancelled
+    move(onX + QPointF(30, 0));
+    release(onX + QPointF(30, 0));
+    QVERIFY(poseOf(m_pieceId) == m_start);
 }
 
 void GizmoToolTest::aDragBackToTheStartLeavesNoStep()

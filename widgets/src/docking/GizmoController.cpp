@@ -3,6 +3,7 @@
 #include "docking/FragmentBounds.h"
 #include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/view/GuideGeometry.h"
+#include "stylos/widgets/docking/GizmoReadout.h"
 #include "stylos/widgets/docking/GizmoTool.h"
 #include "stylos/widgets/view3d/ViewportWidget.h"
 
@@ -27,7 +28,14 @@ GizmoController::GizmoController(SceneDocument& document, ViewportWidget& view, 
     });
 }
 
-GizmoController::~GizmoController() = default;
+GizmoController::~GizmoController()
+{
+    // The view (which may live on) owns the tool: no drag of it may reach this controller once it is gone.
+    if (GizmoTool* t = tool()) {
+        t->setDragObserver({});
+        m_view->resetTool();
+    }
+}
 
 GizmoTool* GizmoController::tool() const
 {
@@ -59,6 +67,15 @@ void GizmoController::setEnabled(bool enabled)
             Q_EMIT frameChanged(int(frame));
         });
     tool->setFrame(m_frame);
+    tool->setDragObserver([this, t = tool.get()](const core::view::GizmoDrag* drag) {
+        if (!drag) {
+            Q_EMIT dragReadout(QString());
+            return;
+        }
+        const auto& target = t->target();
+        const double pitch = target && target->drum ? target->drum->pitch : 0.0;
+        Q_EMIT dragReadout(GizmoReadout::text(drag->handle().role, t->effectiveFrame(), drag->value(), pitch));
+    });
     m_tool = tool.get();
     m_view->setTool(std::move(tool));
     refresh();

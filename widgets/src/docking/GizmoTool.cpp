@@ -98,6 +98,7 @@ bool GizmoTool::mousePress(ViewportWidget& view, QMouseEvent& event)
     m_lastSent = m_target->pose;
     m_hovered = all[*index].role;
     showState(&view);
+    if (m_onDrag) m_onDrag(&*m_drag);
     return true;
 }
 
@@ -111,6 +112,7 @@ bool GizmoTool::mouseMove(ViewportWidget&, QMouseEvent& event)
     const bool continuing = m_lastSent != m_drag->startPose();
     m_lastSent = *pose;
     if (m_onPose) m_onPose(m_dragId, *pose, continuing);
+    if (m_onDrag && m_drag) m_onDrag(&*m_drag); // the owner may have ended the drag (a new target)
     return true;
 }
 
@@ -177,6 +179,7 @@ void GizmoTool::endDrag(bool cancel)
 {
     if (cancel && m_lastSent != m_drag->startPose() && m_onPose) m_onPose(m_dragId, m_drag->startPose(), true);
     m_drag.reset();
+    if (m_onDrag) m_onDrag(nullptr);
 }
 
 void GizmoTool::showState(ViewportWidget* view)

@@ -4,8 +4,9 @@
  *        ("Move tool") and removes it, gives it the current fragment's pose, centre and, when a docking drum
  *        is set (SceneDocument::setDockingDrum), the drum's axis and flute pitch (core::view::drumAxisOf) —
  *        again after every change of the document — and turns each pose the tool hands back into
- *        SceneDocument::setFragmentPose (`continuing` within a drag: one undo step a drag). Setting a docking
- *        drum switches the gizmo to the Drum frame. GUI thread only.
+ *        SceneDocument::setFragmentPose (`continuing` within a drag: one undo step a drag), and says what the
+ *        drag has done so far (dragReadout()). Setting a docking drum switches the gizmo to the Drum frame.
+ *        GUI thread only.
  */
 #include "stylos/core/view/GizmoHandles.h"
 #include "stylos/widgets/document/SceneDocument.h"
@@ -47,6 +48,9 @@ Q_SIGNALS:
     void enabledChanged(bool enabled);
     /** @brief The frame changed (the menu, L in the view, a docking drum set); @p frame: a core::view::GizmoFrame. */
     void frameChanged(int frame);
+    /** @brief What the drag under way has done (GizmoReadout: "Along the drum axis: +12.0 mm · Esc cancels"), at
+     *         its press and each step; empty when it ends. */
+    void dragReadout(const QString& text);
 
 private:
     void refresh();

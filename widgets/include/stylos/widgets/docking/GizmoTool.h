@@ -37,6 +37,8 @@ public:
     using PoseHandler = std::function<void(quint64 id, const Eigen::Matrix4d& pose, bool continuing)>;
     /** Told when the frame changes from the keyboard (L). */
     using FrameHandler = std::function<void(core::view::GizmoFrame frame)>;
+    /** Told at a drag's press, at each pose it hands on and at its end (null: the drag ended or was cancelled). */
+    using DragObserver = std::function<void(const core::view::GizmoDrag* drag)>;
 
     explicit GizmoTool(PoseHandler onPose, FrameHandler onFrame = {});
     ~GizmoTool() override;
@@ -56,6 +58,9 @@ public:
     std::vector<core::view::GizmoHandle> handles(const core::view::Camera& camera) const;
     std::optional<core::view::HandleRole> hovered() const { return m_hovered; }
     bool isDragging() const { return m_drag.has_value(); }
+    /** @brief The drag under way; null when none. */
+    const core::view::GizmoDrag* drag() const { return m_drag ? &*m_drag : nullptr; }
+    void setDragObserver(DragObserver observer) { m_onDrag = std::move(observer); }
 
     void activate(ViewportWidget& view) override;
     void deactivate(ViewportWidget& view) override;
@@ -76,6 +81,7 @@ private:
 
     PoseHandler m_onPose;
     FrameHandler m_onFrame;
+    DragObserver m_onDrag;
     std::shared_ptr<GizmoOverlay> m_overlay;
     ViewportWidget* m_view = nullptr;   ///< while active
     quint64 m_id = 0;
