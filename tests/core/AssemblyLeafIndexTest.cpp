@@ -118,5 +118,61 @@ TEST(AssemblyLeafIndexTest, APixelShowsItsPiecesMajority)
     EXPECT_EQ(index.majorityLabel(8, [&](std::uint64_t) { return std::span<const std::uint8_t>(stale); }), 0);
 }
 
+// With the field's states, each piece lends its leaves to the pixels it shows with a height but no leaf (filled),
+// through its own pixels only: before, such pixels showed no class on an assembly's développée (specks in a painted
+// region), while a fragment's own développée lent them.
+TEST(AssemblyLeafIndexTest, APieceLendsItsLeavesToItsFilledPixelsOnly)
+{
+    // 6 × 4: piece 7 shows columns 2..4 of rows 1..2 (8, 9, 10, 14, 15, 16) and has leaves at 8 and 9 only; the drum
+    // has leaves at every pixel but 0, 1 (filled) and 23 (no height), and those under the piece.
+    using shading::PixelState;
+    auto at = std::make_shared<std::vector<std::uint64_t>>(24, 0);
+    for (std::uint32_t p : {8u, 9u, 10u, 14u, 15u, 16u}) (*at)[p] = 7;
+    std::vector<PixelState> states(24, PixelState::Measured);
+    for (std::uint32_t p : {0u, 1u, 10u, 14u, 15u, 16u}) states[p] = PixelState::Filled;
+    states[23] = PixelState::Empty;
+    std::vector<std::int64_t> drum;
+    for (std::int64_t p = 2; p < 23; ++p) drum.push_back(p); // leaf l at pixel l + 2
+    const auto make = [&](std::span<const PixelState> with) {
+        return AssemblyLeafIndex::build(6, 4, at, {{0, drum, Eigen::Isometry3d::Identity(), "drum"},
+                                                        {7, {8, 9}, Eigen::Isometry3d::Identity(), "fragment"}}, with);
+    };
+    const std::vector<std::uint8_t> drumLabels(21, 1);
+    const std::vector<std::uint8_t> pieceLabels{2, 3};
+    const auto labelsOf = [&](std::uint64_t id) {
+        return id == 0 ? std::span<const std::uint8_t>(drumLabels) : std::span<const std::uint8_t>(pieceLabels);
+    };
+
+    const AssemblyLeafIndex without = make({});
+    for (std::uint32_t p : {0u, 1u, 10u, 14u, 15u, 16u}) EXPECT_EQ(without.majorityLabel(p, labelsOf), 0) << p;
+
+    const AssemblyLeafIndex with = make(states);
+    const auto* piece = with.find(7);
+    ASSERT_NE(piece, nullptr);
+    EXPECT_EQ(piece->left, 2); // the window spans the pixels the piece shows, not only its leaves'
+    EXPECT_EQ(piece->index.width(), 3);
+    EXPECT_EQ(piece->index.height(), 2);
+    EXPECT_EQ(with.majorityLabel(8, labelsOf), 2);
+    EXPECT_EQ(with.majorityLabel(9, labelsOf), 3);
+    EXPECT_EQ(with.majorityLabel(10, labelsOf), 3); // beside 9
+    EXPECT_EQ(with.majorityLabel(14, labelsOf), 2); // below 8
+    EXPECT_EQ(with.majorityLabel(15, labelsOf), 2); // diagonal to 8 and below 9: the first met in pixel order
+    EXPECT_EQ(with.majorityLabel(16, labelsOf), 3); // diagonal to 9
+    EXPECT_EQ(with.majorityLabel(0, labelsOf), 1);  // the drum's filled pixels take the drum's nearest leaves
+    EXPECT_EQ(with.majorityLabel(1, labelsOf), 1);
+    EXPECT_EQ(with.majorityLabel(23, labelsOf), 0); // no height: nothing
+    EXPECT_EQ(with.shownPixel(15), 8);
+    EXPECT_EQ(with.shownPixel(16), 9);
+    EXPECT_EQ(with.shownPixel(9), 9);
+    EXPECT_EQ(with.shownPixel(0), 6); // its neighbour below (1 borrows from 2)
+    EXPECT_EQ(with.shownPixel(1), 2);
+    EXPECT_EQ(with.shownPixel(23), -1);
+    EXPECT_EQ(without.shownPixel(15), -1);
+    // A change of the piece's leaf 1 redraws its pixel and its borrowers, in the image's pixels.
+    EXPECT_EQ(with.pixelsOf(7, std::vector<std::uint32_t>{1}), (std::vector<std::uint32_t>{9, 10, 16}));
+    // Painting takes the painted pixels' own leaves only.
+    EXPECT_EQ(with.leavesOf(7, std::vector<std::uint32_t>{10, 16}), (std::vector<std::uint32_t>{}));
+}
+
 } // namespace
 } // namespace stylos::core::annotation

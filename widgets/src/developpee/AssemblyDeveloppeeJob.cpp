@@ -64,7 +64,7 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
     auto pieceAt = std::make_shared<const std::vector<std::uint64_t>>(std::move(made->pieceAt));
     result.pieceAt = pieceAt;
     core::SubProgress indexing(progress, 0.9, 1.0);
-    auto index = leafIndex(*result.map, std::move(pieceAt), progress ? &indexing : nullptr);
+    auto index = leafIndex(*result.map, std::move(pieceAt), result.heights->states(), progress ? &indexing : nullptr);
     if (!index && index.error().code == core::ErrorCode::Cancelled) return index.error();
     if (index) result.assemblyIndex = std::make_shared<const core::annotation::AssemblyLeafIndex>(std::move(index).value());
     if (progress) progress->update(1.0);
@@ -73,7 +73,7 @@ core::Result<DeveloppeeResult> AssemblyDeveloppeeJob::run(core::ProgressSink* pr
 
 core::Result<core::annotation::AssemblyLeafIndex>
 AssemblyDeveloppeeJob::leafIndex(const core::unroll::UnrollMap& map, std::shared_ptr<const std::vector<std::uint64_t>> pieceAt,
-                                 core::ProgressSink* progress) const
+                                 std::span<const core::shading::PixelState> states, core::ProgressSink* progress) const
 {
     // The drum (id 0 in pieceAt) and each fragment: their leaves, posed into the drum's frame, on the shared map.
     std::vector<core::annotation::AssemblyLeafIndex::PieceLeaves> pieces;
@@ -92,7 +92,9 @@ AssemblyDeveloppeeJob::leafIndex(const core::unroll::UnrollMap& map, std::shared
         if (!pixels) return pixels.error();
         pieces.push_back({k == 0 ? 0 : m_pieces[k - 1].fragmentId, std::move(pixels).value(), pose, path.toStdString()});
     }
-    return core::annotation::AssemblyLeafIndex::build(map.width(), map.height(), std::move(pieceAt), std::move(pieces));
+    // Lending only where the field's states are the image's (they are: one field, one map).
+    if (states.size() != std::size_t(map.width()) * std::size_t(map.height())) states = {};
+    return core::annotation::AssemblyLeafIndex::build(map.width(), map.height(), std::move(pieceAt), std::move(pieces), states);
 }
 
 void AssemblyDeveloppeeJob::operator()(QPromise<DeveloppeeResult>& promise, core::ProgressSink& progress) const

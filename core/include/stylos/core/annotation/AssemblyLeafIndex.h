@@ -61,9 +61,13 @@ public:
     };
 
     AssemblyLeafIndex() = default;
-    /** @brief See the file comment. @p pieceAt: width × height (asserted); ids must be distinct (asserted). */
+    /** @brief See the file comment. @p pieceAt: width × height (asserted); ids must be distinct (asserted).
+     *         With @p states (the développée's height field's, width × height, asserted), each piece also lends its
+     *         leaves (PixelLeafIndex::lendLeaves) to the pixels it shows with a height but no leaf of its own
+     *         (filled, or a gap between its leaves), never across another piece's pixels: a piece's window then
+     *         also spans every pixel it shows. */
     static AssemblyLeafIndex build(int width, int height, std::shared_ptr<const std::vector<std::uint64_t>> pieceAt,
-                                   std::vector<PieceLeaves> pieces);
+                                   std::vector<PieceLeaves> pieces, std::span<const shading::PixelState> states = {});
 
     int width() const { return m_width; }
     int height() const { return m_height; }
@@ -80,8 +84,12 @@ public:
     std::vector<std::uint32_t> leavesOf(std::uint64_t id, std::span<const std::uint32_t> pixels) const;
     /** @brief The image pixels piece @p id shows @p leaves at: ascending, unique. */
     std::vector<std::uint32_t> pixelsOf(std::uint64_t id, std::span<const std::uint32_t> leaves) const;
+    /** @brief The image pixel whose leaves of its shown piece @p pixel shows: itself, the pixel that lends it
+     *         them (build() with states), or −1 (none). */
+    std::int64_t shownPixel(std::uint32_t pixel) const;
     /** @brief The label image pixel @p pixel shows: the majority of its shown piece's leaves there (as
-     *         PixelLeafIndex::majorityLabel), by @p labelsOf(id) — that piece's labels, or an empty span (0). */
+     *         PixelLeafIndex::majorityLabel; a borrower its lender's), by @p labelsOf(id) — that piece's labels, or
+     *         an empty span (0). */
     template <class LabelsOf> std::uint8_t majorityLabel(std::uint32_t pixel, LabelsOf&& labelsOf) const
     {
         const Piece* piece = find(shownAt(pixel));

@@ -38,10 +38,12 @@ public:
     core::Result<DeveloppeeResult> run(core::ProgressSink* progress = nullptr) const;
 
 private:
-    /** The pixel ↔ leaf index of the drum and every piece on @p map (the développée's); Unsupported for a
-     *  source that is not a `.poct`, the octree's errors, Cancelled. */
+    /** The pixel ↔ leaf index of the drum and every piece on @p map (the développée's), each piece lending its
+     *  leaves to its pixels with a height in @p states but no leaf; Unsupported for a source that is not a `.poct`,
+     *  the octree's errors, Cancelled. */
     core::Result<core::annotation::AssemblyLeafIndex> leafIndex(const core::unroll::UnrollMap& map,
                                                                 std::shared_ptr<const std::vector<std::uint64_t>> pieceAt,
+                                                                std::span<const core::shading::PixelState> states,
                                                                 core::ProgressSink* progress) const;
 
     QString m_drumPath;
