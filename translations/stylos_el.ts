@@ -807,6 +807,14 @@ Do you want to delete it anyway?</source>
         <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
         <translation>Πληκτρολογήστε το σημείο και την κατεύθυνση του οδηγού άξονα του επιλεγμένου θραύσματος</translation>
     </message>
+    <message>
+        <source>&amp;Reverse axis</source>
+        <translation>&amp;Αντιστροφή άξονα</translation>
+    </message>
+    <message>
+        <source>Turn the selected fragment&apos;s axis guide end for end: a drum lying on its side whose développée came out upside down unrolls the right way up</source>
+        <translation>Αντιστροφή του οδηγού άξονα του επιλεγμένου θραύσματος: ένας πλαγιασμένος σπόνδυλος του οποίου το ανάπτυγμα βγήκε ανάποδα αναπτύσσεται σωστά</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::LegendDock</name>
@@ -1401,6 +1409,14 @@ Do you want to delete it anyway?</source>
     <message>
         <source>Edit the axis of %1</source>
         <translation>Επεξεργασία του άξονα του %1</translation>
+    </message>
+    <message>
+        <source>Reverse the axis of %1</source>
+        <translation>Αντιστροφή του άξονα του %1</translation>
+    </message>
+    <message>
+        <source>The axis of %1 now points the other way: its développée turns upside down</source>
+        <translation>Ο άξονας του %1 δείχνει τώρα προς την άλλη κατεύθυνση: το ανάπτυγμά του αναποδογυρίζει</translation>
     </message>
 </context>
 <context>

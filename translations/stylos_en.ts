@@ -801,6 +801,14 @@ Do you want to delete it anyway?</source>
         <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>&amp;Reverse axis</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Turn the selected fragment&apos;s axis guide end for end: a drum lying on its side whose développée came out upside down unrolls the right way up</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::LegendDock</name>
@@ -1394,6 +1402,14 @@ Do you want to delete it anyway?</source>
     </message>
     <message>
         <source>Edit the axis of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>Reverse the axis of %1</source>
+        <translation type="unfinished"></translation>
+    </message>
+    <message>
+        <source>The axis of %1 now points the other way: its développée turns upside down</source>
         <translation type="unfinished"></translation>
     </message>
 </context>

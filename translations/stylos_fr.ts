@@ -807,6 +807,14 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>Type the point and direction of the selected fragment&apos;s axis guide</source>
         <translation>Saisir le point et la direction du guide d’axe du fragment sélectionné</translation>
     </message>
+    <message>
+        <source>&amp;Reverse axis</source>
+        <translation>&amp;Inverser l’axe</translation>
+    </message>
+    <message>
+        <source>Turn the selected fragment&apos;s axis guide end for end: a drum lying on its side whose développée came out upside down unrolls the right way up</source>
+        <translation>Retourner bout pour bout le guide d’axe du fragment sélectionné : un tambour couché dont la développée est sortie à l’envers se déroule à l’endroit</translation>
+    </message>
 </context>
 <context>
     <name>stylos::app::LegendDock</name>
@@ -1401,6 +1409,14 @@ Voulez-vous quand même le supprimer ?</translation>
     <message>
         <source>Edit the axis of %1</source>
         <translation>Modifier l’axe de %1</translation>
+    </message>
+    <message>
+        <source>Reverse the axis of %1</source>
+        <translation>Inverser l’axe de %1</translation>
+    </message>
+    <message>
+        <source>The axis of %1 now points the other way: its développée turns upside down</source>
+        <translation>L’axe de %1 pointe maintenant dans l’autre sens : sa développée se retourne</translation>
     </message>
 </context>
 <context>

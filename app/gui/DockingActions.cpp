@@ -1,5 +1,6 @@
 #include "DockingActions.h"
 
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/view/GuideGeometry.h"
 #include "stylos/widgets/docking/AxisGuideEditor.h"
 #include "stylos/widgets/docking/ContactMonitor.h"
@@ -24,6 +25,7 @@ DockingActions::DockingActions(widgets::SceneDocument& document, widgets::Viewpo
       m_contact(new widgets::ContactMonitor(document, *m_cache, this)), m_moveTool(new QAction(this)),
       m_frames(new QActionGroup(this)), m_dockAgainst(new QAction(this)), m_dockToFlutes(new QAction(this)),
       m_fitGuides(new QAction(this)), m_setAxis(new QAction(this)), m_editAxis(new QAction(this)),
+      m_reverseAxis(new QAction(this)),
       m_axisEditor(new widgets::AxisGuideEditor(document, viewport, this)), m_window(window),
       m_deleteGuides(new QAction(this)), m_showGuides(new QAction(this))
 {
@@ -137,6 +139,8 @@ void DockingActions::createAxisEditing(widgets::ViewportWidget* viewport)
         m_axisEditor->startPicking(m_fragment);
     });
     connect(m_editAxis, &QAction::triggered, this, [this] { m_axisEditor->editAxis(m_fragment, &m_window); });
+    m_reverseAxis->setObjectName(QStringLiteral("actionReverseAxis"));
+    connect(m_reverseAxis, &QAction::triggered, this, [this] { m_axisEditor->reverseAxis(m_fragment); });
     connect(m_axisEditor, &widgets::AxisGuideEditor::reported, this, &DockingActions::reported);
 }
 
@@ -156,6 +160,7 @@ void DockingActions::populate(QMenu& tools, QMenu& view)
     tools.addAction(m_fitGuides);
     tools.addAction(m_setAxis);
     tools.addAction(m_editAxis);
+    tools.addAction(m_reverseAxis);
     tools.addAction(m_deleteGuides);
     view.addAction(m_showGuides);
     retranslateUi();
@@ -180,6 +185,7 @@ void DockingActions::updateEnabled()
     m_fitGuides->setEnabled(f != nullptr);
     m_setAxis->setEnabled(f != nullptr && m_gizmo != nullptr);
     m_editAxis->setEnabled(f != nullptr);
+    m_reverseAxis->setEnabled(f && core::scene::firstGuide(*f, core::scene::GuideKind::Axis).has_value());
     m_deleteGuides->setEnabled(f && !f->guides.empty());
 }
 
@@ -207,6 +213,9 @@ void DockingActions::retranslateUi()
                                "them (Escape cancels)"));
     m_editAxis->setText(tr("&Edit axis…"));
     m_editAxis->setStatusTip(tr("Type the point and direction of the selected fragment's axis guide"));
+    m_reverseAxis->setText(tr("&Reverse axis"));
+    m_reverseAxis->setStatusTip(tr("Turn the selected fragment's axis guide end for end: a drum lying on its side "
+                                   "whose développée came out upside down unrolls the right way up"));
     m_deleteGuides->setText(tr("De&lete guides"));
     m_deleteGuides->setStatusTip(tr("Remove the axis and flute guides of the selected fragment"));
     m_showGuides->setText(tr("Show &guides"));

@@ -57,6 +57,7 @@ public:
     QAction* fitGuidesAction() const { return m_fitGuides; }
     QAction* setAxisAction() const { return m_setAxis; }
     QAction* editAxisAction() const { return m_editAxis; }
+    QAction* reverseAxisAction() const { return m_reverseAxis; }
     widgets::AxisGuideEditor& axisEditor() const { return *m_axisEditor; }
     QAction* showGuidesAction() const { return m_showGuides; }
     QAction* dockToFlutesAction() const { return m_dockToFlutes; }
@@ -90,6 +91,7 @@ private:
     QAction* m_fitGuides;
     QAction* m_setAxis;
     QAction* m_editAxis;
+    QAction* m_reverseAxis;
     widgets::AxisGuideEditor* m_axisEditor;
     QWidget& m_window;
     QAction* m_deleteGuides;

@@ -40,6 +40,7 @@ private Q_SLOTS:
     void twoClicksSetTheAxisAsOneUndoStep();
     void escapeCancels();
     void theDialogRefusesAZeroDirection();
+    void reverseTurnsTheAxisEndForEnd();
 
 private:
     void click(const QPoint& p) { QTest::mouseClick(m_view.get(), Qt::LeftButton, {}, p); }
@@ -170,6 +171,32 @@ void AxisGuideTest::theDialogRefusesAZeroDirection()
     QCOMPARE(guides[1].kind, scene::GuideKind::Groove);
     m_document->undoStack()->undo();
     QCOMPARE(m_document->fragment(m_id)->guides.size(), std::size_t(1));
+}
+
+// "Reverse axis": a drum lying on its side gets the axis sign "largest world component positive" from the fit, which
+// may point down; the user turns it over: the same line, the opposite direction, the flute guides kept, one step.
+void AxisGuideTest::reverseTurnsTheAxisEndForEnd()
+{
+    QVERIFY(!m_editor->reverseAxis(m_id)); // no axis guide yet: nothing
+    QCOMPARE(m_document->undoStack()->count(), 0);
+    QVERIFY(m_editor->setAxis(m_id, {0.1, 0.2, 0.3}, {0.0, -3.0, 4.0}, QStringLiteral("axis")));
+    QSignalSpy reported(m_editor.get(), &AxisGuideEditor::reported);
+    QVERIFY(m_editor->reverseAxis(m_id));
+    QCOMPARE(m_document->undoStack()->count(), 2);
+    QCOMPARE(m_document->undoStack()->undoText(), QStringLiteral("Reverse the axis of drum"));
+    const auto& guides = m_document->fragment(m_id)->guides;
+    QCOMPARE(guides.size(), std::size_t(2));
+    QCOMPARE(guides[0].kind, scene::GuideKind::Axis);
+    QCOMPARE(guides[1].name, std::string("Flute 1"));
+    QCOMPARE(guides[0].origin, (std::array<double, 3>{0.1, 0.2, 0.3}));
+    QCOMPARE(guides[0].direction, (std::array<double, 3>{-0.0, 0.6, -0.8}));
+    QCOMPARE(reported.size(), 1);
+    QCOMPARE(reported.at(0).at(1).toBool(), false);
+    QVERIFY(m_editor->reverseAxis(m_id)); // and back
+    QCOMPARE(m_document->fragment(m_id)->guides[0].direction, (std::array<double, 3>{0.0, -0.6, 0.8}));
+    m_document->undoStack()->undo();
+    m_document->undoStack()->undo();
+    QCOMPARE(m_document->fragment(m_id)->guides[0].direction, (std::array<double, 3>{0.0, -0.6, 0.8}));
 }
 
 STYLOS_WIDGET_TEST_MAIN(AxisGuideTest)

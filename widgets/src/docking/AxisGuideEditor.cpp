@@ -97,6 +97,17 @@ void AxisGuideEditor::picked(FragmentId id, const Eigen::Vector3d& a, const Eige
                         false);
 }
 
+bool AxisGuideEditor::reverseAxis(FragmentId id)
+{
+    const core::scene::Fragment* f = m_document.fragment(id);
+    const auto line = f ? core::scene::firstGuide(*f, core::scene::GuideKind::Axis) : std::nullopt;
+    if (!line) return false;
+    const QString name = QString::fromStdString(f->name);
+    if (!setAxis(id, line->origin, -line->direction, tr("Reverse the axis of %1").arg(name))) return false;
+    Q_EMIT reported(tr("The axis of %1 now points the other way: its développée turns upside down").arg(name), false);
+    return true;
+}
+
 EditAxisDialog* AxisGuideEditor::editAxis(FragmentId id, QWidget* parent)
 {
     const core::scene::Fragment* f = m_document.fragment(id);

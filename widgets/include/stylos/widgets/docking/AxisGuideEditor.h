@@ -3,7 +3,7 @@
  * @brief Axis guides made in the workbench: "Set axis from two points" installs an AxisPickTool on the 3D view for
  *        a fragment, and the two points it hands back become the fragment's axis guide (through them, from the
  *        first to the second, in its own frame); "Edit axis…" opens an EditAxisDialog on the fragment's axis guide
- *        (or a vertical one through its origin). Either replaces the fragment's first Axis guide (its flute guides
+ *        (or a vertical one through its origin); "Reverse axis" turns it end for end. Each replaces the fragment's first Axis guide (its flute guides
  *        kept), or adds one in front, as one undo step (SceneDocument::setFragmentGuides). GUI thread only.
  */
 #include "stylos/core/scene/Fragment.h"
@@ -47,6 +47,11 @@ public:
     bool isPicking() const;
     /** @brief Gives the view back to navigation (as Escape does). */
     void cancelPicking();
+
+    /** @brief Turns @p id's axis guide end for end (the same line, the opposite direction) as one undo step: a drum
+     *         whose fitted axis points down (one lying on its side, where nothing in a cylinder tells up from down)
+     *         then unrolls the right way up. False (nothing changed) without an axis guide. */
+    bool reverseAxis(FragmentId id);
 
     /** @brief Opens the dialog for @p id's axis (not modal; OK sets it); null for an unknown fragment. */
     EditAxisDialog* editAxis(FragmentId id, QWidget* parent);
