@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <utility>
 
 namespace stylos::core::image {
 
@@ -50,6 +51,19 @@ OIIO::ImageSpec specOf(const ImageHeader& header)
     return spec;
 }
 
+/** Whether the PNG file at @p path ends with its IEND chunk: libpng does not report a short write (a full disk), and
+ *  the file it leaves then stops short of that last chunk. */
+bool pngComplete(const std::string& path)
+{
+    static constexpr unsigned char iend[12] = {0, 0, 0, 0, 'I', 'E', 'N', 'D', 0xAE, 0x42, 0x60, 0x82};
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (!file) return false;
+    unsigned char tail[12] = {};
+    const bool read = std::fseek(file, -12, SEEK_END) == 0 && std::fread(tail, 1, sizeof tail, file) == sizeof tail;
+    std::fclose(file);
+    return read && std::memcmp(tail, iend, sizeof tail) == 0;
+}
+
 class Writer final : public ImageFileWriter {
 public:
     explicit Writer(std::unique_ptr<OIIO::ImageOutput> out) : m_out(std::move(out)) {}
@@ -62,6 +76,8 @@ public:
     {
         const OIIO::ImageSpec spec = specOf(header);
         errno = 0; // so that the reason kept on failure is this call's
+        m_path = path;
+        m_problem.clear();
         return track(m_open = m_out->open(path, spec));
     }
     bool writeScanline(int y, ImageSample sample, const void* samples) override
@@ -78,10 +94,16 @@ public:
     {
         m_open = false;
         errno = 0;
-        return track(m_out->close());
+        if (!track(m_out->close())) return false;
+        if (std::strcmp(m_out->format_name(), "png") == 0 && !pngComplete(m_path)) {
+            m_problem = "the file was cut short (is the disk full?)";
+            return false;
+        }
+        return true;
     }
     std::string takeError() override
     {
+        if (!m_problem.empty()) return std::exchange(m_problem, std::string());
         std::string message = withReason(m_out->geterror(), m_errno);
         m_errno = 0;
         return message;
@@ -95,6 +117,8 @@ private:
     }
 
     std::unique_ptr<OIIO::ImageOutput> m_out;
+    std::string m_path;
+    std::string m_problem; ///< a failure found after the library's close (a PNG cut short)
     bool m_open = false;
     int m_errno = 0;
 };

@@ -1,7 +1,7 @@
 // Writing a plate page as PDF, SVG, TIFF or PNG, atomically and reproducibly.
 #include "stylos/plate/PlateWriter.h"
 
-#include <QFile>
+#include <QBuffer>
 #include <QHashSeed>
 #include <QPageLayout>
 #include <QPageSize>
@@ -89,15 +89,11 @@ Status createPartial(const fs::path& partial, const fs::path& output)
     return {};
 }
 
-/** Replaces the clock- and random-dependent parts of a Qt PDF by fixed text of the same length. */
-bool makeReproducible(const fs::path& path)
+/** Replaces the clock- and random-dependent parts of a Qt PDF (@p bytes) by fixed text of the same length. */
+void makeReproducible(QByteArray& bytes)
 {
-    QFile file(QString::fromStdString(path.string()));
-    if (!file.open(QIODevice::ReadOnly)) return false;
-    QByteArray bytes = file.readAll();
-    file.close();
     // Digits and letters become those of a fixed date (2000-01-01 00:00:00), then zeros: same length, same offsets.
-    auto blank = [&](const QRegularExpression& re, char) {
+    auto blank = [&](const QRegularExpression& re) {
         static const char fixed[] = "20000101000000";
         auto it = re.globalMatch(QString::fromLatin1(bytes));
         while (it.hasNext()) {
@@ -107,15 +103,31 @@ bool makeReproducible(const fs::path& path)
                 if (std::isalnum(static_cast<unsigned char>(bytes[i]))) bytes[i] = k < 14 ? fixed[k++] : '0';
         }
     };
-    blank(QRegularExpression(QStringLiteral("/CreationDate \\(D:([^)]*)\\)")), '0');
-    blank(QRegularExpression(QStringLiteral("/ModDate \\(D:([^)]*)\\)")), '0');
-    blank(QRegularExpression(QStringLiteral("/ID \\[\\s*(<[0-9a-fA-F]*>\\s*<[0-9a-fA-F]*>)\\s*\\]")), '0');
-    blank(QRegularExpression(QStringLiteral("<xmp:CreateDate>([^<]*)<")), '0');
-    blank(QRegularExpression(QStringLiteral("<xmp:ModifyDate>([^<]*)<")), '0');
-    blank(QRegularExpression(QStringLiteral("<xmp:MetadataDate>([^<]*)<")), '0');
-    blank(QRegularExpression(QStringLiteral("uuid:([0-9a-fA-F-]*)")), '0');
-    if (!file.open(QIODevice::WriteOnly | QIODevice::Truncate)) return false;
-    return file.write(bytes) == bytes.size() && file.flush();
+    blank(QRegularExpression(QStringLiteral("/CreationDate \\(D:([^)]*)\\)")));
+    blank(QRegularExpression(QStringLiteral("/ModDate \\(D:([^)]*)\\)")));
+    blank(QRegularExpression(QStringLiteral("/ID \\[\\s*(<[0-9a-fA-F]*>\\s*<[0-9a-fA-F]*>)\\s*\\]")));
+    blank(QRegularExpression(QStringLiteral("<xmp:CreateDate>([^<]*)<")));
+    blank(QRegularExpression(QStringLiteral("<xmp:ModifyDate>([^<]*)<")));
+    blank(QRegularExpression(QStringLiteral("<xmp:MetadataDate>([^<]*)<")));
+    blank(QRegularExpression(QStringLiteral("uuid:([0-9a-fA-F-]*)")));
+}
+
+/** Writes @p bytes into @p partial (created by createPartial) and checks every step — the write, the flush, the
+ *  close: a full disk shows at one of them, where Qt's PDF and SVG writers say nothing. */
+Status writeBytes(const QByteArray& bytes, const fs::path& partial, const fs::path& output)
+{
+    std::FILE* file = std::fopen(partial.c_str(), "wb");
+    if (!file)
+        return failed(partial, output, "cannot create the file: " + std::error_code(errno, std::generic_category()).message());
+    errno = 0;
+    const bool written = std::fwrite(bytes.constData(), 1, std::size_t(bytes.size()), file) == std::size_t(bytes.size()) &&
+                         std::fflush(file) == 0;
+    int why = written ? 0 : (errno != 0 ? errno : EIO);
+    if (std::fclose(file) != 0 && why == 0) why = errno != 0 ? errno : EIO;
+    if (why != 0)
+        return failed(partial, output, "cannot write the file: " + std::error_code(why, std::generic_category()).message() +
+                                           " (" + std::to_string(bytes.size()) + " bytes to write)");
+    return {};
 }
 
 /** The document title: the caption, cut at a word within 200 characters with an ellipsis (never inside a
@@ -135,11 +147,15 @@ Status writePdf(const PlateContent& plate, const fs::path& output, const core::P
 {
     const fs::path partial = partialPath(output);
     if (Status created = createPartial(partial, output); !created) return created;
+    // Drawn in memory, then written with every step checked (a PDF of a plate is a few MB).
+    QByteArray bytes;
     // Qt keeps the PDF's fonts in a QHash: with the per-process random seed their objects come out in a
     // different order from one run to the next. A fixed seed makes the bytes the same.
     QHashSeed::setDeterministicGlobalSeed();
     {
-        QPdfWriter writer(QString::fromStdString(partial.string()));
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
+        QPdfWriter writer(&buffer);
         const auto& page = plate.layout.page;
         writer.setPageLayout(QPageLayout(QPageSize(QSizeF(page.widthMm, page.heightMm), QPageSize::Millimeter,
                                                    QString(), QPageSize::ExactMatch),
@@ -153,7 +169,8 @@ Status writePdf(const PlateContent& plate, const fs::path& output, const core::P
         paintPlate(painter, plate);
         if (!painter.end()) return failed(partial, output, "writing the PDF failed");
     }
-    if (!makeReproducible(partial)) return failed(partial, output, "cannot rewrite the PDF's dates");
+    makeReproducible(bytes);
+    if (Status written = writeBytes(bytes, partial, output); !written) return written;
     return finish(partial, output, progress);
 }
 
@@ -162,14 +179,18 @@ Status writeSvg(const PlateContent& plate, const fs::path& output, const core::P
     const fs::path partial = partialPath(output);
     if (Status created = createPartial(partial, output); !created) return created;
     const auto& page = plate.layout.page;
+    QByteArray bytes;
     {
+        QBuffer buffer(&bytes);
+        buffer.open(QIODevice::WriteOnly);
         QSvgGenerator svg;
-        svg.setFileName(QString::fromStdString(partial.string()));
+        svg.setOutputDevice(&buffer);
         const QSize size(int(std::lround(page.widthMm * kSvgPerMm)), int(std::lround(page.heightMm * kSvgPerMm)));
         svg.setSize(size);
         svg.setViewBox(QRect(QPoint(0, 0), size));
         svg.setResolution(int(std::lround(25.4 * kSvgPerMm))); // 254 dpi: width and height come out in mm
-        svg.setTitle(documentTitle(plate.spec.caption));
+        // Qt writes the title and description into the XML as given: escaped here ("Drums 1 & 2" broke the file).
+        svg.setTitle(documentTitle(plate.spec.caption).toHtmlEscaped());
         svg.setDescription(QStringLiteral("Stylos plate"));
         QPainter painter;
         if (!painter.begin(&svg)) return failed(partial, output, "cannot start the SVG");
@@ -177,6 +198,7 @@ Status writeSvg(const PlateContent& plate, const fs::path& output, const core::P
         paintPlate(painter, plate);
         if (!painter.end()) return failed(partial, output, "writing the SVG failed");
     }
+    if (Status written = writeBytes(bytes, partial, output); !written) return written;
     return finish(partial, output, progress);
 }
 

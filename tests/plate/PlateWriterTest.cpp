@@ -20,10 +20,12 @@
 #include <OpenImageIO/imageio.h>
 #include <QGuiApplication>
 #include <QImage>
+#include <QXmlStreamReader>
 
 #include <gtest/gtest.h>
 
 #include <array>
+#include <csignal>
 #include <cstdio>
 #include <cerrno>
 #include <fstream>
@@ -31,6 +33,8 @@
 #include <memory>
 #include <numbers>
 #include <sstream>
+
+#include <sys/resource.h>
 
 using namespace stylos;
 namespace cp = core::plate;
@@ -376,6 +380,83 @@ TEST(PlateWriter, ALongCaptionIsTheTitleCutAtAWord)
     EXPECT_LE(t.size(), 201) << title;
     EXPECT_GT(t.size(), 150) << title;
     EXPECT_TRUE(QString::fromStdString(spec.caption).startsWith(t.chopped(1) + QLatin1Char(' '))) << title;
+}
+
+namespace {
+
+/** The files a process may write grow to @p bytes at most while it lives (RLIMIT_FSIZE): a write past it fails with
+ *  EFBIG, as a full disk fails one with ENOSPC — without a disk to fill. SIGXFSZ is ignored meanwhile. */
+class FileSizeLimit {
+public:
+    explicit FileSizeLimit(rlim_t bytes)
+    {
+        getrlimit(RLIMIT_FSIZE, &m_old);
+        m_signal = std::signal(SIGXFSZ, SIG_IGN);
+        rlimit limit = m_old;
+        limit.rlim_cur = bytes;
+        m_set = setrlimit(RLIMIT_FSIZE, &limit) == 0;
+    }
+    ~FileSizeLimit()
+    {
+        setrlimit(RLIMIT_FSIZE, &m_old);
+        std::signal(SIGXFSZ, m_signal);
+    }
+    bool set() const { return m_set; }
+
+private:
+    rlimit m_old{};
+    void (*m_signal)(int) = nullptr;
+    bool m_set = false;
+};
+
+} // namespace
+
+// A disk that fills while a plate is written: an error naming the file and the reason, the plate written before left as
+// it was, no partial file. Before, the PDF and SVG were reported written (Qt's writers say nothing of a failed write)
+// and the PNG too (libpng ignores a short write): a truncated file replaced the good one.
+TEST(PlateWriter, AFullDiskWritesNothingAndKeepsTheFileThatWasThere)
+{
+    auto plate = compose(developpeeSpec());
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path dir = *fixture().dir / "full";
+    fs::create_directories(dir);
+    for (const char* name : {"plate.pdf", "plate.svg", "plate.png", "plate.tif"}) {
+        const fs::path output = dir / name;
+        { std::ofstream(output) << "the plate of last week"; }
+        core::Status written;
+        {
+            const FileSizeLimit limit(20000); // each of these plates is larger
+            ASSERT_TRUE(limit.set());
+            written = plate::writePlate(*plate, output);
+        }
+        ASSERT_FALSE(written.ok()) << name;
+        EXPECT_EQ(written.error().code, core::ErrorCode::WriteFailed) << name;
+        EXPECT_NE(written.error().message.find(output.string()), std::string::npos) << written.error().message;
+        EXPECT_EQ(bytesOf(output), "the plate of last week") << name;
+        std::vector<std::string> left;
+        for (const auto& entry : fs::directory_iterator(dir)) left.push_back(entry.path().filename().string());
+        EXPECT_EQ(left, std::vector<std::string>{name}) << "no partial file left";
+        // With room, it is written.
+        ASSERT_TRUE(plate::writePlate(*plate, output).ok()) << name;
+        EXPECT_GT(fs::file_size(output), 20000u) << name;
+        fs::remove(output);
+    }
+}
+
+// The SVG's <title> is the caption: escaped, so that "&" or "<" in it leave the file well-formed XML (it was not).
+TEST(PlateWriter, ACaptionWithMarkupCharactersKeepsTheSvgWellFormed)
+{
+    auto spec = developpeeSpec();
+    spec.caption = "Drums 1 & 2 <Delphi>";
+    auto plate = compose(spec);
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path svg = *fixture().dir / "amp.svg";
+    ASSERT_TRUE(plate::writePlate(*plate, svg).ok());
+    const std::string text = bytesOf(svg);
+    EXPECT_NE(text.find("<title>Drums 1 &amp; 2 &lt;Delphi&gt;</title>"), std::string::npos) << text.substr(0, 600);
+    QXmlStreamReader xml(QByteArray::fromStdString(text));
+    while (!xml.atEnd()) xml.readNext();
+    EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString() << " at line " << xml.lineNumber();
 }
 
 int main(int argc, char** argv)
