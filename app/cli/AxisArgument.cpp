@@ -1,8 +1,11 @@
 #include "AxisArgument.h"
 
+#include <Eigen/SVD>
+
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
-#include <sstream>
 
 namespace stylos::cli {
 
@@ -10,16 +13,23 @@ bool parseNumberList(const std::string& text, const std::string& option, std::si
                      std::string& problem)
 {
     values.clear();
-    std::stringstream in(text);
-    std::string item;
-    while (std::getline(in, item, ',')) {
-        char* end = nullptr;
-        const double v = std::strtod(item.c_str(), &end);
-        if (item.empty() || end != item.c_str() + item.size() || !std::isfinite(v)) {
+    // Decimal numbers only ("1", "-0.5", "+2e-3"): not hexadecimal ("0x10", which strtod takes), not an empty item
+    // (a trailing comma, which getline drops), no spaces.
+    std::size_t start = 0;
+    while (true) {
+        const std::size_t comma = text.find(',', start);
+        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        const char* first = item.c_str() + (item.size() > 1 && item[0] == '+' && item[1] != '-' ? 1 : 0);
+        const char* last = item.c_str() + item.size();
+        double v = 0.0;
+        const auto [end, error] = std::from_chars(first, last, v, std::chars_format::general);
+        if (item.empty() || error != std::errc() || end != last || !std::isfinite(v)) {
             problem = option + ": \"" + item + "\" is not a number";
             return false;
         }
         values.push_back(v);
+        if (comma == std::string::npos) break;
+        start = comma + 1;
     }
     if (values.size() != count) {
         problem = option + " needs " + std::to_string(count) + " numbers, got " + std::to_string(values.size());
@@ -52,12 +62,24 @@ bool parsePose(const std::string& text, Eigen::Isometry3d& pose, std::string& pr
     if (!parseNumberList(text, "--pose", 12, values, problem)) return false;
     Eigen::Matrix3d r;
     for (int i = 0; i < 9; ++i) r(i / 3, i % 3) = values[std::size_t(i)];
-    if (!(r.transpose() * r).isApprox(Eigen::Matrix3d::Identity(), 1e-6) || !(r.determinant() > 0.0)) {
-        problem = "--pose: the first nine numbers are not a rotation (orthonormal rows, determinant +1)";
+    // A rotation as other tools print it (MeshLab, CloudCompare: 6 decimals, off orthonormal by ~1e-6) is taken and
+    // made exact (the nearest rotation); one further off is refused with how far.
+    constexpr double kTolerance = 1e-4;
+    const double off = (r * r.transpose() - Eigen::Matrix3d::Identity()).cwiseAbs().maxCoeff();
+    if (!(off <= kTolerance) || !(r.determinant() > 0.0)) {
+        char text[200];
+        if (!(r.determinant() > 0.0))
+            std::snprintf(text, sizeof text, "--pose: the first nine numbers are not a rotation (determinant %.3g, not +1)",
+                          r.determinant());
+        else
+            std::snprintf(text, sizeof text, "--pose: the first nine numbers are not a rotation: their rows are off "
+                          "orthonormal by %.2g (at most %.0e is taken)", off, kTolerance);
+        problem = text;
         return false;
     }
+    const Eigen::JacobiSVD<Eigen::Matrix3d> svd(r, Eigen::ComputeFullU | Eigen::ComputeFullV);
     pose = Eigen::Isometry3d::Identity();
-    pose.linear() = r;
+    pose.linear() = svd.matrixU() * svd.matrixV().transpose();
     pose.translation() = Eigen::Vector3d(values[9], values[10], values[11]);
     return true;
 }

@@ -11,7 +11,8 @@
 
 namespace stylos::cli {
 
-/** @p count comma-separated finite numbers; false with @p problem set (naming @p option) otherwise. */
+/** @p count comma-separated finite decimal numbers (an optional sign, digits, a point, an exponent: no hexadecimal,
+ *  no empty item); false with @p problem set (naming @p option and the item) otherwise. */
 bool parseNumberList(const std::string& text, const std::string& option, std::size_t count, std::vector<double>& values,
                      std::string& problem);
 
@@ -20,7 +21,8 @@ bool parseNumberList(const std::string& text, const std::string& option, std::si
 bool parseAxis(const std::string& text, core::unroll::Axis& axis, std::string& problem);
 
 /** "R00,R01,R02,R10,R11,R12,R20,R21,R22,TX,TY,TZ" (row-major rotation, metres) → a rigid pose; the
- *  rotation must be one (orthonormal within 1e-6, determinant +1): false with @p problem set otherwise. */
+ *  rotation must be one to 1e-4 (|R·Rᵀ − I| per entry; determinant > 0), as tools print it to 6 decimals, and is made
+ *  exact (the nearest rotation): false with @p problem set (how far off) otherwise. */
 bool parsePose(const std::string& text, Eigen::Isometry3d& pose, std::string& problem);
 
 } // namespace stylos::cli

@@ -47,13 +47,17 @@ bool parseRequest(CommandLine& cl, DockRequest& r, std::string& problem)
     r.json = cl.flag("json");
     if (const auto pose = cl.value("pose"); pose && !parsePose(*pose, r.pose, problem)) return false;
     if (const auto lock = cl.value("lock")) {
-        std::stringstream in(*lock);
-        std::string name;
-        while (std::getline(in, name, ',')) {
+        // Every comma-separated name, an empty one included ("", "r,": a lock that names nothing is refused).
+        std::size_t start = 0;
+        while (true) {
+            const std::size_t comma = lock->find(',', start);
+            const std::string name = lock->substr(start, comma == std::string::npos ? std::string::npos : comma - start);
             const auto unknowns = dock::dockUnknownsFromName(name);
             if (unknowns.empty())
                 return problem = "--lock: unknown \"" + name + "\" (z, r, theta, tilt, tangent, tilt_lean, tilt_roll)", false;
             for (dock::DockUnknown u : unknowns) r.options.locked[std::size_t(u)] = true;
+            if (comma == std::string::npos) break;
+            start = comma + 1;
         }
     }
     long long threads = 0;

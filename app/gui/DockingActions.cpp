@@ -104,7 +104,7 @@ void DockingActions::createDocking()
     m_dockToFlutes->setObjectName(QStringLiteral("actionDockToFlutes"));
     m_dockToFlutes->setShortcut(QKeySequence(Qt::CTRL | Qt::Key_J));
     const std::vector<std::vector<DockUnknown>> locks = {
-        {DockUnknown::Z}, {DockUnknown::R}, {DockUnknown::Theta}, {DockUnknown::TiltLean, DockUnknown::TiltRoll}};
+        {DockUnknown::Z}, {DockUnknown::R}, {DockUnknown::Theta, DockUnknown::Tangent}, {DockUnknown::TiltLean, DockUnknown::TiltRoll}};
     for (const auto& unknowns : locks) {
         auto* action = new QAction(this);
         action->setCheckable(true);

@@ -14,8 +14,10 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iomanip>
 #include <numbers>
 #include <sstream>
+#include <iomanip>
 
 using stylos::test::runCli;
 using stylos::test::TempDir;
@@ -122,7 +124,7 @@ TEST(CliDock, LockedRotationStaysAndWithoutGuidesTheDrumIsFitted)
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);
     EXPECT_LT(angleDeg(poseFromJson(j).linear(), start.linear()), 1e-9);
-    EXPECT_EQ(j["uncertainty"].size(), 2u); // r and tangent
+    EXPECT_EQ(j["uncertainty"].size(), 1u); // r: theta locks the place round the drum, the sideways slide with the turn
 }
 
 TEST(CliDock, BadInputFailsNamingTheProblem)
@@ -155,8 +157,47 @@ TEST(CliDock, BadInputFailsNamingTheProblem)
 
     EXPECT_EQ(runCli({"dock", s.fragment}).exitCode, 2);
     EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--lock", "yaw"}).exitCode, 2);
-    EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,2,0,0,0"}).exitCode, 2);
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,2,0,0,0"});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--pose: the first nine numbers are not a rotation: their rows are off orthonormal by 3 "
+                           "(at most 1e-04 is taken)"), std::string::npos) << run.err;
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "-1,0,0,0,1,0,0,0,1,0,0,0"});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("not a rotation (determinant -1, not +1)"), std::string::npos) << run.err;
     EXPECT_EQ(runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0"}).exitCode, 2);
+    // Not numbers: a trailing comma (an empty twelfth), hexadecimal (strtod took both).
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,1,0,0,0,"});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--pose: \"\" is not a number"), std::string::npos) << run.err;
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,1,0x10,0,0"});
+    EXPECT_EQ(run.exitCode, 2);
+    EXPECT_NE(run.err.find("--pose: \"0x10\" is not a number"), std::string::npos) << run.err;
+    // A lock that names nothing.
+    for (const char* lock : {"", "r,"}) {
+        run = runCli({"dock", s.fragment, "--drum", s.drum, "--lock", lock});
+        EXPECT_EQ(run.exitCode, 2) << lock;
+        EXPECT_NE(run.err.find("--lock: unknown \"\""), std::string::npos) << run.err;
+    }
+}
+
+// A pose as other tools print it, to 6 decimals (its rows off orthonormal by ~1e-6), is taken and made a rotation: it
+// docks as the exact one does (it was refused as "not a rotation").
+TEST(CliDock, APoseToSixDecimalsIsTaken)
+{
+    const Scene& s = scene();
+    const Eigen::Affine3d start = s.turned(2.0);
+    std::ostringstream rounded;
+    rounded << std::fixed << std::setprecision(6);
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k) rounded << start.linear()(i, k) << ",";
+    rounded << start.translation().x() << "," << start.translation().y() << "," << start.translation().z();
+    const auto run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose", rounded.str(), "--json"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    const auto j = nlohmann::json::parse(run.out);
+    const Eigen::Affine3d docked = poseFromJson(j);
+    EXPECT_TRUE((docked.linear().transpose() * docked.linear()).isApprox(Eigen::Matrix3d::Identity(), 1e-9));
+    EXPECT_LT(angleDeg(docked.linear(), s.truth.linear()), 0.1);
+    EXPECT_NEAR(j["flute_shift"].get<double>(), -2.0 / 7.5, 0.02);
 }
 
 TEST(CliDock, TheImportFrameAppliesToBothPointFiles)

@@ -329,6 +329,7 @@ void DockToFlutesTest::theWindowDocksWithTheLocksChosen()
     docking.lockActions()[2]->setChecked(true);
     docking.lockActions()[3]->setChecked(true);
     QVERIFY(docking.docker().isLocked(core::dock::DockUnknown::Theta));
+    QVERIFY(docking.docker().isLocked(core::dock::DockUnknown::Tangent)); // the place round the drum
     QVERIFY(docking.docker().isLocked(core::dock::DockUnknown::TiltRoll));
     QVERIFY(!docking.docker().isLocked(core::dock::DockUnknown::R));
     const int steps = document.undoStack()->count();

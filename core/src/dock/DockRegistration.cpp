@@ -238,6 +238,9 @@ const char* dockUnknownName(DockUnknown unknown)
 std::vector<DockUnknown> dockUnknownsFromName(std::string_view name)
 {
     if (name == "tilt") return {DockUnknown::TiltLean, DockUnknown::TiltRoll};
+    // The fragment's place round the drum: the turn about the axis and the sideways slide that, on a fragment, stands
+    // for the same motion (with the turn alone locked the slide carried it to the next flute anyway).
+    if (name == "theta") return {DockUnknown::Theta, DockUnknown::Tangent};
     for (int k = 0; k < DockUnknowns; ++k)
         if (name == dockUnknownName(DockUnknown(k))) return {DockUnknown(k)};
     return {};

@@ -49,8 +49,9 @@ enum class DockUnknown { Theta, Z, R, Tangent, TiltLean, TiltRoll };
 inline constexpr int DockUnknowns = 6;
 /** "theta", "z", "r", "tangent", "tilt_lean", "tilt_roll". */
 const char* dockUnknownName(DockUnknown unknown);
-/** Lock names as the command line takes them: the names above and "tilt" (both tilts). Empty on an
- *  unknown name. */
+/** Lock names as the command line takes them: the names above, "tilt" (both tilts), and "theta" for the fragment's
+ *  place round the drum (Theta and Tangent: on a fragment the sideways slide is the same motion as the turn). Empty on
+ *  an unknown name. */
 std::vector<DockUnknown> dockUnknownsFromName(std::string_view name);
 
 struct DockOptions {
