@@ -276,6 +276,26 @@ TEST(DrumGuidesTest, WrongGivenCountIsRefused)
     EXPECT_NE(g.error().message.find("no flutes found: 37 flutes"), std::string::npos) << g.error().message;
 }
 
+// A multiple of the drum's count (96 on 48 flutes: the fillets' harmonic stands well over the noise) is refused
+// naming the count it is a multiple of; before, it gave 96 guides that docked nothing. The true count still fits.
+TEST(DrumGuidesTest, AMultipleOfTheFluteCountIsRefused)
+{
+    const auto& scan = drum(48);
+    GuideOptions options;
+    for (const int multiple : {96, 144}) {
+        options.flutes = multiple;
+        const auto g = fitDrumGuides(scan.cloud, options);
+        ASSERT_FALSE(g.ok()) << multiple;
+        EXPECT_EQ(g.error().code, ErrorCode::InvalidArgument);
+        EXPECT_NE(g.error().message.find(std::to_string(multiple) + " is a multiple of the drum's 48 flutes (give --flutes 48)"),
+                  std::string::npos) << g.error().message;
+    }
+    options.flutes = 48;
+    const auto g = fitDrumGuides(scan.cloud, options);
+    ASSERT_TRUE(g.ok()) << g.error().message;
+    EXPECT_EQ(g->flutes, 48);
+}
+
 TEST(DrumGuidesTest, CancelStops)
 {
     const auto& scan = drum(24);

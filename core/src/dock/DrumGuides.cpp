@@ -185,6 +185,24 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
         const FluteFrequency freq = strongestFrequency(s, medianRho, lo, hi, kMaxSpectrum);
         g.strength = freq.noise > 0.0 ? freq.amplitude / freq.noise : 0.0;
         const bool scanned = given == 0;
+        if (!scanned && attempt == 0) {
+            // A given count that is a multiple of the drum's: the flutes' sharp fillets put a harmonic at 2N, 3N…
+            // strong enough to pass, and guides at that count dock nothing. The count it is a multiple of stands out
+            // far more (a true N-flute drum has nothing at N / k): refused, naming it.
+            for (int k = given / 3; k >= 2; --k) {
+                if (given % k != 0) continue;
+                const int divisor = given / k;
+                const FluteFrequency lower = strongestFrequency(s, medianRho, divisor, divisor, kMaxSpectrum);
+                if (lower.amplitude > freq.amplitude && lower.noise > 0.0 && lower.amplitude / lower.noise >= kMinStrength) {
+                    char text[260];
+                    std::snprintf(text, sizeof text,
+                                  "%d flutes stand %.1f times over the noise, but %d stand %.1f times: %d is a multiple "
+                                  "of the drum's %d flutes (give --flutes %d)",
+                                  given, g.strength, divisor, lower.amplitude / lower.noise, given, divisor, divisor);
+                    return invalid(cloud, text);
+                }
+            }
+        }
         if (g.strength < kMinStrength || (scanned && freq.amplitude < kMinOverMedian * freq.medianAmplitude)) {
             char text[200];
             if (scanned)
