@@ -53,6 +53,7 @@ private Q_SLOTS:
     void ambientShading();
     void aPoseChangeMovesTheDrawnFragmentWithoutACut();
     void aFragmentFarAwayLeavesTheDrumInView();
+    void fragmentsArrivingOneByOneAreFramedUntilTheCameraMoves();
     void orbitBenchmarkReports();
     void poseBenchmarkReports();
 
@@ -293,6 +294,7 @@ void ViewportTest::aFragmentFarAwayLeavesTheDrumInView()
     ViewFragment far = drum;
     far.id = 43;
     far.pose.topRightCorner<3, 1>() = Eigen::Vector3d(1e7, 0, 0);
+    m_view->setCamera(m_view->camera(), false); // the user's camera: a fragment that joins is not framed
     m_view->setFragments({drum, far});
     waitRefined();
     QVERIFY(m_view->camera().nearPlane() < 0.5 * m_view->camera().distance());
@@ -300,6 +302,50 @@ void ViewportTest::aFragmentFarAwayLeavesTheDrumInView()
     m_view->setFragments({drum});
     waitRefined();
     QVERIFY(!isBackground(m_view->grabFramebuffer().pixel(200, 150)));
+}
+
+// Files imported together arrive one by one: each that joins is framed with the others while the camera has not been
+// moved (before, only the first was: the drum imported last was out of view until Fit); once it has, it stays.
+void ViewportTest::fragmentsArrivingOneByOneAreFramedUntilTheCameraMoves()
+{
+    ViewFragment drum;
+    drum.id = 42;
+    drum.octree = m_drum.octree;
+    ViewFragment beside = drum;
+    beside.id = 44;
+    beside.pose.topRightCorner<3, 1>() = Eigen::Vector3d(3.0, 0, 0);
+    ViewFragment further = drum;
+    further.id = 45;
+    further.pose.topRightCorner<3, 1>() = Eigen::Vector3d(0, 6.0, 0);
+    const auto framed = [](stylos::core::view::Camera camera, const std::vector<ViewFragment>& fragments) {
+        camera.fit(stylos::core::view::sceneCorners(fragments));
+        return camera;
+    };
+    m_view->setFragments({});
+    m_view->setFragments({drum});
+    const auto alone = m_view->camera();
+    m_view->setFragments({drum, beside}); // the second file finished: both framed
+    const auto both = framed(alone, {drum, beside});
+    QVERIFY(m_view->camera().target().isApprox(both.target(), 1e-9));
+    QCOMPARE(m_view->camera().distance(), both.distance());
+    QVERIFY((both.target() - alone.target()).norm() > 1.0); // a real move: the pair's middle, 1.5 m over
+    auto turned = m_view->camera();
+    turned.orbit(0.3, 0.0); // the user turns the view
+    m_view->setCamera(turned, false);
+    const Eigen::Vector3d target = m_view->camera().target();
+    const double distance = m_view->camera().distance();
+    m_view->setFragments({drum, beside, further});
+    QVERIFY(m_view->camera().target() == target); // the user's view is kept
+    QCOMPARE(m_view->camera().distance(), distance);
+    m_view->fitToScene(); // Fit frames all, and framing goes on from there
+    const auto all = m_view->camera();
+    ViewFragment last = drum;
+    last.id = 46;
+    last.pose.topRightCorner<3, 1>() = Eigen::Vector3d(0, 0, 5.0);
+    m_view->setFragments({drum, beside, further, last});
+    QVERIFY(m_view->camera().target().isApprox(framed(all, {drum, beside, further, last}).target(), 1e-9));
+    m_view->setFragments({drum});
+    waitRefined();
 }
 
 void ViewportTest::orbitBenchmarkReports()

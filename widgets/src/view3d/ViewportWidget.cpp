@@ -163,7 +163,11 @@ void ViewportWidget::setFragments(Fragments fragments)
     m_firstFrameMs = -1;
     m_fragmentsChanged = true;
     invalidateImage(false);
-    const bool fit = m_scheduler.fragments().empty() && !fragments.empty();
+    // The first fragments are framed; while the camera has not been moved since, each that joins them is framed with
+    // them (files imported together arrive one by one, in the order they finish: the last was left out of view).
+    const bool first = m_scheduler.fragments().empty() && !fragments.empty();
+    if (first) m_framing = true;
+    const bool fit = first || (m_framing && fragments.size() > m_scheduler.fragments().size());
     m_camera.setSceneBounds(core::view::sceneBounds(fragments));
     if (fit) m_camera.fit(core::view::sceneCorners(fragments));
     m_scheduler.setFragments(std::move(fragments), m_camera);
@@ -189,6 +193,7 @@ void ViewportWidget::setCamera(const Camera& camera, bool moving)
     const int w = m_camera.width(), h = m_camera.height();
     m_camera = camera;
     m_camera.setViewport(w, h);
+    m_framing = false;
     cameraEdited(moving);
 }
 
@@ -208,6 +213,7 @@ Eigen::AlignedBox3d ViewportWidget::sceneBounds(bool selectedOnly) const
 void ViewportWidget::fitToScene()
 {
     m_camera.fit(core::view::sceneCorners(m_scheduler.fragments()));
+    m_framing = true;
     cameraEdited(false);
 }
 
@@ -215,12 +221,14 @@ void ViewportWidget::fitToSelection()
 {
     const auto selected = core::view::sceneCorners(m_scheduler.fragments(), true);
     m_camera.fit(selected.empty() ? core::view::sceneCorners(m_scheduler.fragments()) : selected);
+    m_framing = false;
     cameraEdited(false);
 }
 
 void ViewportWidget::setStandardView(core::view::StandardView view)
 {
     m_camera.setStandardView(view);
+    m_framing = false;
     cameraEdited(false);
 }
 

@@ -78,7 +78,9 @@ public:
      */
     static bool isSupported();
 
-    /** @brief The fragments to show (replaces the previous set; a new cut). The first non-empty set is fitted. */
+    /** @brief The fragments to show (replaces the previous set; a new cut). The first non-empty set is fitted, and
+     *         so is each larger set after it until the camera is set, turned to a standard view or fitted to the
+     *         selection (fitToScene() starts framing again). */
     void setFragments(Fragments fragments);
     const Fragments& fragments() const { return m_scheduler.fragments(); }
     /**
@@ -224,6 +226,7 @@ private:
     ViewportWindow* m_window = nullptr; ///< owned by m_container
     QWidget* m_container = nullptr;     ///< child; fills this widget
     Camera m_camera;
+    bool m_framing = false; ///< fragments that join are framed (setFragments) until the camera is moved
     LodScheduler m_scheduler;
     ViewRenderer m_renderer;
     std::shared_ptr<MarkerOverlay> m_marker;
