@@ -48,6 +48,18 @@ TEST(LeafSpacingTest, SparseSamplesUseTheCoarseLevel)
     for (const float h : spacing) ASSERT_FLOAT_EQ(h, 1.0f / 24);
 }
 
+// An octree far deeper than its samples (a 4 mm scan at depth 12): one sample per 16 leaf edges. The ancestors of
+// 16 edges hold one sample in one cell of every level, and the estimate stopped at the coarse cell's edge, half the
+// step (1/16 here; plates drawn with splats of that size were see-through). The ancestors then widen until their
+// coarse level is saturated (here 64 edges: 16 samples in 4 cells of 1/4) and give the step exactly.
+TEST(LeafSpacingTest, SamplesSparserThanTheAncestorsWidenThem)
+{
+    const auto tree = grid(1.0 / 8); // 1/8 = 16 leaf edges of 1/128
+    const std::vector<float> spacing = octree::computeLeafSpacing(tree);
+    ASSERT_EQ(spacing.size(), 8u * 8u);
+    for (const float h : spacing) ASSERT_FLOAT_EQ(h, 1.0f / 8);
+}
+
 TEST(LeafSpacingTest, LayerRoundTripAndComputedOnOpen)
 {
     TempDir dir;

@@ -9,18 +9,22 @@ namespace stylos::core::octree {
 
 namespace {
 
-/** Level m and the two levels below it (capped at the depth) of @p desc; false when there is no leaf. */
+/** Level m (the ancestors) and the two levels below it (capped at the depth). */
 struct SpacingLevels {
     int m = 0, coarse = 0, fine = 0;
 };
-SpacingLevels spacingLevels(const OctreeDescription& desc)
+SpacingLevels spacingLevels(const OctreeDescription& desc, int m)
 {
     SpacingLevels s;
-    s.m = std::max(0, desc.depth - 4);
+    s.m = m;
     s.fine = std::min(desc.depth, s.m + 2);
     s.coarse = std::min(desc.depth, s.m + 1);
     return s;
 }
+
+/** The ancestors are 2^k leaf edges wide, k = 4 unless the samples are sparser than that measures: see the file
+ *  comment. */
+constexpr int kFirstAncestorSpan = 4, kLastAncestorSpan = 8;
 
 bool hasLeaves(const OctreeDescription& desc) { return !desc.cellsPerLevel.empty() && desc.cellsPerLevel.back() > 0; }
 
@@ -31,7 +35,7 @@ bool leafSpacingRuns(const OctreeLevels& levels, const LeafSpacingShape& shape, 
 {
     const OctreeDescription& desc = levels.description();
     if (!hasLeaves(desc)) return false;
-    const SpacingLevels s = spacingLevels(desc);
+    const SpacingLevels s = spacingLevels(desc, shape.ancestorLevel);
     const std::uint64_t ancestors = desc.cellsPerLevel[static_cast<std::size_t>(s.m)];
 
     std::vector<float> l1(ancestors, 1.0f);
@@ -81,10 +85,22 @@ LeafSpacingShape leafSpacingShape(const OctreeLevels& levels)
     LeafSpacingShape shape;
     const OctreeDescription& desc = levels.description();
     if (!hasLeaves(desc)) return shape;
-    const SpacingLevels s = spacingLevels(desc);
-    shape.ancestorLevel = s.m;
-    const std::array<int, 3> below{s.coarse, s.fine, desc.depth};
-    shape.counts = levels.descendantCounts(s.m, below);
+    // The first span whose coarse level is saturated (n ≥ 2 o₁) for at least half the leaves: samples sparser than
+    // 8 leaf edges (an octree deeper than its scan: 4 mm samples at depth 12, 0.42 mm leaves) occupy one coarse cell
+    // each, o₁ ≈ n, and the estimate would stop at that cell's edge (~3 mm) whatever the true spacing.
+    for (int k = kFirstAncestorSpan; k <= kLastAncestorSpan; ++k) {
+        const SpacingLevels s = spacingLevels(desc, std::max(0, desc.depth - k));
+        shape.ancestorLevel = s.m;
+        const std::array<int, 3> below{s.coarse, s.fine, desc.depth};
+        shape.counts = levels.descendantCounts(s.m, below);
+        if (s.m == 0) break;
+        std::uint64_t saturated = 0, all = 0;
+        for (std::size_t i = 0; i < shape.counts[2].size(); ++i) {
+            all += shape.counts[2][i];
+            if (shape.counts[2][i] >= 2 * shape.counts[0][i]) saturated += shape.counts[2][i];
+        }
+        if (2 * saturated >= all) break;
+    }
     return shape;
 }
 
