@@ -5,6 +5,7 @@
 #include "TestSupport.h"
 
 #include "stylos/core/octree/PackedOctree.h"
+#include "stylos/core/scene/SceneEigen.h"
 #include "stylos/core/view/GuideGeometry.h"
 
 #include <gtest/gtest.h>
@@ -55,6 +56,38 @@ TEST(GuideGeometry, SegmentsSpanTheFragment)
     EXPECT_EQ(segments[1].kind, scene::GuideKind::Groove);
     EXPECT_EQ(segments[1].a, Eigen::Vector3d(1, 1.5, 2.25));
     EXPECT_TRUE(view::guideSegments(drum, Eigen::AlignedBox3d()).empty());
+}
+
+// A drum lying tilted in its file: guides along its tilted axis span its cells' extent along that axis (the corners of
+// the cells projected), not the box of the file's axes, whose corners projected gave lines 2–3 times its height.
+TEST(GuideGeometry, SegmentsOfATiltedFragmentSpanItsCellsAlongTheGuide)
+{
+    // A drum 0.3 m high and 0.5 m in radius whose axis d = (1, 1, 1)/√3 leans in its file: cells of 0.02 m on its
+    // bed circles and its axis, the lowest at 0 and the highest at 0.3 along d.
+    const Eigen::Vector3d d = Eigen::Vector3d(1, 1, 1).normalized();
+    const Eigen::Vector3d u = d.unitOrthogonal(), v = d.cross(u);
+    view::OccupiedCells cells;
+    cells.size = 0.02;
+    for (int k = 0; k < 72; ++k) {
+        const double a = k * std::numbers::pi / 36;
+        for (const double t : {0.0, 0.3}) cells.centres.push_back(t * d + 0.5 * (std::cos(a) * u + std::sin(a) * v));
+    }
+    scene::Fragment drum;
+    drum.guides.push_back({"Axis", scene::GuideKind::Axis, {0.1, 0.1, 0.1}, {2, 2, 2}});
+    drum.guides.push_back({"Flute", scene::GuideKind::Groove, scene::toArray(Eigen::Vector3d(0.5 * u)), {1, 1, 1}});
+    const auto segments = view::guideSegments(drum, cells);
+    ASSERT_EQ(segments.size(), 2u);
+    const double reach = 0.01 * std::sqrt(3.0); // a cube's corners along d: ½ · 0.02 · (|dx| + |dy| + |dz|)
+    EXPECT_TRUE(segments[0].a.isApprox(-reach * d, 1e-12)) << segments[0].a.transpose();
+    EXPECT_TRUE(segments[0].b.isApprox((0.3 + reach) * d, 1e-12)) << segments[0].b.transpose();
+    EXPECT_TRUE(segments[1].a.isApprox(0.5 * u - reach * d, 1e-12)) << segments[1].a.transpose();
+    EXPECT_NEAR((segments[1].b - segments[1].a).norm(), 0.3 + 2 * reach, 1e-12); // 0.335 m
+    // The box of the file's axes: its corners projected on d span over twice the drum's height.
+    Eigen::AlignedBox3d box;
+    for (const auto& c : cells.centres) box.extend(c - Eigen::Vector3d::Constant(0.01)).extend(c + Eigen::Vector3d::Constant(0.01));
+    const auto boxed = view::guideSegments(drum, box);
+    EXPECT_GT((boxed[0].b - boxed[0].a).norm(), 2 * 0.3);
+    EXPECT_TRUE(view::guideSegments(drum, view::OccupiedCells{}).empty());
 }
 
 namespace {

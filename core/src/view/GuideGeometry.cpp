@@ -49,6 +49,51 @@ std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const E
     return segments;
 }
 
+OccupiedCells occupiedCells(const octree::PackedOctree& octree, int level)
+{
+    OccupiedCells cells;
+    level = std::clamp(level, 0, octree.depth());
+    cells.size = octree.box().cellSize(level);
+    cells.centres.reserve(std::size_t(octree.cellCount(level)));
+    octree.forEachCell(level, [&cells](const octree::CellView& cell) {
+        cells.centres.emplace_back(cell.centre[0], cell.centre[1], cell.centre[2]);
+        return true;
+    });
+    return cells;
+}
+
+std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const OccupiedCells& cells, const scene::Pose* world)
+{
+    std::vector<GuideSegment> segments;
+    if (cells.centres.empty()) return segments;
+    const Eigen::Matrix4d pose = scene::toEigen(world ? *world : fragment.pose);
+    const auto toScene = [&pose](const Eigen::Vector3d& p) -> Eigen::Vector3d {
+        return pose.topLeftCorner<3, 3>() * p + pose.topRightCorner<3, 1>();
+    };
+    segments.reserve(fragment.guides.size());
+    // The extent along a direction, once per direction (a drum's flute lines all share the axis's).
+    Eigen::Vector3d lastDirection = Eigen::Vector3d::Zero();
+    double lowest = 0.0, highest = 0.0;
+    for (const scene::Guide& guide : fragment.guides) {
+        const scene::GuideLine line = scene::guideLine(guide);
+        const Eigen::Vector3d d = line.direction.normalized();
+        if (d != lastDirection) {
+            lastDirection = d;
+            const double reach = 0.5 * cells.size * d.cwiseAbs().sum(); // a cube's corners about its centre, along d
+            lowest = std::numeric_limits<double>::infinity();
+            highest = -lowest;
+            for (const Eigen::Vector3d& c : cells.centres) {
+                const double s = c.dot(d);
+                lowest = std::min(lowest, s - reach);
+                highest = std::max(highest, s + reach);
+            }
+        }
+        const double offset = line.origin.dot(d);
+        segments.push_back({toScene(line.origin + (lowest - offset) * d), toScene(line.origin + (highest - offset) * d), guide.kind});
+    }
+    return segments;
+}
+
 namespace {
 
 /**

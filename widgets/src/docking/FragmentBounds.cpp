@@ -17,4 +17,18 @@ Eigen::AlignedBox3d FragmentBounds::of(const SceneDocument& document, SceneDocum
     return it->second.bounds;
 }
 
+const core::view::OccupiedCells& FragmentBounds::cells(const SceneDocument& document, SceneDocument::FragmentId id)
+{
+    static const core::view::OccupiedCells none;
+    SceneDocument::OctreePtr octree = document.octree(id);
+    if (!octree) {
+        m_cells.erase(id);
+        return none;
+    }
+    auto it = m_cells.find(id);
+    if (it == m_cells.end() || it->second.octree != octree)
+        it = m_cells.insert_or_assign(id, CellsEntry{octree, core::view::occupiedCells(*octree, m_level)}).first;
+    return it->second.cells;
+}
+
 } // namespace stylos::widgets

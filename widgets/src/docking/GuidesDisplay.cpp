@@ -51,7 +51,7 @@ void GuidesDisplay::pushNow()
     for (const core::scene::Fragment& f : m_document.scene().fragments()) {
         if (!m_document.isShown(f.id) || f.guides.empty()) continue;
         const core::scene::Pose world = m_document.worldPose(f.id);
-        const auto fragmentSegments = core::view::guideSegments(f, m_bounds->of(m_document, f.id), &world);
+        const auto fragmentSegments = core::view::guideSegments(f, m_bounds->cells(m_document, f.id), &world);
         segments.insert(segments.end(), fragmentSegments.begin(), fragmentSegments.end());
     }
     m_overlay->setSegments(std::move(segments));

@@ -35,6 +35,19 @@ struct GuideSegment {
 std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds,
                                         const scene::Pose* world = nullptr);
 
+/** @brief The occupied cells of one level of an octree, its own frame: their centres and their edge. */
+struct OccupiedCells {
+    std::vector<Eigen::Vector3d> centres;
+    double size = 0.0;
+};
+/** @brief @p octree's cells at @p level (clamped to its depth). */
+OccupiedCells occupiedCells(const octree::PackedOctree& octree, int level);
+/** @brief Each guide of @p fragment over the extent of @p cells along it: the part of its line between the lowest and
+ *         highest projections of the cells' corners — over the fragment's height whatever its pose in its file (the
+ *         box of the file's axes made the lines of a tilted drum 2–3 times its height). None without cells. */
+std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const OccupiedCells& cells,
+                                        const scene::Pose* world = nullptr);
+
 /** @brief The bounds of @p octree's cells at @p level (clamped to its depth; whole cells), in its own frame: found
  *         by a branch-and-bound descent per face (a few cells per level), so the leaf level costs little even on a
  *         30 M-leaf octree. Empty for an octree without cells. */
