@@ -41,13 +41,15 @@ int fail(const core::Error& error)
 }
 
 /** Skydome when every octree shown has its "ambient" layer, else headlight (3D panels without --shading). */
-cp::PanelShading defaultShading3d(const cp::PlateSources& sources, const std::string& fragment)
+core::Result<cp::PanelShading> defaultShading3d(const cp::PlateSources& sources, const std::string& fragment)
 {
     for (const cp::PlateFragment& f : sources.fragments) {
         if ((!fragment.empty() && f.name != fragment) || (fragment.empty() && !f.visible)) continue;
-        if (!f.isOctree || f.missing) return cp::PanelShading::Headlight;
+        if (f.missing) return cp::PanelShading::Skydome; // the composer names the missing octree
+        if (!f.isOctree) return cp::PanelShading::Headlight;
         auto octree = core::octree::PackedOctree::open(f.path);
-        if (!octree || !octree->attribute("ambient")) return cp::PanelShading::Headlight;
+        if (!octree) return octree.error(); // what is wrong with it, not a note on its shading
+        if (!octree->attribute("ambient")) return cp::PanelShading::Headlight;
     }
     return cp::PanelShading::Skydome;
 }
@@ -226,23 +228,27 @@ int runPlate(const std::vector<std::string>& args)
     const auto start = core::Clock::now();
     auto sources = cp::readPlateSources(input);
     if (!sources) return fail(sources.error());
+    // Notes on what the plate will show, said once it is drawn (an input that then fails to read gets its error alone).
+    std::vector<std::string> notes;
     for (std::size_t i = 0; i < spec.panels.size(); ++i) { // a 3D panel that states no shading: skydome where there is one
         cp::PanelSpec& panel = spec.panels[i];
         if (panel.shadingStated || panel.view == cp::PanelView::Developpee) continue;
-        panel.shading = defaultShading3d(*sources, panel.fragment);
+        auto shading = defaultShading3d(*sources, panel.fragment);
+        if (!shading) return fail(shading.error());
+        panel.shading = *shading;
         panel.shadingStated = true;
         if (panel.shading == cp::PanelShading::Headlight)
-            std::cerr << "stylos-cli: " << input << " has no skydome layer: "
-                      << (spec.panels.size() > 1 ? "panel " + std::to_string(i + 1) + "'s" : std::string("the"))
-                      << " 3D view is lit from the viewer (headlight)\n";
+            notes.push_back(input + " has no skydome layer: " +
+                            (spec.panels.size() > 1 ? "panel " + std::to_string(i + 1) + "'s" : std::string("the")) +
+                            " 3D view is lit from the viewer (headlight)");
     }
     if (auto s = spec.validate(layoutFile ? *layoutFile : std::string("the command line")); !s)
         return usageError(cl, inOptionWords(s.error().message));
     for (std::size_t i = 0; i < spec.panels.size() && !sources->isProject; ++i)
         if (spec.panels[i].layer && !panelLayerHeld(*sources, spec.panels[i]))
-            std::cerr << "stylos-cli: " << input << " has no " << core::annotation::layerName(*spec.panels[i].layer)
-                      << " layer: " << (spec.panels.size() > 1 ? "panel " + std::to_string(i + 1) : std::string("the plate"))
-                      << " shows no classes (label it with `stylos-cli annotate` or in the workbench)\n";
+            notes.push_back(input + " has no " + core::annotation::layerName(*spec.panels[i].layer) + " layer: " +
+                            (spec.panels.size() > 1 ? "panel " + std::to_string(i + 1) : std::string("the plate")) +
+                            " shows no classes (label it with `stylos-cli annotate` or in the workbench)");
 
     // Qt draws the page; the offscreen platform needs no display.
     int qtArgc = 3;
@@ -261,6 +267,7 @@ int runPlate(const std::vector<std::string>& args)
     ConsoleProgress progress("drawing the plate of " + input);
     auto composed = plate::composePlate(*sources, spec, options, &progress);
     if (!composed) return fail(composed.error());
+    for (const std::string& note : notes) std::cerr << "stylos-cli: " << note << "\n";
     if (auto s = plate::writePlate(*composed, output); !s) return fail(s.error());
     const double seconds = core::secondsSince(start);
     if (cl.flag("json")) std::cout << reportJson(*composed, output, seconds).dump() << "\n";

@@ -134,6 +134,14 @@ TEST(PlateCommand, UsageErrorsAndBadInput)
     auto missing = runCli({"plate", (dir / "none.ply").string(), "-o", out, "--scale", "10"});
     EXPECT_EQ(missing.exitCode, 1);
     EXPECT_NE(missing.err.find("none.ply"), std::string::npos) << missing.err;
+    // An empty or cut input: its error alone, not first a note that its 3D view is lit from the viewer.
+    std::ofstream(dir / "empty.poct").flush();
+    std::ofstream(dir / "empty.ply").flush();
+    for (const char* name : {"empty.poct", "empty.ply"}) {
+        const auto empty = runCli({"plate", (dir / name).string(), "-o", out, "--view", "front", "--scale", "10"});
+        EXPECT_EQ(empty.exitCode, 1) << name;
+        EXPECT_EQ(empty.err, "stylos-cli: " + (dir / name).string() + ": the file is empty (0 bytes)\n");
+    }
 
     const auto in = drum(dir);
     const auto big = runCli({"plate", in, "-o", out, "--scale", "2"}); // a 3.4 m circumference at 1:2 on A4
