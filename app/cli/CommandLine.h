@@ -75,7 +75,8 @@ int failure(const std::string& message);
 /**
  * What keeps @p target from being written, checked by every command before its work (so a long build does not
  * end on it): "TARGET is a folder; name a file", "TARGET: the folder F does not exist", "TARGET: F is a file, not a
- * folder" or "TARGET: cannot reach the folder F: REASON"; empty when none.
+ * folder", "TARGET: cannot reach the folder F: REASON" or "TARGET is read-only; …" (an existing file without its
+ * owner's write bit, or one this user may not write); empty when none.
  * Reported with failure() (exit 1, the output not writable), like a write that fails later.
  */
 std::string outputProblem(const std::filesystem::path& target);

@@ -254,6 +254,31 @@ TEST(CliBuild, BadInputExitsWithOneNamingTheFile)
     EXPECT_EQ(entriesIn(dir.path()), 1u);
 }
 
+// An output made read-only is refused before the work and left as it was (it was replaced through the temporary file,
+// its mode lost, even as root); a writable one is replaced and keeps its mode.
+TEST(CliBuild, AReadOnlyOutputIsRefusedAndAReplacedOneKeepsItsMode)
+{
+    TempDir dir;
+    const auto scan = generateDrum(dir);
+    const fs::path out = dir / "kept.poct";
+    stylos::test::writeText(out, "last week's octree");
+    fs::permissions(out, fs::perms::owner_read | fs::perms::group_read | fs::perms::others_read);
+    const auto refused = runCli({"build", scan, "-o", out.string()});
+    EXPECT_EQ(refused.exitCode, 1);
+    EXPECT_EQ(refused.err, "stylos-cli: " + out.string() + " is read-only; make it writable or name another file\n");
+    fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write);
+    std::ifstream in(out);
+    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "last week's octree");
+    EXPECT_EQ(entriesIn(dir.path()), 3u); // the scan, its truth and the file: nothing else
+
+    fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+    const auto replaced = runCli({"build", scan, "-o", out.string()});
+    ASSERT_EQ(replaced.exitCode, 0) << replaced.err;
+    EXPECT_GT(fs::file_size(out), 1000u);
+    EXPECT_EQ(fs::status(out).permissions() & fs::perms::all,
+              fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
+}
+
 TEST(CliBuild, SyntheticDrumIsReproducibleAndMethodIndependent)
 {
     TempDir dir;

@@ -110,6 +110,10 @@ Status TempFile::commit()
     m_fd = -1;
     if (::close(fd) != 0) return failure("write error on close: " + systemError(errno));
     std::error_code ec;
+    // A file replaced keeps its mode (the temporary file has the default one).
+    if (const fs::file_status existing = fs::status(m_target, ec); !ec && fs::is_regular_file(existing))
+        fs::permissions(m_temporary, existing.permissions(), ec);
+    ec.clear();
     fs::rename(m_temporary, m_target, ec);
     if (ec) return failure("cannot move the finished file into place: " + ec.message());
     m_committed = true;
