@@ -218,7 +218,8 @@ std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vec
             used = true;
             hatched = hatched || spec.panels[i].hatches;
             coloured = coloured || !spec.panels[i].hatches;
-            for (const std::uint8_t id : panels[i].image.classes) present[id] = true;
+            const std::array<bool, 256> shown = cp::shownClasses(panels[i].image); // regions, not glimpsed specks
+            for (std::size_t id = 0; id < shown.size(); ++id) present[id] = present[id] || shown[id];
         }
         if (!used) continue;
         std::vector<LegendEntry> rows;

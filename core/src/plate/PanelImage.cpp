@@ -88,4 +88,19 @@ void tintByClass(PanelImage& image, const annotation::Legend& legend, annotation
     image.channels = 3;
 }
 
+std::array<bool, 256> shownClasses(const PanelImage& image)
+{
+    std::array<bool, 256> shown{};
+    const int w = image.width, h = image.height;
+    if (image.classes.size() != std::size_t(w) * std::size_t(h)) return shown;
+    const auto at = [&](int x, int y) { return image.classes[std::size_t(y) * std::size_t(w) + std::size_t(x)]; };
+    for (int y = 1; y + 1 < h; ++y)
+        for (int x = 1; x + 1 < w; ++x) {
+            const std::uint8_t c = at(x, y);
+            if (c != 0 && !shown[c] && at(x - 1, y) == c && at(x + 1, y) == c && at(x, y - 1) == c && at(x, y + 1) == c)
+                shown[c] = true;
+        }
+    return shown;
+}
+
 } // namespace stylos::core::plate

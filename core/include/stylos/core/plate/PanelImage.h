@@ -10,6 +10,7 @@
  */
 #include "stylos/core/annotation/Legend.h"
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -27,6 +28,14 @@ struct PanelImage {
         return samples[(std::size_t(y) * std::size_t(width) + std::size_t(x)) * std::size_t(channels) + std::size_t(c)];
     }
 };
+
+/**
+ * @brief The classes that @p image shows as a region: those with at least one pixel whose four neighbours hold the
+ *        same class. A class seen only in scattered pixels or one-pixel slivers — a painted patch on the far side
+ *        glimpsed at the silhouette or through a pinhole of the near surface — is not shown, and the legend leaves it
+ *        out. Indexed by class id; none without classes.
+ */
+std::array<bool, 256> shownClasses(const PanelImage& image);
 
 /** @brief A grey value in [0, 1] with a coverage flag per pixel, and optional class ids, at some pixel size. */
 struct GreyField {
