@@ -13,12 +13,14 @@ bool parseNumberList(const std::string& text, const std::string& option, std::si
                      std::string& problem)
 {
     values.clear();
-    // Decimal numbers only ("1", "-0.5", "+2e-3"): not hexadecimal ("0x10", which strtod takes), not an empty item
-    // (a trailing comma, which getline drops), no spaces.
+    // Decimal numbers only ("1", "-0.5", "+2e-3", spaces around them as in "0, 0, 0"): not hexadecimal ("0x10", which
+    // strtod takes), not an empty item (a trailing comma, which getline dropped).
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = text.find(',', start);
-        const std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+        item.erase(0, item.find_first_not_of(" \t"));
+        item.erase(item.find_last_not_of(" \t") + 1);
         const char* first = item.c_str() + (item.size() > 1 && item[0] == '+' && item[1] != '-' ? 1 : 0);
         const char* last = item.c_str() + item.size();
         double v = 0.0;

@@ -11,8 +11,8 @@
 
 namespace stylos::cli {
 
-/** @p count comma-separated finite decimal numbers (an optional sign, digits, a point, an exponent: no hexadecimal,
- *  no empty item); false with @p problem set (naming @p option and the item) otherwise. */
+/** @p count comma-separated finite decimal numbers (an optional sign, digits, a point, an exponent, spaces around: no
+ *  hexadecimal, no empty item); false with @p problem set (naming @p option and the item) otherwise. */
 bool parseNumberList(const std::string& text, const std::string& option, std::size_t count, std::vector<double>& values,
                      std::string& problem);
 

@@ -187,6 +187,11 @@ std::string outputProblem(const std::filesystem::path& target)
     namespace fs = std::filesystem;
     std::error_code ignored;
     if (fs::is_directory(target, ignored)) return target.string() + " is a folder; name a file";
+    // A file made read-only is not replaced (a write through a renamed temporary file would go round its mode, even as
+    // root): its owner's write bit, or this user's right to write it. Whatever the folder, "out.poct" included.
+    if (const fs::file_status existing = fs::status(target, ignored); fs::is_regular_file(existing) &&
+        ((existing.permissions() & fs::perms::owner_write) == fs::perms::none || ::access(target.c_str(), W_OK) != 0))
+        return target.string() + " is read-only; make it writable or name another file";
     const fs::path folder = target.parent_path();
     if (folder.empty()) return {};
     std::error_code error;
@@ -196,11 +201,6 @@ std::string outputProblem(const std::filesystem::path& target)
     if (fs::exists(status) && !fs::is_directory(status))
         return target.string() + ": " + folder.string() + " is a file, not a folder";
     if (!fs::is_directory(status)) return target.string() + ": the folder " + folder.string() + " does not exist";
-    // A file made read-only is not replaced (a write through a renamed temporary file would go round its mode, even as
-    // root): its owner's write bit, or this user's right to write it.
-    if (const fs::file_status existing = fs::status(target, ignored); fs::is_regular_file(existing) &&
-        ((existing.permissions() & fs::perms::owner_write) == fs::perms::none || ::access(target.c_str(), W_OK) != 0))
-        return target.string() + " is read-only; make it writable or name another file";
     return {};
 }
 

@@ -267,9 +267,19 @@ TEST(CliBuild, AReadOnlyOutputIsRefusedAndAReplacedOneKeepsItsMode)
     EXPECT_EQ(refused.exitCode, 1);
     EXPECT_EQ(refused.err, "stylos-cli: " + out.string() + " is read-only; make it writable or name another file\n");
     fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write);
-    std::ifstream in(out);
-    EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "last week's octree");
+    {
+        std::ifstream in(out);
+        EXPECT_EQ(std::string(std::istreambuf_iterator<char>(in), {}), "last week's octree");
+    }
     EXPECT_EQ(entriesIn(dir.path()), 3u); // the scan, its truth and the file: nothing else
+    // Named without a folder ("kept.poct", in the working folder): refused too (the check came after "no folder").
+    fs::permissions(out, fs::perms::owner_read);
+    const fs::path here = fs::current_path();
+    fs::current_path(dir.path());
+    const auto bare = runCli({"build", scan, "-o", "kept.poct"});
+    fs::current_path(here);
+    EXPECT_EQ(bare.exitCode, 1);
+    EXPECT_EQ(bare.err, "stylos-cli: kept.poct is read-only; make it writable or name another file\n");
 
     fs::permissions(out, fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read);
     const auto replaced = runCli({"build", scan, "-o", out.string()});

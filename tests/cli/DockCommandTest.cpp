@@ -169,7 +169,7 @@ TEST(CliDock, BadInputFailsNamingTheProblem)
     run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,1,0,0,0,"});
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("--pose: \"\" is not a number"), std::string::npos) << run.err;
-    run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1,0,0,0,1,0,0,0,1,0x10,0,0"});
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1, 0,0,0,1,0,0,0,1 ,0x10,0,0"}); // spaces are fine
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("--pose: \"0x10\" is not a number"), std::string::npos) << run.err;
     // A lock that names nothing.
@@ -189,8 +189,8 @@ TEST(CliDock, APoseToSixDecimalsIsTaken)
     std::ostringstream rounded;
     rounded << std::fixed << std::setprecision(6);
     for (int i = 0; i < 3; ++i)
-        for (int k = 0; k < 3; ++k) rounded << start.linear()(i, k) << ",";
-    rounded << start.translation().x() << "," << start.translation().y() << "," << start.translation().z();
+        for (int k = 0; k < 3; ++k) rounded << start.linear()(i, k) << ", "; // spaces after the commas, as typed
+    rounded << start.translation().x() << ", " << start.translation().y() << ", " << start.translation().z();
     const auto run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose", rounded.str(), "--json"});
     ASSERT_EQ(run.exitCode, 0) << run.err;
     const auto j = nlohmann::json::parse(run.out);

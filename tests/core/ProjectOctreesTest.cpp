@@ -154,6 +154,30 @@ TEST(ProjectOctreesTest, AFailedCopyNamesBothFilesLeavesNoPartAndTheSceneTrue)
     EXPECT_FALSE(fs::exists(d.root / "no such folder"));
 }
 
+// A folder without room for the copies is refused before the first one (a disk that filled halfway left some octrees
+// copied, the project unsaved, and the message "Input/output error"). The plan's sizes stand for the files'.
+TEST(ProjectOctreesTest, NotEnoughSpaceIsSaidBeforeAnyCopy)
+{
+    Folders d;
+    test::writeText(d.cache / "a.poct", "aaaa");
+    test::writeText(d.cache / "b.poct", "bbbb");
+    Scene scene;
+    const FragmentId a = addFragment(scene, "A", d.cache / "a.poct");
+    addFragment(scene, "B", d.cache / "b.poct");
+    GatherPlan plan = planGather(scene, d.project, d.cache);
+    ASSERT_EQ(plan.transfers.size(), 2u);
+    plan.transfers[1].bytes = std::uintmax_t(1) << 62; // more than any disk
+    auto report = gather(scene, plan);
+    ASSERT_FALSE(report.ok());
+    EXPECT_EQ(report.error().code, ErrorCode::WriteFailed);
+    EXPECT_NE(report.error().message.find(plan.transfers[0].to.parent_path().string() +
+                                          ": not enough space to bring the octrees into the project's folder: "),
+              std::string::npos) << report.error().message;
+    EXPECT_NE(report.error().message.find(" MB free"), std::string::npos) << report.error().message;
+    EXPECT_FALSE(fs::exists(plan.transfers[0].to)); // nothing copied
+    EXPECT_EQ(scene.find(a)->octreePath, d.cache / "a.poct");
+}
+
 TEST(ProjectOctreesTest, AVanishedSourceIsNotFound)
 {
     Folders d;

@@ -1,5 +1,9 @@
 #include "stylos/core/scene/ProjectOctrees.h"
 
+#include <cstdio>
+
+#include <map>
+
 #include "stylos/core/scene/ProjectFile.h"
 
 #include <algorithm>
@@ -96,6 +100,22 @@ GatherPlan planGather(const Scene& scene, const fs::path& projectPath, const fs:
 Result<GatherReport> gather(Scene& scene, const GatherPlan& plan, bool copies)
 {
     GatherReport report;
+    // Room for every copy before the first: a disk that fills halfway would leave some octrees copied and the project
+    // unsaved (and the system's word for it, mid-copy, is often "Input/output error").
+    std::map<fs::path, std::uintmax_t> needed; // per folder
+    for (const OctreeTransfer& t : plan.transfers)
+        if (t.fromCache || copies) needed[t.to.parent_path()] += t.bytes;
+    for (const auto& [folder, bytes] : needed) {
+        std::error_code ec;
+        const fs::space_info space = fs::space(folder, ec);
+        if (!ec && space.available < bytes) {
+            char text[240];
+            std::snprintf(text, sizeof text,
+                          "not enough space to bring the octrees into the project's folder: %.1f MB needed, %.1f MB free",
+                          double(bytes) / 1e6, double(space.available) / 1e6);
+            return Error::at(ErrorCode::WriteFailed, folder.string(), "", text);
+        }
+    }
     for (const OctreeTransfer& t : plan.transfers) {
         if (!t.fromCache && !copies) continue;
         std::error_code ec;

@@ -64,7 +64,8 @@ struct GatherReport {
 /**
  * @brief Carries out @p plan's transfers (all, or only those from the cache when @p copies is false: the
  *        others keep their paths) and
- *        repoints @p scene's fragments. Errors: WriteFailed naming the source and the destination (the
+ *        repoints @p scene's fragments. Errors: WriteFailed naming the folder, before any copy, when its free space
+ *        is less than the bytes to copy into it; WriteFailed naming the source and the destination (the
  *        transfers done before it stay done, the scene names them); NotFound when a source vanished.
  */
 Result<GatherReport> gather(Scene& scene, const GatherPlan& plan, bool copies = true);
