@@ -108,9 +108,13 @@ void PlateActions::choosePlate()
     const auto kept = m_document.scene().plate();
     // Without a kept plate, the current fragment's développée (else the first visible one's), sized by its octree
     // (the one the document holds open), with the layer painted on it.
-    std::string current;
-    if (m_fragment)
-        if (const core::scene::Fragment* f = m_document.scene().find(m_fragment())) current = f->name;
+    std::optional<std::size_t> current; // its place in the sources: they follow the scene's fragments
+    if (m_fragment) {
+        const auto& fragments = m_document.scene().fragments();
+        const core::scene::FragmentId id = m_fragment();
+        for (std::size_t i = 0; i < fragments.size(); ++i)
+            if (fragments[i].id == id) current = i;
+    }
     const cp::PlateSpec start = kept ? *kept : widgets::PlateDialog::defaultSpec(*sources, [this](const cp::PlateFragment& f) {
         for (const core::scene::Fragment& g : m_document.scene().fragments())
             if (g.octreePath == f.path) return m_document.octree(g.id);

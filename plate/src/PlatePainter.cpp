@@ -218,7 +218,14 @@ std::vector<LegendEntry> legendEntries(const cp::PlateSpec& spec, const std::vec
             used = true;
             hatched = hatched || spec.panels[i].hatches;
             coloured = coloured || !spec.panels[i].hatches;
-            const std::array<bool, 256> shown = cp::shownClasses(panels[i].image); // regions, not glimpsed specks
+            if (spec.panels[i].view == cp::PanelView::Developpee) { // the surface seen from outside: all it holds
+                for (const std::uint8_t id : panels[i].image.classes) present[id] = true;
+                continue;
+            }
+            // A 3D view: the regions it shows, not a far side glimpsed in a few pixels; on blocks of ~1/72 inch, so
+            // that the preview (72 dpi) and the file list the same classes.
+            const int block = std::max(1, int(std::lround(double(spec.dpi) / 72.0)));
+            const std::array<bool, 256> shown = cp::shownClasses(panels[i].image, block);
             for (std::size_t id = 0; id < shown.size(); ++id) present[id] = present[id] || shown[id];
         }
         if (!used) continue;

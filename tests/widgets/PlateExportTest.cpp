@@ -337,14 +337,14 @@ void PlateExportTest::theDefaultPlateShowsTheCurrentFragmentAndItsPaint()
 
     auto sources = app::PlateActions::sourcesOf(document);
     // No fragment preferred, or one that is not there: the first visible one, unnamed, and nothing painted on it.
-    for (const std::string& preferred : {std::string(), std::string("Nowhere")}) {
+    for (const std::optional<std::size_t> preferred : {std::optional<std::size_t>(), std::optional<std::size_t>(7)}) {
         const cp::PlateSpec plain = widgets::PlateDialog::defaultSpec(*sources, {}, preferred);
         QCOMPARE(plain.panels.size(), std::size_t{1});
         QCOMPARE(plain.panels[0].fragment, std::string());
         QVERIFY(!plain.panels[0].layer);
         QCOMPARE(plain.panels[0].scale, 20.0);
     }
-    const cp::PlateSpec chosen = widgets::PlateDialog::defaultSpec(*sources, {}, "Piece B");
+    const cp::PlateSpec chosen = widgets::PlateDialog::defaultSpec(*sources, {}, 1);
     QCOMPARE(chosen.panels[0].fragment, std::string("Piece B"));
     QCOMPARE(chosen.panels[0].layer, std::optional(AnnotationLayer::Toolmark));
     QCOMPARE(chosen.panels[0].scale, 20.0);
@@ -356,7 +356,7 @@ void PlateExportTest::theDefaultPlateShowsTheCurrentFragmentAndItsPaint()
     // Material painted too: material comes first.
     QVERIFY(paint(piece, AnnotationLayer::Material));
     sources = app::PlateActions::sourcesOf(document);
-    QCOMPARE(widgets::PlateDialog::defaultSpec(*sources, {}, "Piece B").panels[0].layer, std::optional(AnnotationLayer::Material));
+    QCOMPARE(widgets::PlateDialog::defaultSpec(*sources, {}, 1).panels[0].layer, std::optional(AnnotationLayer::Material));
 }
 
 // The plate's développée of a fragment is the one the Développée dock shows: the dock's last result's settings

@@ -5,6 +5,7 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
+#include <unordered_map>
 
 namespace stylos::core::annotation {
 
@@ -91,6 +92,30 @@ AssemblyLeafIndex AssemblyLeafIndex::build(int width, int height, std::shared_pt
     out.m_height = height;
     out.m_pieceAt = std::move(pieceAt);
     const auto& at = *out.m_pieceAt;
+    // Lending: each piece's window spans every pixel it shows with a height, so that its borrowers are in it — found
+    // for all pieces in one pass over the image (runs of one piece along a row: one lookup a run).
+    struct Span {
+        int left = std::numeric_limits<int>::max(), top = std::numeric_limits<int>::max(), right = -1, bottom = -1;
+    };
+    std::unordered_map<std::uint64_t, Span> shownSpans;
+    if (lend) {
+        for (const PieceLeaves& p : pieces) shownSpans[p.id];
+        Span* span = nullptr;
+        std::uint64_t spanId = 0;
+        for (int r = 0; r < height; ++r)
+            for (int c = 0; c < width; ++c) {
+                const std::size_t pixel = std::size_t(r) * std::size_t(width) + std::size_t(c);
+                if (states[pixel] == shading::PixelState::Empty) continue;
+                if (!span || at[pixel] != spanId) {
+                    const auto it = shownSpans.find(at[pixel]);
+                    span = it == shownSpans.end() ? nullptr : &it->second;
+                    spanId = at[pixel];
+                    if (!span) continue;
+                }
+                span->left = std::min(span->left, c), span->right = std::max(span->right, c);
+                span->top = std::min(span->top, r), span->bottom = std::max(span->bottom, r);
+            }
+    }
     for (PieceLeaves& p : pieces) {
         assert(!out.find(p.id) && "AssemblyLeafIndex::build(): two pieces of one id");
         // Keep the leaves on the pixels this piece shows; their bounding window.
@@ -105,13 +130,13 @@ AssemblyLeafIndex AssemblyLeafIndex::build(int width, int height, std::shared_pt
             const int c = int(pixel % width), r = int(pixel / width);
             left = std::min(left, c), right = std::max(right, c), top = std::min(top, r), bottom = std::max(bottom, r);
         }
-        // Lending: the window spans every pixel the piece shows with a height, so that its borrowers are in it.
         const auto shows = [&](std::size_t pixel) { return at[pixel] == p.id && states[pixel] != shading::PixelState::Empty; };
-        if (lend && right >= 0)
-            for (int r = 0; r < height; ++r)
-                for (int c = 0; c < width; ++c)
-                    if (shows(std::size_t(r) * std::size_t(width) + std::size_t(c)))
-                        left = std::min(left, c), right = std::max(right, c), top = std::min(top, r), bottom = std::max(bottom, r);
+        if (lend && right >= 0) {
+            const Span& s = shownSpans[p.id];
+            if (s.right >= 0)
+                left = std::min(left, s.left), right = std::max(right, s.right), top = std::min(top, s.top),
+                bottom = std::max(bottom, s.bottom);
+        }
         Piece piece;
         piece.id = p.id;
         piece.pose = p.pose;

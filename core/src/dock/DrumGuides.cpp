@@ -189,7 +189,8 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
             // A given count that is a multiple of the drum's: the flutes' sharp fillets put a harmonic at 2N, 3N…
             // strong enough to pass, and guides at that count dock nothing. The count it is a multiple of stands out
             // far more (a true N-flute drum has nothing at N / k): refused, naming it.
-            for (int k = given / 3; k >= 2; --k) {
+            // Counts of the scan's range only (a drum's ovality or a partial scan puts energy at 2, 3… flutes).
+            for (int k = given / kMinScan; k >= 2; --k) {
                 if (given % k != 0) continue;
                 const int divisor = given / k;
                 const FluteFrequency lower = strongestFrequency(s, medianRho, divisor, divisor, kMaxSpectrum);

@@ -88,14 +88,29 @@ void tintByClass(PanelImage& image, const annotation::Legend& legend, annotation
     image.channels = 3;
 }
 
-std::array<bool, 256> shownClasses(const PanelImage& image)
+std::array<bool, 256> shownClasses(const PanelImage& image, int block)
 {
     std::array<bool, 256> shown{};
     const int w = image.width, h = image.height;
-    if (image.classes.size() != std::size_t(w) * std::size_t(h)) return shown;
-    const auto at = [&](int x, int y) { return image.classes[std::size_t(y) * std::size_t(w) + std::size_t(x)]; };
-    for (int y = 1; y + 1 < h; ++y)
-        for (int x = 1; x + 1 < w; ++x) {
+    if (w <= 0 || h <= 0 || image.classes.size() != std::size_t(w) * std::size_t(h)) return shown;
+    block = std::max(1, block);
+    // Each block's class: the one that fills more than half of its pixels (a block cut by the image's edge: of those).
+    const int bw = (w + block - 1) / block, bh = (h + block - 1) / block;
+    std::vector<std::uint8_t> blocks(std::size_t(bw) * std::size_t(bh), 0);
+    std::array<int, 256> counts{};
+    for (int by = 0; by < bh; ++by)
+        for (int bx = 0; bx < bw; ++bx) {
+            const int x0 = bx * block, y0 = by * block, x1 = std::min(w, x0 + block), y1 = std::min(h, y0 + block);
+            counts.fill(0);
+            for (int y = y0; y < y1; ++y)
+                for (int x = x0; x < x1; ++x) ++counts[image.classes[std::size_t(y) * std::size_t(w) + std::size_t(x)]];
+            const int half = (x1 - x0) * (y1 - y0) / 2;
+            for (int c = 1; c < 256; ++c)
+                if (counts[std::size_t(c)] > half) blocks[std::size_t(by) * std::size_t(bw) + std::size_t(bx)] = std::uint8_t(c);
+        }
+    const auto at = [&](int x, int y) { return blocks[std::size_t(y) * std::size_t(bw) + std::size_t(x)]; };
+    for (int y = 1; y + 1 < bh; ++y)
+        for (int x = 1; x + 1 < bw; ++x) {
             const std::uint8_t c = at(x, y);
             if (c != 0 && !shown[c] && at(x - 1, y) == c && at(x + 1, y) == c && at(x, y - 1) == c && at(x, y + 1) == c)
                 shown[c] = true;

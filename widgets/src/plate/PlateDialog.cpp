@@ -380,7 +380,7 @@ void PlateDialog::setSpec(const cp::PlateSpec& spec)
 cp::PlateSpec PlateDialog::defaultSpec(
     const cp::PlateSources& sources,
     const std::function<std::shared_ptr<const core::octree::PackedOctree>(const cp::PlateFragment&)>& opened,
-    const std::string& preferred)
+    std::optional<std::size_t> preferred)
 {
     cp::PlateSpec spec;
     spec.landscape = true;
@@ -392,9 +392,14 @@ cp::PlateSpec PlateDialog::defaultSpec(
     // in the panel (the composer draws a named fragment, hidden or not), else the one the composer unrolls for a panel
     // that names none: the first visible one. @p opened gives its octree when the caller holds it open.
     const auto usable = [](const cp::PlateFragment& f) { return !f.missing && f.isOctree; };
-    auto chosen = std::find_if(sources.fragments.begin(), sources.fragments.end(),
-                               [&](const cp::PlateFragment& f) { return !preferred.empty() && f.name == preferred; });
-    if (chosen != sources.fragments.end() && usable(*chosen)) panel.fragment = chosen->name;
+    auto chosen = sources.fragments.end();
+    if (preferred && *preferred < sources.fragments.size()) {
+        const auto named = [&](const cp::PlateFragment& f) { return f.name == sources.fragments[*preferred].name; };
+        if (usable(sources.fragments[*preferred]) &&
+            std::count_if(sources.fragments.begin(), sources.fragments.end(), named) == 1)
+            chosen = sources.fragments.begin() + std::ptrdiff_t(*preferred);
+    }
+    if (chosen != sources.fragments.end()) panel.fragment = chosen->name;
     else
         chosen = std::find_if(sources.fragments.begin(), sources.fragments.end(),
                               [&](const cp::PlateFragment& f) { return f.visible && usable(f); });

@@ -9,7 +9,8 @@
  * Estimate, exactly (tests rely on it): with D the depth and e the leaf edge, every leaf belongs to its
  * ancestor C at level m = max(0, D − k) (edge S = 2^k e), k = 4 — or the first k of 5…8 for which, at level m + 1,
  * at least half the leaves lie in ancestors where n ≥ 2 o₁ (below): an octree deeper than its scan (4 mm samples
- * at depth 12, leaves of 0.42 mm) has one sample per cell of 8 edges, and k = 4 would cap h near that edge. Under C, n leaves and, at levels m + 1 and m + 2
+ * at depth 12, leaves of 0.42 mm) has one sample per cell of 8 edges, and k = 4 would cap h near that edge. One k
+ * for the whole octree: one merged from a dense and a sparse scan takes the k of the majority of its leaves. Under C, n leaves and, at levels m + 1 and m + 2
  * (edges s₁, s₂, capped at D), o₁ and o₂ occupied cells. A plane of normal u crosses on average
  * |u|₁ / s² cubes of edge s per unit area, so the surface in C is A = o · s² / |u|₁, with u C's normal
  * (|u|₁ ∈ [1, √3]). The finer level is used (o₂, s₂) when it is saturated, n ≥ 2 o₂ (the samples are

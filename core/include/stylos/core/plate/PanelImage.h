@@ -30,12 +30,14 @@ struct PanelImage {
 };
 
 /**
- * @brief The classes that @p image shows as a region: those with at least one pixel whose four neighbours hold the
- *        same class. A class seen only in scattered pixels or one-pixel slivers — a painted patch on the far side
+ * @brief The classes that @p image shows as a region, judged on blocks of @p block × @p block pixels (each block the
+ *        class that fills more than half of it, else none): those with a block whose four neighbours hold the same
+ *        class. A class seen only in scattered pixels or slivers — a painted patch on the far side of a 3D view
  *        glimpsed at the silhouette or through a pinhole of the near surface — is not shown, and the legend leaves it
- *        out. Indexed by class id; none without classes.
+ *        out. The plate takes blocks of about 1/72 inch on paper, so its preview (72 dpi) and its file (any dpi) list
+ *        the same classes. Indexed by class id; none without classes.
  */
-std::array<bool, 256> shownClasses(const PanelImage& image);
+std::array<bool, 256> shownClasses(const PanelImage& image, int block = 1);
 
 /** @brief A grey value in [0, 1] with a coverage flag per pixel, and optional class ids, at some pixel size. */
 struct GreyField {

@@ -53,15 +53,16 @@ public:
     void setSpec(const core::plate::PlateSpec& spec);
 
     /** @brief A plate for a project with no stated plate: a développée on A4 landscape at the most detailed usual
-     *         scale that fits by its octree's box. Its fragment is @p preferred (a fragment's name: the one the user
-     *         works on), named in the panel, where such a fragment's octree is there; else the first visible one.
+     *         scale that fits by its octree's box. Its fragment is sources.fragments[@p preferred] (the one the user
+     *         works on), named in the panel, where its octree is there and no other fragment has its name (a panel
+     *         names its fragment); else the first visible one.
      *         Its annotation layer is the first of the fragment's in-memory label layers (material, then tool marks)
      *         that holds a class; none where nothing is painted. @p opened gives that octree when the caller holds
      *         it open (else it is read from its file). */
     static core::plate::PlateSpec defaultSpec(
         const core::plate::PlateSources& sources,
         const std::function<std::shared_ptr<const core::octree::PackedOctree>(const core::plate::PlateFragment&)>& opened = {},
-        const std::string& preferred = {});
+        std::optional<std::size_t> preferred = std::nullopt);
 
     /** @brief Why @p spec's plate does not fit its page, in the workbench's language and number format (the layout's
      *         own message is English): the panel and its size, the print area, the scale or scales that would fit. */
