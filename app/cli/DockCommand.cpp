@@ -25,6 +25,11 @@
 namespace stylos::cli {
 
 namespace {
+/** A dock whose RMS exceeds this many times the drum's own profile RMS is said to be poor (good docks: 1–2 times). */
+constexpr double kPoorDockRatio = 3.0;
+} // namespace
+
+namespace {
 
 namespace dock = core::dock;
 
@@ -174,6 +179,14 @@ int runDock(const std::vector<std::string>& args)
     auto docked = dock::dockFragment(*fragment, *guides, r.pose, r.options, &progress);
     if (!docked) return fail(docked.error());
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    // A dock that ends far off the profile (a wrong flute, a lock that holds it off its place) is said, not only
+    // printed as a number: the drum's own points lie within guides->rms of it.
+    if (guides->rms > 0.0 && docked->rms > kPoorDockRatio * guides->rms)
+        std::fprintf(stderr,
+                     "stylos-cli: %s sits %.2f mm RMS from the flute profile, %.1f times the drum's own %.3f mm: it may "
+                     "rest on the wrong flute or be held off its place by a lock; start it nearer its place or free a "
+                     "lock\n",
+                     r.fragment.c_str(), docked->rms * 1e3, docked->rms / guides->rms, guides->rms * 1e3);
 
     if (r.json) {
         std::cout << dockJson(*docked, seconds).dump() << "\n";

@@ -180,6 +180,23 @@ TEST(CliDock, BadInputFailsNamingTheProblem)
     }
 }
 
+// A fragment held 1.5° off its place by Lock θ ends far off the flute profile: said on stderr, with the drum's own RMS;
+// a good dock says nothing of the kind.
+TEST(CliDock, APoorDockIsSaid)
+{
+    const Scene& s = scene();
+    const auto held = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose",
+                              poseArgument(s.turned(1.5)), "--lock", "theta", "--json"});
+    ASSERT_EQ(held.exitCode, 0) << held.err;
+    EXPECT_NE(held.err.find(" mm RMS from the flute profile, "), std::string::npos) << held.err;
+    EXPECT_NE(held.err.find("times the drum's own"), std::string::npos) << held.err;
+    EXPECT_GT(nlohmann::json::parse(held.out)["rms_mm"].get<double>(), 1.0); // the JSON as before
+    const auto good = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose",
+                              poseArgument(s.turned(2.0)), "--json"});
+    ASSERT_EQ(good.exitCode, 0) << good.err;
+    EXPECT_EQ(good.err.find("RMS from the flute profile"), std::string::npos) << good.err;
+}
+
 // A pose as other tools print it, to 6 decimals (its rows off orthonormal by ~1e-6), is taken and made a rotation: it
 // docks as the exact one does (it was refused as "not a rotation").
 TEST(CliDock, APoseToSixDecimalsIsTaken)
