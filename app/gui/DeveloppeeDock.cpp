@@ -1,11 +1,16 @@
 #include "DeveloppeeDock.h"
 
 #include "stylos/widgets/developpee/DeveloppeePanel.h"
+#include "stylos/widgets/developpee/DeveloppeeView.h"
 
 #include <QEvent>
 #include <QSettings>
 
 namespace stylos::app {
+
+namespace {
+constexpr const char* BrushSizeKey = "paint/brushSize"; ///< metres
+} // namespace
 
 DeveloppeeDock::DeveloppeeDock(QWidget* parent) : QDockWidget(parent), m_panel(new widgets::DeveloppeePanel)
 {
@@ -13,6 +18,10 @@ DeveloppeeDock::DeveloppeeDock(QWidget* parent) : QDockWidget(parent), m_panel(n
     m_panel->setObjectName(QStringLiteral("developpee"));
     QSettings settings;
     m_panel->setSettings(widgets::DeveloppeeSettings::load(settings));
+    // The brush as the user left it (before the paint bar is made: it reads the view's size).
+    bool ok = false;
+    const double brush = settings.value(QLatin1String(BrushSizeKey)).toDouble(&ok);
+    if (ok && brush > 0.0 && brush <= 1.0) m_panel->view()->setBrushSize(brush);
     setWidget(m_panel);
     retranslateUi();
 }
@@ -21,6 +30,7 @@ void DeveloppeeDock::saveSettings() const
 {
     QSettings settings;
     m_panel->settings().save(settings);
+    settings.setValue(QLatin1String(BrushSizeKey), m_panel->view()->brushSize());
 }
 
 void DeveloppeeDock::changeEvent(QEvent* event)

@@ -16,11 +16,11 @@ class DeveloppeeDock : public QDockWidget {
     Q_OBJECT
 
 public:
-    /** Builds the panel with the settings last saved (QSettings). */
+    /** Builds the panel with the settings last saved (QSettings), the brush size with them. */
     explicit DeveloppeeDock(QWidget* parent = nullptr);
 
     widgets::DeveloppeePanel& panel() const { return *m_panel; }
-    /** @brief Keeps the panel's settings for the next session. */
+    /** @brief Keeps the panel's settings and the brush size for the next session. */
     void saveSettings() const;
 
 protected:

@@ -37,6 +37,7 @@
 #include <QMenu>
 #include <QMenuBar>
 #include <QPushButton>
+#include <QDoubleSpinBox>
 #include <QSettings>
 #include <QSignalSpy>
 #include <QTemporaryDir>
@@ -654,8 +655,19 @@ void MainWindowTest::closingCancelsTasksAndSavesTheLayout()
     window->importer().setCacheDirectory(m_dir.filePath("closing"));
     window->projectActions().openPaths({QString::fromStdString(m_drum.ply.string())});
     QVERIFY(!window->tasks().isIdle());
+    auto* brush = window->findChild<QDoubleSpinBox*>(QStringLiteral("paintBrushSize"));
+    QVERIFY(brush);
+    brush->setValue(50.0); // mm
     QVERIFY(window->close()); // cancels the build and waits for its worker
     QVERIFY(QSettings().contains(QStringLiteral("mainWindow/state")));
+    // The brush size comes back in the next session (it went back to 10 mm).
+    {
+        auto next = makeWindow();
+        auto* again = next->findChild<QDoubleSpinBox*>(QStringLiteral("paintBrushSize"));
+        QVERIFY(again);
+        QCOMPARE(again->value(), 50.0);
+        QVERIFY(next->close());
+    }
     QVERIFY(window->tasks().waitForIdle(10000));
     // The cancelled build added nothing and left nothing behind.
     QCOMPARE(window->document().scene().fragments().size(), std::size_t{0});
