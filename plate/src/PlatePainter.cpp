@@ -6,6 +6,7 @@
 
 #include <QFontMetricsF>
 #include <QPainter>
+#include <QTextLayout>
 #include <QPainterPath>
 
 #include <Eigen/Geometry>
@@ -293,14 +294,36 @@ int legendRows(const cp::PlateSpec& spec, const std::vector<cp::RenderedPanel>& 
     return cp::legendGridRows(classesPerLayer(entries), legendColumns(width));
 }
 
+/** The caption's lines at @p width (the font's units): wrapped at word boundaries, and inside a word only when a
+ *  word alone is wider than the line (a long URL or a run of characters without spaces: it ran past the print area and
+ *  was cut mid-glyph); line breaks kept. Returns the height taken. */
+static double layOutCaption(QTextLayout& layout, const QString& caption, const QFont& font, double width)
+{
+    QString text = caption;
+    text.replace(QLatin1Char('\n'), QChar::LineSeparator);
+    layout.setText(text);
+    layout.setFont(font);
+    QTextOption option;
+    option.setWrapMode(QTextOption::WrapAtWordBoundaryOrAnywhere);
+    layout.setTextOption(option);
+    double y = 0;
+    layout.beginLayout();
+    for (QTextLine line = layout.createLine(); line.isValid(); line = layout.createLine()) {
+        line.setLineWidth(width);
+        line.setPosition(QPointF(0, y));
+        y += line.height();
+    }
+    layout.endLayout();
+    return y;
+}
+
 double captionHeightMm(const QString& caption, double widthMm)
 {
     if (caption.trimmed().isEmpty()) return 0;
     QFont font(QStringLiteral("DejaVu Serif"));
     font.setPixelSize(int(std::lround(9 * kPt * 100))); // 0.01 mm units
-    const QFontMetricsF m(font);
-    const QRectF r = m.boundingRect(QRectF(0, 0, widthMm * 100, 1e7), Qt::TextWordWrap, caption);
-    return r.height() / 100 + 2.0;
+    QTextLayout layout;
+    return layOutCaption(layout, caption, font, widthMm * 100) / 100 + 2.0;
 }
 
 QImage panelQImage(const cp::PanelImage& image, bool sixteenBits)
@@ -376,7 +399,9 @@ void paintPlate(QPainter& p, const PlateContent& plate)
         p.setFont(font);
         p.setPen(Qt::black);
         const QRectF r = t.mapRect(QRectF(layout.caption.x, layout.caption.y, layout.caption.w, layout.caption.h));
-        p.drawText(r, int(Qt::TextWordWrap | Qt::AlignLeft | Qt::AlignTop), QString::fromStdString(plate.spec.caption));
+        QTextLayout lines;
+        layOutCaption(lines, QString::fromStdString(plate.spec.caption), font, r.width());
+        lines.draw(&p, r.topLeft());
         p.restore();
     }
 }

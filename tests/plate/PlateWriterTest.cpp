@@ -459,6 +459,37 @@ TEST(PlateWriter, ACaptionWithMarkupCharactersKeepsTheSvgWellFormed)
     EXPECT_FALSE(xml.hasError()) << xml.errorString().toStdString() << " at line " << xml.lineNumber();
 }
 
+// A caption word wider than the print area (a long URL, a run of characters without spaces) wraps inside the word and
+// stays within the print area; before, it was cut at the print area's edge and the rest of it lost.
+TEST(PlateWriter, AWordWiderThanThePageWrapsInsideThePrintArea)
+{
+    auto spec = developpeeSpec();
+    spec.dpi = 72;
+    spec.caption = "Drum 2 " + std::string(400, 'x') + " end";
+    auto plate = compose(spec);
+    ASSERT_TRUE(plate.ok()) << plate.error().message;
+    const fs::path png = *fixture().dir / "longword.png";
+    ASSERT_TRUE(plate::writePlate(*plate, png).ok());
+    QImage image(QString::fromStdString(png.string()));
+    ASSERT_FALSE(image.isNull());
+    image = image.convertToFormat(QImage::Format_Grayscale8);
+    const auto& c = plate->layout.caption;
+    const double pxPerMm = 72 / 25.4;
+    const int right = int(std::ceil((spec.orientedPage().widthMm - spec.marginMm) * pxPerMm)) + 1;
+    const int top = int(c.y * pxPerMm), bottom = std::min(image.height() - 1, int((c.y + c.h) * pxPerMm));
+    int ink = 0, inside = 0;
+    for (int y = top; y <= bottom; ++y)
+        for (int x = 0; x < image.width(); ++x) {
+            if (image.constScanLine(y)[x] > 128) continue;
+            (x > right ? ink : inside) += 1;
+        }
+    EXPECT_GT(inside, 1000); // the caption is there, on several lines
+    EXPECT_EQ(ink, 0) << "caption ink right of the print area";
+    // 400 "x" of 9 pt (~1.7 mm each) on a 180 mm line: four lines of them, with "Drum 2" five at least (~3.7 mm
+    // each). Before, the word was one line cut at the print area's edge, the rest of it lost: three lines, 13 mm.
+    EXPECT_GT(c.h, 16.0);
+}
+
 int main(int argc, char** argv)
 {
     int qtArgc = 3;
