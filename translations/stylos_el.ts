@@ -2827,6 +2827,10 @@ Do you want to delete it anyway?</source>
         <source>The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the other orientation.</source>
         <translation>Ο πίνακας χρειάζεται ύψος %1 mm· η επιφάνεια εκτύπωσης είναι %2: επιλέξτε μικρότερες κλίμακες (%3), μεγαλύτερη σελίδα ή τον άλλο προσανατολισμό.</translation>
     </message>
+    <message>
+        <source>The caption needs %1 mm of height on its own; the print area is %2: shorten the caption or use a larger page.</source>
+        <translation>Η λεζάντα μόνη της χρειάζεται ύψος %1 mm· η επιφάνεια εκτύπωσης είναι %2: συντομεύστε τη λεζάντα ή επιλέξτε μεγαλύτερη σελίδα.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::PlateTexts</name>

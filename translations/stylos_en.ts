@@ -2821,6 +2821,10 @@ Do you want to delete it anyway?</source>
         <source>The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the other orientation.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>The caption needs %1 mm of height on its own; the print area is %2: shorten the caption or use a larger page.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::PlateTexts</name>

@@ -2827,6 +2827,10 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>The plate needs %1 mm of height; the print area is %2: use smaller scales (%3), a larger page or the other orientation.</source>
         <translation>La planche demande %1 mm de hauteur ; la zone d’impression mesure %2 : choisissez des échelles plus petites (%3), une page plus grande ou l’autre orientation.</translation>
     </message>
+    <message>
+        <source>The caption needs %1 mm of height on its own; the print area is %2: shorten the caption or use a larger page.</source>
+        <translation>La légende de figure demande à elle seule %1 mm de hauteur ; la zone d’impression mesure %2 : raccourcissez-la ou choisissez une page plus grande.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::PlateTexts</name>

@@ -221,6 +221,16 @@ TEST(PlateLayout, RefusesWhatDoesNotFitAndNamesTheScaleThatWould)
     EXPECT_EQ(failure.kind, LayoutFailure::Kind::TooTall);
     EXPECT_GT(failure.sizeMm[1], 267);
     EXPECT_NE(crowded.error().message.find("of height"), std::string::npos) << crowded.error().message;
+    // A caption that alone takes the print area's height: no scale helps, and none is offered.
+    const std::array<double, 2> small{10, 10};
+    const auto wordy = layoutPlate(s, std::span(&small, 1), 0, 270, {}, &failure);
+    ASSERT_FALSE(wordy.ok());
+    EXPECT_EQ(failure.kind, LayoutFailure::Kind::CaptionTooTall);
+    EXPECT_DOUBLE_EQ(failure.sizeMm[1], 272.0);
+    EXPECT_NE(wordy.error().message.find("the caption alone needs 272.0 mm of height; the A4 print area is 180.0 × 267.0 mm: "
+                                         "shorten the caption or use a larger page"),
+              std::string::npos) << wordy.error().message;
+    EXPECT_EQ(wordy.error().message.find("scale"), std::string::npos) << wordy.error().message;
     // A page too small for the panel's labels alone: no scale to name, only a larger page.
     s.page = {10, 10};
     s.pageName = "10x10";

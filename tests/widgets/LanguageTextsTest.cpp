@@ -160,6 +160,18 @@ void LanguageTextsTest::aPlateThatDoesNotFitIsSaidInTheLanguage()
         QCOMPARE(widgets::PlateDialog::layoutFailureText(large, one), e.large);
         QCOMPARE(widgets::PlateDialog::layoutFailureText(tall, two), e.tall);
     }
+    // A caption taller than the print area on its own: no scale offered.
+    cp::LayoutFailure wordy = tall;
+    wordy.kind = cp::LayoutFailure::Kind::CaptionTooTall;
+    wordy.sizeMm = {267, 640.1};
+    setLanguage(QStringLiteral("fr"));
+    QCOMPARE(widgets::PlateDialog::layoutFailureText(wordy, two),
+             QStringLiteral("La légende de figure demande à elle seule 640,1 mm de hauteur ; la zone d’impression mesure "
+                            "267,0 × 180,0 mm : raccourcissez-la ou choisissez une page plus grande."));
+    setLanguage(QStringLiteral("en"));
+    QCOMPARE(widgets::PlateDialog::layoutFailureText(wordy, two),
+             QStringLiteral("The caption needs 640.1 mm of height on its own; the print area is 267.0 × 180.0 mm: shorten "
+                            "the caption or use a larger page."));
 }
 
 // The docking line of the Log writes its numbers as the language does (it wrote "RMS 0.232 mm over 10974 points"

@@ -214,6 +214,14 @@ Result<PlateLayout> layoutAt(const PlateSpec& spec, std::span<const std::array<d
         out.caption = {area.x, bottom + 2.0, area.w, captionMm};
         bottom = out.caption.bottom();
     }
+    // The legend and caption alone fill the print area: no scale can help, only a shorter caption or a larger page.
+    const double texts = (legendRows > 0 ? kLegendRowMm * double(legendRows) + 4.0 : 0.0) + (captionMm > 0 ? captionMm + 2.0 : 0.0);
+    if (bottom > area.bottom() + 1e-9 && captionMm > 0 && texts >= area.h) {
+        if (failure) *failure = {LayoutFailure::Kind::CaptionTooTall, 0, {area.w, texts}, {}, area, out.page, std::nullopt, {}};
+        return Error{ErrorCode::InvalidArgument, std::string(legendRows > 0 ? "the legend and the caption alone need "
+                                                                            : "the caption alone needs ") + mm(texts) + " mm of height; " + pageText +
+                                                     ": shorten the caption or use a larger page"};
+    }
     if (bottom > area.bottom() + 1e-9) {
         const std::vector<double> fitting =
             suggest ? fittingScales(spec, imageMm, legendRows, captionMm, labelWidth) : std::vector<double>{};

@@ -530,6 +530,9 @@ QString PlateDialog::layoutFailureText(const cp::LayoutFailure& failure, const c
         return tr("%1, placed at (%2, %3) mm, is %4 with its texts and leaves the %5 page.")
             .arg(panelName(failure.panel), millimetres(failure.atMm[0]), millimetres(failure.atMm[1]),
                  size(failure.sizeMm[0], failure.sizeMm[1]), size(failure.page.widthMm, failure.page.heightMm));
+    case cp::LayoutFailure::Kind::CaptionTooTall:
+        return tr("The caption needs %1 mm of height on its own; the print area is %2: shorten the caption or use a "
+                  "larger page.").arg(millimetres(failure.sizeMm[1]), area);
     case cp::LayoutFailure::Kind::TooTall: {
         QStringList scales;
         for (std::size_t i = 0; i < failure.fittingScales.size() && i < spec.panels.size(); ++i) {

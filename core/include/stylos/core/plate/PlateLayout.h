@@ -81,6 +81,7 @@ struct LayoutFailure {
         PanelTooLarge,  ///< panel `panel`'s image (`sizeMm`) is larger than the print area on its own
         PanelOutside,   ///< placed panel `panel` at `atMm` with its bands (`sizeMm`) leaves the page
         TooTall,        ///< the panels, legend and caption need `sizeMm[1]` mm of height
+        CaptionTooTall, ///< the legend and caption alone need `sizeMm[1]` mm, the print area's height or more: no scale helps
     };
     Kind kind = Kind::None;
     std::size_t panel = 0;
