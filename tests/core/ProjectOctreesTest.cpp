@@ -178,6 +178,33 @@ TEST(ProjectOctreesTest, NotEnoughSpaceIsSaidBeforeAnyCopy)
     EXPECT_EQ(scene.find(a)->octreePath, d.cache / "a.poct");
 }
 
+// A cache's octree made unique in the cache ("drum-2.poct": an earlier session's drum.poct is there) comes into the
+// project's folder under its scan's name, "drum.poct"; a second scan of that name gets "drum-2.poct" there.
+TEST(ProjectOctreesTest, ACacheOctreeTakesItsScansName)
+{
+    Folders d;
+    test::writeText(d.cache / "drum.poct", "last session's");
+    test::writeText(d.cache / "drum-2.poct", "this one");
+    test::writeText(d.cache / "drum-3.poct", "the other drum");
+    Scene scene;
+    Fragment a;
+    a.name = "Drum 1";
+    a.octreePath = d.cache / "drum-2.poct";
+    a.sourcePath = d.root / "scans" / "north" / "drum.ply";
+    const FragmentId first = scene.add(a);
+    Fragment b = a;
+    b.octreePath = d.cache / "drum-3.poct";
+    b.sourcePath = d.root / "scans" / "south" / "drum.ply";
+    const FragmentId second = scene.add(b);
+    const GatherPlan plan = planGather(scene, d.project, d.cache);
+    ASSERT_EQ(plan.transfers.size(), 2u);
+    EXPECT_EQ(plan.transfers[0].to, fs::weakly_canonical(d.project.parent_path()) / "drum.poct");
+    EXPECT_EQ(plan.transfers[1].to, fs::weakly_canonical(d.project.parent_path()) / "drum-2.poct");
+    ASSERT_TRUE(gather(scene, plan).ok());
+    EXPECT_EQ(contents(scene.find(first)->octreePath), "this one");
+    EXPECT_EQ(contents(scene.find(second)->octreePath), "the other drum");
+}
+
 TEST(ProjectOctreesTest, AVanishedSourceIsNotFound)
 {
     Folders d;

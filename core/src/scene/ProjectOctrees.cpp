@@ -87,9 +87,14 @@ GatherPlan planGather(const Scene& scene, const fs::path& projectPath, const fs:
         if (ec) continue; // vanished since it was opened: the save keeps its path, the next open reports it
         OctreeTransfer t;
         t.from = from;
-        t.to = destinationFor(from, folder, taken);
         t.bytes = bytes;
         t.fromCache = !cache.empty() && isInside(from, cache);
+        // A cache's octree is named after the scan it was built from: the cache's own name may carry a "-2" made
+        // unique among the cache's files (an earlier session's drum.poct), meaningless in the project's folder.
+        const fs::path named = t.fromCache && !f.sourcePath.empty()
+                                   ? from.parent_path() / (f.sourcePath.stem().string() + from.extension().string())
+                                   : from;
+        t.to = destinationFor(named, folder, taken);
         t.fragments.push_back(f.id);
         (t.fromCache ? plan.cacheBytes : plan.copyBytes) += bytes;
         plan.transfers.push_back(std::move(t));

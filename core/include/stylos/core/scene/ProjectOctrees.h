@@ -7,7 +7,8 @@
  * come (the cache is cleaned), the others (a demo, an octree built elsewhere with `stylos-cli build`) may
  * stay where they are, and the caller may ask first when they are big (GatherPlan::copyBytes). All are
  * copied, never moved: the undo history may still name the cache's file, which cleanCache() removes once
- * nothing uses it. Each goes to the project's folder under its own name, made unique with "-2",
+ * nothing uses it. Each goes to the project's folder under its own name (a cache's octree under the name of the scan it
+ * was built from, not the cache's "drum-2.poct"), made unique with "-2",
  * "-3"… when a different file already has it; fragments sharing one octree keep sharing its one copy.
  * gather() writes each copy to "NAME.poct.part" then renames it, so an interrupted save leaves either the
  * whole octree or none, and repoints the fragments at each octree as soon as it is in place: after a
