@@ -1866,6 +1866,10 @@ Do you want to delete it anyway?</source>
         <source>Could not dock %1: the registration did not settle in %2 iterations.</source>
         <translation>Δεν ήταν δυνατή η πρόσδεση του %1: η ευθυγράμμιση δεν σταθεροποιήθηκε σε %2 επαναλήψεις.</translation>
     </message>
+    <message>
+        <source>%1 times the drum&apos;s own RMS: it may rest on the wrong flute or be held off its place by a lock</source>
+        <translation>%1 φορές η RMS του ίδιου του σπονδύλου: ίσως κάθεται σε λάθος ράβδωση ή ένα κλείδωμα το κρατά μακριά από τη θέση του</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

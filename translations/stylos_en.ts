@@ -1860,6 +1860,10 @@ Do you want to delete it anyway?</source>
         <source>Could not dock %1: the registration did not settle in %2 iterations.</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>%1 times the drum&apos;s own RMS: it may rest on the wrong flute or be held off its place by a lock</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

@@ -1866,6 +1866,10 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>Could not dock %1: the registration did not settle in %2 iterations.</source>
         <translation>Impossible d’amarrer %1 : le recalage ne s’est pas stabilisé en %2 itérations.</translation>
     </message>
+    <message>
+        <source>%1 times the drum&apos;s own RMS: it may rest on the wrong flute or be held off its place by a lock</source>
+        <translation>%1 fois la RMS du tambour lui-même : il repose peut-être sur la mauvaise cannelure, ou un verrou l’empêche d’atteindre sa place</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

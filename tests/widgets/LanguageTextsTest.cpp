@@ -205,6 +205,15 @@ void LanguageTextsTest::logLinesWriteNumbersInTheLanguage()
     docked.dock.fluteShift = -0.0004;
     const QString still = widgets::DockJob::summary(QStringLiteral("fragment"), docked);
     QVERIFY2(still.contains(QStringLiteral(" 0.00 ")) && !still.contains(QStringLiteral("-0.00")), qPrintable(still));
+    // Far off the profile against the drum's own RMS: said (within 3 times: not).
+    docked.drumRms = 0.0001;
+    QVERIFY2(!widgets::DockJob::summary(QStringLiteral("fragment"), docked).contains(QStringLiteral("wrong flute")),
+             qPrintable(widgets::DockJob::summary(QStringLiteral("fragment"), docked)));
+    docked.dock.rms = 0.00232;
+    QVERIFY2(widgets::DockJob::summary(QStringLiteral("fragment"), docked)
+                 .endsWith(QStringLiteral("; 23.2 times the drum's own RMS: it may rest on the wrong flute or be held off its "
+                                          "place by a lock")),
+             qPrintable(widgets::DockJob::summary(QStringLiteral("fragment"), docked)));
 }
 
 // A dock from too far says so, and what to do, in the user's language (it said "these data and settings do not

@@ -95,6 +95,11 @@ QString DockJob::summary(const QString& name, const DockJobResult& r)
     if (!sigmas.isEmpty()) text += tr("; ", "between the parts of a status line") + tr("uncertainty %1").arg(sigmas.join(QStringLiteral(", ")));
     if (!unobservable.isEmpty())
         text += tr("; ", "between the parts of a status line") + tr("not fixed by the flutes, left as it was: %1").arg(unobservable.join(QStringLiteral(", ")));
+    // Far off the profile (good docks: 1–2 times the drum's own RMS): a wrong flute, or a lock holding it off its place.
+    if (r.drumRms > 0.0 && r.dock.rms > 3.0 * r.drumRms)
+        text += tr("; ", "between the parts of a status line") +
+                tr("%1 times the drum's own RMS: it may rest on the wrong flute or be held off its place by a lock")
+                    .arg(QLocale().toString(r.dock.rms / r.drumRms, 'f', 1));
     return text;
 }
 
@@ -115,6 +120,7 @@ core::Result<DockJobResult> DockJob::run(core::ProgressSink* progress, dock::Doc
     result.drumId = m_drumId;
     result.start = m_start;
     result.dock = std::move(docked).value();
+    result.drumRms = m_guides->rms;
     result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
     if (progress) progress->update(1.0);
     return result;

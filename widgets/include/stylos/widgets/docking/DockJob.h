@@ -35,6 +35,7 @@ struct DockJobResult {
     Eigen::Isometry3d start = Eigen::Isometry3d::Identity(); ///< fragment file frame → drum file frame, as given
     core::dock::DockResult dock;                             ///< dock.pose: the docked pose, same frames
     double seconds = 0.0;                                    ///< wall time of the whole job
+    double drumRms = 0.0; ///< the drum's own RMS against its flute profile (the guides'), metres; 0: unknown
     /** Empty on success; a translated message naming the fragment and the reason otherwise. */
     QString error;
 
