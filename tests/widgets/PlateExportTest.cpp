@@ -29,6 +29,7 @@
 #include <QLabel>
 #include <QPushButton>
 #include <QScreen>
+#include <QScrollBar>
 #include <QSignalSpy>
 #include <QTableWidget>
 #include <QTemporaryDir>
@@ -118,6 +119,21 @@ void PlateExportTest::previewDrawsAndRefusesWhatDoesNotFit()
     // Within the screen (1280 wide here, as a field laptop): its buttons never off it.
     QVERIFY2(dialog.width() <= dialog.screen()->availableGeometry().width(), qPrintable(QString::number(dialog.width())));
     QVERIFY(dialog.height() <= dialog.screen()->availableGeometry().height());
+    // Two panels fit the panel table across: no sideways scrolling (the fragment's long "(all visible; …)" item made
+    // the table scroll and hid the View column).
+    {
+        widgets::PlateDialog two(app::PlateActions::sourcesOf(document), spec(20));
+        cp::PlateSpec both = spec(20);
+        both.panels.push_back(both.panels[0]);
+        both.panels[1].view = cp::PanelView::Front;
+        both.panels[1].shading = cp::PanelShading::Headlight;
+        two.setSpec(both);
+        two.show();
+        QVERIFY(QTest::qWaitForWindowExposed(&two));
+        QApplication::processEvents();
+        QCOMPARE(two.panelTable()->rowCount(), 2);
+        QCOMPARE(two.panelTable()->horizontalScrollBar()->maximum(), 0);
+    }
     QSignalSpy updated(&dialog, &widgets::PlateDialog::previewUpdated);
     QVERIFY(updated.wait(60000));
     QVERIFY2(dialog.messageLabel()->text().isEmpty(), qPrintable(dialog.messageLabel()->text()));

@@ -145,6 +145,9 @@ PlateDialog::PlateDialog(std::shared_ptr<const cp::PlateSources> sources, const 
     m_caption->setMaximumHeight(70);
     m_panels->verticalHeader()->setVisible(false);
     m_panels->horizontalHeader()->setSectionResizeMode(QHeaderView::ResizeToContents);
+    // The fragment takes the width the others leave (its long "(all visible; …)" item made the table scroll sideways,
+    // the View column out of sight, at 1280 pixels); its box shows what fits, the whole item in its list and tooltip.
+    m_panels->horizontalHeader()->setSectionResizeMode(FragmentColumn, QHeaderView::Stretch);
     m_panels->setSelectionBehavior(QAbstractItemView::SelectRows);
     m_preview->setAlignment(Qt::AlignCenter);
     m_preview->setMinimumSize(kPreviewHeight + 20, kPreviewHeight + 20);
@@ -296,11 +299,16 @@ void PlateDialog::addPanelRow(const cp::PanelSpec& panel)
     auto* hatches = new QCheckBox;
     hatches->setChecked(panel.hatches);
     auto* fragment = new QComboBox;
+    fragment->setSizeAdjustPolicy(QComboBox::AdjustToMinimumContentsLengthWithIcon);
+    fragment->setMinimumContentsLength(10);
     fragment->addItem(tr("(all visible; the first for a développée)"), QString());
     for (const cp::PlateFragment& f : m_sources->fragments)
         fragment->addItem(QString::fromStdString(f.name), QString::fromStdString(f.name));
     const int at = fragment->findData(QString::fromStdString(panel.fragment));
     fragment->setCurrentIndex(at >= 0 ? at : 0);
+    const auto tip = [fragment] { fragment->setToolTip(fragment->currentText()); };
+    tip();
+    connect(fragment, &QComboBox::currentIndexChanged, fragment, tip);
     m_panels->setCellWidget(row, ViewColumn, view);
     m_panels->setCellWidget(row, ScaleColumn, scale);
     m_panels->setCellWidget(row, ShadingColumn, shading);
