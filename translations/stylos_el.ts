@@ -1870,6 +1870,10 @@ Do you want to delete it anyway?</source>
         <source>%1 times the drum&apos;s own RMS: it may rest on the wrong flute or be held off its place by a lock</source>
         <translation>%1 φορές η RMS του ίδιου του σπονδύλου: ίσως κάθεται σε λάθος ράβδωση ή ένα κλείδωμα το κρατά μακριά από τη θέση του</translation>
     </message>
+    <message>
+        <source>Could not dock %1: the registration did not settle in %2 iterations. θ is locked and may hold it off its flute: unlock θ (Tools › Docking locks), or bring it onto its flute first.</source>
+        <translation>Δεν ήταν δυνατή η πρόσδεση του %1: η ευθυγράμμιση δεν σταθεροποιήθηκε σε %2 επαναλήψεις. Το θ είναι κλειδωμένο και ίσως το κρατά μακριά από τη ράβδωσή του: ξεκλειδώστε το θ (Εργαλεία › Κλειδώματα πρόσδεσης) ή φέρτε το πρώτα στη ράβδωσή του.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

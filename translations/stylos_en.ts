@@ -1864,6 +1864,10 @@ Do you want to delete it anyway?</source>
         <source>%1 times the drum&apos;s own RMS: it may rest on the wrong flute or be held off its place by a lock</source>
         <translation type="unfinished"></translation>
     </message>
+    <message>
+        <source>Could not dock %1: the registration did not settle in %2 iterations. θ is locked and may hold it off its flute: unlock θ (Tools › Docking locks), or bring it onto its flute first.</source>
+        <translation type="unfinished"></translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

@@ -1870,6 +1870,10 @@ Voulez-vous quand même le supprimer ?</translation>
         <source>%1 times the drum&apos;s own RMS: it may rest on the wrong flute or be held off its place by a lock</source>
         <translation>%1 fois la RMS du tambour lui-même : il repose peut-être sur la mauvaise cannelure, ou un verrou l’empêche d’atteindre sa place</translation>
     </message>
+    <message>
+        <source>Could not dock %1: the registration did not settle in %2 iterations. θ is locked and may hold it off its flute: unlock θ (Tools › Docking locks), or bring it onto its flute first.</source>
+        <translation>Impossible d’amarrer %1 : le recalage ne s’est pas stabilisé en %2 itérations. θ est verrouillé et peut le tenir à l’écart de sa cannelure : déverrouillez θ (Outils › Verrous d’amarrage) ou amenez-le d’abord sur sa cannelure.</translation>
+    </message>
 </context>
 <context>
     <name>stylos::widgets::DockRunner</name>

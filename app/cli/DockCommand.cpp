@@ -56,7 +56,9 @@ bool parseRequest(CommandLine& cl, DockRequest& r, std::string& problem)
         std::size_t start = 0;
         while (true) {
             const std::size_t comma = lock->find(',', start);
-            const std::string name = lock->substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            std::string name = lock->substr(start, comma == std::string::npos ? std::string::npos : comma - start);
+            name.erase(0, name.find_first_not_of(" \t")); // "z, r" as the number lists take "0, 0, 0"
+            name.erase(name.find_last_not_of(" \t") + 1);
             const auto unknowns = dock::dockUnknownsFromName(name);
             if (unknowns.empty())
                 return problem = "--lock: unknown \"" + name + "\" (z, r, theta, tilt, tangent, tilt_lean, tilt_roll)", false;

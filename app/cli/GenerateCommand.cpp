@@ -37,6 +37,9 @@ int runGenerate(const std::vector<std::string>& args)
     if (!output || output->empty()) return usageError(cl, "generate needs -o OUT.ply");
     if (lowerExtension(*output) != ".ply") return usageError(cl, "the output must be a .ply file, not \"" + *output + "\"");
     if (const std::string problem = outputProblem(*output); !problem.empty()) return failure(problem);
+    // Its truth sidecar too (a read-only OUT.truth.json was replaced without a word).
+    if (const std::string problem = outputProblem(core::synth::truthPathFor(*output)); !problem.empty())
+        return failure(problem);
 
     core::synth::SyntheticOptions options;
     long long seed = static_cast<long long>(options.seed), scans = options.scans, designSeed = 0;

@@ -1,5 +1,6 @@
 // Writing a plate page as PDF, SVG, TIFF or PNG, atomically and reproducibly.
 #include "stylos/plate/PlateWriter.h"
+#include "stylos/core/util/AtomicTextFile.h"
 
 #include <QBuffer>
 #include <QHashSeed>
@@ -55,6 +56,7 @@ Status finish(const fs::path& partial, const fs::path& output, const core::Progr
         fs::remove(partial, error);
         return cancelledError(output);
     }
+    core::keepModeOf(output, partial);
     fs::rename(partial, output, error);
     if (error) {
         const std::string why = error.message();

@@ -172,6 +172,16 @@ TEST(CliDock, BadInputFailsNamingTheProblem)
     run = runCli({"dock", s.fragment, "--drum", s.drum, "--pose", "1, 0,0,0,1,0,0,0,1 ,0x10,0,0"}); // spaces are fine
     EXPECT_EQ(run.exitCode, 2);
     EXPECT_NE(run.err.find("--pose: \"0x10\" is not a number"), std::string::npos) << run.err;
+    // Lock names with spaces, as the number lists take them: taken.
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose", poseArgument(s.turned(0.5)),
+                  "--lock", "theta, tilt", "--json"});
+    EXPECT_EQ(run.exitCode, 0) << run.err;
+    // θ locked 3° (0.4 flute) from its place: the registration does not settle, and says θ may be why.
+    run = runCli({"dock", s.fragment, "--drum", s.drum, "--guides", s.guides, "--pose", poseArgument(s.turned(3.0)),
+                  "--lock", "theta"});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_NE(run.err.find("did not converge in 60 iterations; θ is locked and may hold it off its flute: free θ, or "
+                           "start it on its flute"), std::string::npos) << run.err;
     // A lock that names nothing.
     for (const char* lock : {"", "r,"}) {
         run = runCli({"dock", s.fragment, "--drum", s.drum, "--lock", lock});

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include <filesystem>
 #include <fstream>
 
 using stylos::test::runCli;
@@ -73,4 +74,37 @@ TEST(CliGenerate, UsageErrorsAndFailuresLeaveNothing)
     EXPECT_EQ(taper.exitCode, 2);
     EXPECT_NE(taper.err.find("the taper must lie within a fifth of the radius (110 mm)"), std::string::npos) << taper.err;
     EXPECT_EQ(std::distance(std::filesystem::directory_iterator(dir.path()), {}), 0);
+}
+
+// The truth sidecar is an output too: a read-only OUT.truth.json is refused before the work (it was replaced, its mode
+// lost). Files replaced keep their mode — the scan, its truth, and a plate drawn over an earlier one.
+TEST(CliGenerate, OutputsKeepTheirModeAndAReadOnlyTruthIsRefused)
+{
+    namespace fs = std::filesystem;
+    TempDir dir;
+    const auto ply = (dir / "d.ply").string(), truth = (dir / "d.truth.json").string();
+    stylos::test::writeText(truth, "last week's truth");
+    fs::permissions(truth, fs::perms::owner_read);
+    auto run = runCli({"generate", "drum", "-o", ply, "--spacing", "0.03"});
+    EXPECT_EQ(run.exitCode, 1);
+    EXPECT_EQ(run.err, "stylos-cli: " + truth + " is read-only; make it writable or name another file\n");
+    EXPECT_FALSE(fs::exists(ply));
+
+    const auto mode = fs::perms::owner_read | fs::perms::owner_write | fs::perms::group_read;
+    fs::permissions(truth, mode);
+    stylos::test::writeText(ply, "x");
+    fs::permissions(ply, mode);
+    run = runCli({"generate", "drum", "-o", ply, "--spacing", "0.03"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_GT(fs::file_size(ply), 1000u);
+    EXPECT_EQ(fs::status(ply).permissions() & fs::perms::all, mode);
+    EXPECT_EQ(fs::status(truth).permissions() & fs::perms::all, mode);
+
+    const auto png = (dir / "p.png").string();
+    stylos::test::writeText(png, "x");
+    fs::permissions(png, mode);
+    run = runCli({"plate", ply, "-o", png, "--scale", "20", "--dpi", "72"});
+    ASSERT_EQ(run.exitCode, 0) << run.err;
+    EXPECT_GT(fs::file_size(png), 1000u);
+    EXPECT_EQ(fs::status(png).permissions() & fs::perms::all, mode);
 }

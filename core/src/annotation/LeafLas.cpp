@@ -1,5 +1,6 @@
 // One LAS 1.4 (format 6) point per leaf: material as classification, toolmark and ambient as extra bytes.
 #include "stylos/core/annotation/LeafLas.h"
+#include "stylos/core/util/AtomicTextFile.h"
 
 #include "stylos/core/annotation/LeafExport.h"
 #include "stylos/core/annotation/LeafLabels.h"
@@ -196,6 +197,7 @@ Result<std::uint64_t> exportLeafLas(const octree::PackedOctree& octree, const st
     out.write(reinterpret_cast<const char*>(chunk.data()), std::streamsize(chunk.size()));
     out.close();
     if (!out) return fail("writing failed (disk full?)");
+    keepModeOf(output, partial);
     std::error_code ec;
     fs::rename(partial, output, ec);
     if (ec) return fail("cannot rename the finished file into place: " + ec.message());

@@ -358,8 +358,14 @@ Result<DockResult> dockFragment(const cloud::PointCloud& fragment, const DrumGui
         }
     }
     if (!converged) {
-        failed(DockFailure::Kind::NotConverged).iterations = options.maxIterations;
-        return invalid(fragment, "the registration did not converge in " + std::to_string(options.maxIterations) + " iterations");
+        DockFailure& f = failed(DockFailure::Kind::NotConverged);
+        f.iterations = options.maxIterations;
+        f.thetaLocked = options.locked[std::size_t(DockUnknown::Theta)];
+        return invalid(fragment, "the registration did not converge in " + std::to_string(options.maxIterations) +
+                                     " iterations" +
+                                     (f.thetaLocked ? std::string("; θ is locked and may hold it off its flute: free θ, or "
+                                                                  "start it on its flute")
+                                                    : std::string()));
     }
 
     // What the data fix, and how well.

@@ -1,4 +1,5 @@
 #include "TemporaryImageFile.h"
+#include "stylos/core/util/AtomicTextFile.h"
 
 #include <cstdint>
 #include <cstdio>
@@ -70,6 +71,7 @@ Result<TemporaryImageFile> TemporaryImageFile::beside(const fs::path& target)
 
 Status TemporaryImageFile::commit()
 {
+    keepModeOf(m_target, m_temporary);
     std::error_code ec;
     fs::rename(m_temporary, m_target, ec);
     if (ec) {

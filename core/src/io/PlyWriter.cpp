@@ -1,4 +1,5 @@
 #include "stylos/core/io/PlyWriter.h"
+#include "stylos/core/util/AtomicTextFile.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -160,6 +161,7 @@ Status PlyWriter::finish()
         fs::remove(m_temporary, ec);
         return failure(std::string("write error on close: ") + std::strerror(errno));
     }
+    keepModeOf(m_target, m_temporary);
     std::error_code ec;
     fs::rename(m_temporary, m_target, ec);
     if (ec) {

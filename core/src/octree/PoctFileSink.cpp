@@ -1,5 +1,7 @@
 #include "PoctFileSink.h"
 
+#include "stylos/core/util/AtomicTextFile.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <cstring>
@@ -109,11 +111,8 @@ Status TempFile::commit()
     const int fd = m_fd;
     m_fd = -1;
     if (::close(fd) != 0) return failure("write error on close: " + systemError(errno));
+    keepModeOf(m_target, m_temporary); // a file replaced keeps its mode (the temporary file has the default one)
     std::error_code ec;
-    // A file replaced keeps its mode (the temporary file has the default one).
-    if (const fs::file_status existing = fs::status(m_target, ec); !ec && fs::is_regular_file(existing))
-        fs::permissions(m_temporary, existing.permissions(), ec);
-    ec.clear();
     fs::rename(m_temporary, m_target, ec);
     if (ec) return failure("cannot move the finished file into place: " + ec.message());
     m_committed = true;

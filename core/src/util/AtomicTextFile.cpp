@@ -24,10 +24,18 @@ Status writeTextFileAtomically(const std::filesystem::path& path, std::string_vi
         out.close();
         if (!out) return failed("write failed");
     }
+    keepModeOf(path, temporary);
     std::error_code error;
     std::filesystem::rename(temporary, path, error);
     if (error) return failed("cannot rename into place: " + error.message());
     return {};
+}
+
+void keepModeOf(const std::filesystem::path& target, const std::filesystem::path& temporary)
+{
+    std::error_code ec;
+    if (const std::filesystem::file_status existing = std::filesystem::status(target, ec); !ec && std::filesystem::is_regular_file(existing))
+        std::filesystem::permissions(temporary, existing.permissions() & std::filesystem::perms::all, ec);
 }
 
 } // namespace stylos::core

@@ -56,6 +56,10 @@ QString DockJob::errorText(const QString& name, const core::Error& error, const 
         return tr("Could not dock %1: fewer than 200 of its points stayed on the flutes. Start it nearer its place "
                   "and dock again.").arg(name);
     case Kind::NotConverged:
+        if (failure.thetaLocked)
+            return tr("Could not dock %1: the registration did not settle in %2 iterations. θ is locked and may hold it "
+                      "off its flute: unlock θ (Tools › Docking locks), or bring it onto its flute first.")
+                .arg(name, locale.toString(failure.iterations));
         return tr("Could not dock %1: the registration did not settle in %2 iterations.")
             .arg(name, locale.toString(failure.iterations));
     case Kind::None: break;

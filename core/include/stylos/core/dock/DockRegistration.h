@@ -97,6 +97,7 @@ struct DockFailure {
     double strength = 0.0;
     double needed = 0.0;
     int iterations = 0;
+    bool thetaLocked = false;     ///< NotConverged with θ locked: it may be held off its flute
 };
 
 /** Docks @p fragment (its file frame) placed by @p start into the drum file frame against @p guides

@@ -13,7 +13,12 @@
 
 namespace stylos::core {
 
-/** @brief Writes @p text to @p path atomically (see the file comment). */
+/** @brief Writes @p text to @p path atomically (see the file comment); a file replaced keeps its mode. */
 Status writeTextFileAtomically(const std::filesystem::path& path, std::string_view text);
+
+/** @brief Gives @p temporary the permissions of @p target when @p target is an existing regular file: called before a
+ *         finished temporary file is renamed over it, so that a file replaced keeps its mode (chmod 600, 640…);
+ *         nothing when there is none. Failures are ignored (the write itself does not depend on them). */
+void keepModeOf(const std::filesystem::path& target, const std::filesystem::path& temporary);
 
 } // namespace stylos::core
