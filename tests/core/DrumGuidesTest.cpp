@@ -290,6 +290,13 @@ TEST(DrumGuidesTest, AMultipleOfTheFluteCountIsRefused)
         EXPECT_NE(g.error().message.find(std::to_string(multiple) + " is a multiple of the drum's 48 flutes (give --flutes 48)"),
                   std::string::npos) << g.error().message;
     }
+    // A divisor has nothing to stand on: refused, with the count the drum has.
+    options.flutes = 24;
+    const auto half = fitDrumGuides(scan.cloud, options);
+    ASSERT_FALSE(half.ok());
+    EXPECT_NE(half.error().message.find("no flutes found: 24 flutes stand "), std::string::npos) << half.error().message;
+    EXPECT_NE(half.error().message.find("; 48 flutes stand "), std::string::npos) << half.error().message;
+    EXPECT_NE(half.error().message.find("(give --flutes 48)"), std::string::npos) << half.error().message;
     options.flutes = 48;
     const auto g = fitDrumGuides(scan.cloud, options);
     ASSERT_TRUE(g.ok()) << g.error().message;

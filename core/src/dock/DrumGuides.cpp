@@ -212,9 +212,19 @@ Result<DrumGuides> fitDrumGuides(const cloud::PointCloud& cloud, const GuideOpti
                               "%.1f times over the median of the others (at least %.0f and %.0f needed)",
                               lo, hi, g.strength, freq.amplitude / std::max(freq.medianAmplitude, 1e-300),
                               kMinStrength, kMinOverMedian);
-            else
+            else {
                 std::snprintf(text, sizeof text, "no flutes found: %d flutes stand %.1f times over the noise (at least %.0f needed)",
                               lo, g.strength, kMinStrength);
+                // A count the drum has not (24 or 16 on 48 flutes): the one it has, when the scan finds it.
+                const FluteFrequency found = strongestFrequency(s, medianRho, kMinScan, kMaxScan, kMaxSpectrum);
+                const double strength = found.noise > 0.0 ? found.amplitude / found.noise : 0.0;
+                if (strength >= kMinStrength && found.amplitude >= kMinOverMedian * found.medianAmplitude) {
+                    char hint[160];
+                    std::snprintf(hint, sizeof hint, "; %d flutes stand %.1f times over it (give --flutes %d)",
+                                  found.count, strength, found.count);
+                    return invalid(cloud, std::string(text) + hint);
+                }
+            }
             return invalid(cloud, text);
         }
         if (progress && progress->isCancelRequested()) return Error{ErrorCode::Cancelled, cloud.source + ": cancelled"};
