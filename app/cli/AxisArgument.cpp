@@ -9,18 +9,29 @@
 
 namespace stylos::cli {
 
-bool parseNumberList(const std::string& text, const std::string& option, std::size_t count, std::vector<double>& values,
-                     std::string& problem)
+std::vector<std::string> splitCommaList(const std::string& text)
 {
-    values.clear();
-    // Decimal numbers only ("1", "-0.5", "+2e-3", spaces around them as in "0, 0, 0"): not hexadecimal ("0x10", which
-    // strtod takes), not an empty item (a trailing comma, which getline dropped).
+    std::vector<std::string> items;
     std::size_t start = 0;
     while (true) {
         const std::size_t comma = text.find(',', start);
         std::string item = text.substr(start, comma == std::string::npos ? std::string::npos : comma - start);
         item.erase(0, item.find_first_not_of(" \t"));
         item.erase(item.find_last_not_of(" \t") + 1);
+        items.push_back(std::move(item));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return items;
+}
+
+bool parseNumberList(const std::string& text, const std::string& option, std::size_t count, std::vector<double>& values,
+                     std::string& problem)
+{
+    values.clear();
+    // Decimal numbers only ("1", "-0.5", "+2e-3", spaces around them as in "0, 0, 0"): not hexadecimal ("0x10", which
+    // strtod takes), not an empty item (a trailing comma, which getline dropped).
+    for (const std::string& item : splitCommaList(text)) {
         const char* first = item.c_str() + (item.size() > 1 && item[0] == '+' && item[1] != '-' ? 1 : 0);
         const char* last = item.c_str() + item.size();
         double v = 0.0;
@@ -30,8 +41,6 @@ bool parseNumberList(const std::string& text, const std::string& option, std::si
             return false;
         }
         values.push_back(v);
-        if (comma == std::string::npos) break;
-        start = comma + 1;
     }
     if (values.size() != count) {
         problem = option + " needs " + std::to_string(count) + " numbers, got " + std::to_string(values.size());

@@ -11,6 +11,10 @@
 
 namespace stylos::cli {
 
+/** @p text's comma-separated items, each without the spaces and tabs around it; empty items kept ("", "r," give an
+ *  empty item: a list that names nothing is the caller's to refuse). */
+std::vector<std::string> splitCommaList(const std::string& text);
+
 /** @p count comma-separated finite decimal numbers (an optional sign, digits, a point, an exponent, spaces around: no
  *  hexadecimal, no empty item); false with @p problem set (naming @p option and the item) otherwise. */
 bool parseNumberList(const std::string& text, const std::string& option, std::size_t count, std::vector<double>& values,

@@ -52,19 +52,13 @@ bool parseRequest(CommandLine& cl, DockRequest& r, std::string& problem)
     r.json = cl.flag("json");
     if (const auto pose = cl.value("pose"); pose && !parsePose(*pose, r.pose, problem)) return false;
     if (const auto lock = cl.value("lock")) {
-        // Every comma-separated name, an empty one included ("", "r,": a lock that names nothing is refused).
-        std::size_t start = 0;
-        while (true) {
-            const std::size_t comma = lock->find(',', start);
-            std::string name = lock->substr(start, comma == std::string::npos ? std::string::npos : comma - start);
-            name.erase(0, name.find_first_not_of(" \t")); // "z, r" as the number lists take "0, 0, 0"
-            name.erase(name.find_last_not_of(" \t") + 1);
+        // Every comma-separated name ("z, r" as the number lists take "0, 0, 0"), an empty one included ("", "r,": a
+        // lock that names nothing is refused).
+        for (const std::string& name : splitCommaList(*lock)) {
             const auto unknowns = dock::dockUnknownsFromName(name);
             if (unknowns.empty())
                 return problem = "--lock: unknown \"" + name + "\" (z, r, theta, tilt, tangent, tilt_lean, tilt_roll)", false;
             for (dock::DockUnknown u : unknowns) r.options.locked[std::size_t(u)] = true;
-            if (comma == std::string::npos) break;
-            start = comma + 1;
         }
     }
     long long threads = 0;

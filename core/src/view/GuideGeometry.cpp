@@ -28,25 +28,11 @@ std::optional<DrumAxis> drumAxisOf(const scene::Fragment& drum, const scene::Pos
 std::vector<GuideSegment> guideSegments(const scene::Fragment& fragment, const Eigen::AlignedBox3d& localBounds,
                                         const scene::Pose* world)
 {
-    std::vector<GuideSegment> segments;
-    if (localBounds.isEmpty()) return segments;
-    const Eigen::Matrix4d pose = scene::toEigen(world ? *world : fragment.pose);
-    const auto toScene = [&pose](const Eigen::Vector3d& p) -> Eigen::Vector3d {
-        return pose.topLeftCorner<3, 3>() * p + pose.topRightCorner<3, 1>();
-    };
-    segments.reserve(fragment.guides.size());
-    for (const scene::Guide& guide : fragment.guides) {
-        const scene::GuideLine line = scene::guideLine(guide);
-        const Eigen::Vector3d d = line.direction.normalized();
-        double low = std::numeric_limits<double>::infinity(), high = -low;
-        for (int corner = 0; corner < 8; ++corner) {
-            const double s = (localBounds.corner(Eigen::AlignedBox3d::CornerType(corner)) - line.origin).dot(d);
-            low = std::min(low, s);
-            high = std::max(high, s);
-        }
-        segments.push_back({toScene(line.origin + low * d), toScene(line.origin + high * d), guide.kind});
-    }
-    return segments;
+    // The box's eight corners as cells of no size: the same projection as the cells'.
+    OccupiedCells corners;
+    if (!localBounds.isEmpty())
+        for (int corner = 0; corner < 8; ++corner) corners.centres.push_back(localBounds.corner(Eigen::AlignedBox3d::CornerType(corner)));
+    return guideSegments(fragment, corners, world);
 }
 
 OccupiedCells occupiedCells(const octree::PackedOctree& octree, int level)
